@@ -1,0 +1,45 @@
+// Property 4: `robust` equals `exact` on every generated query. And the exact reference itself
+// agrees with what the construction of a query guarantees: its truth, contact kind and time.
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+
+#include "fdh/exact/point_triangle.hpp"
+#include "fdh/point_triangle/robust.hpp"
+#include "fdh/verify/families.hpp"
+
+namespace fdh::verify {
+namespace {
+
+class PointTriangleFamily : public ::testing::TestWithParam<Family> {};
+
+TEST_P(PointTriangleFamily, RobustEqualsExact) {
+  EXPECT_TRUE(rc::check("robust-equals-exact/" + family_name(GetParam()), [f = GetParam()] {
+    const Query q = (*gen_family(f)).query;
+    const bool exact = exact::point_triangle_hit(q.b0(), q.b1(), q.d(), q.e(), q.f());
+    RC_ASSERT(robust_point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f(),
+                                    &exact::point_triangle_hit) == exact);
+  }));
+}
+
+TEST_P(PointTriangleFamily, ExactMatchesTheConstruction) {
+  EXPECT_TRUE(rc::check("exact-matches-construction/" + family_name(GetParam()), [f = GetParam()] {
+    const Generated g = *gen_family(f);
+    const Query& q = g.query;
+    const exact::PointTriangleContact c = exact::point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f());
+    if (q.has_truth()) RC_ASSERT(c.hit == bool(q.truth));
+    if (!g.kind.empty()) RC_ASSERT(std::string(exact::to_string(c.kind)) == g.kind);
+    if (!g.time.empty()) RC_ASSERT(c.time == g.time);
+    RC_ASSERT(c.hit == (c.kind != exact::ContactKind::None));
+  }));
+}
+
+INSTANTIATE_TEST_SUITE_P(All, PointTriangleFamily, ::testing::ValuesIn(all_families()),
+                         [](const auto& info) {
+                           std::string n = family_name(info.param);
+                           for (char& ch : n)
+                             if (ch == '-') ch = '_';
+                           return n;
+                         });
+
+}  // namespace
+}  // namespace fdh::verify

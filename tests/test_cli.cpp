@@ -1,0 +1,93 @@
+#include "fdh/verify/cli.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace fdh::verify {
+namespace {
+
+const std::string kData = FDH_SOURCE_DIR "/tests/data/";
+
+struct CliRun {
+  int status;
+  std::string out, err;
+};
+
+CliRun fdhcert(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int status = run_cli(args, out, err);
+  return {status, out.str(), err.str()};
+}
+
+bool file_exists(const std::string& p) { return std::ifstream(p).good(); }
+
+TEST(Cli, HelpNamesEveryOption) {
+  const CliRun r = fdhcert({"classify", "--help"});
+  EXPECT_EQ(r.status, 0);
+  for (const char* opt : {"--methods", "--gate", "--json", "--per-query", "--kind", "--check"})
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+  EXPECT_EQ(fdhcert({"--help"}).status, 0);
+  EXPECT_EQ(fdhcert({}).status, 2);
+  EXPECT_EQ(fdhcert({"frobnicate"}).status, 2);
+}
+
+TEST(Cli, ClassifyPrintsOneRowPerMethod) {
+  const CliRun r = fdhcert({"classify", kData + "static.vf"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* m : {"exact", "robust", "paper-literal", "paper-intended", "linear-system"})
+    EXPECT_NE(r.out.find(m), std::string::npos) << m;
+  EXPECT_NE(r.out.find("ns/query"), std::string::npos);
+}
+
+TEST(Cli, ClassifyJson) {
+  const CliRun r = fdhcert({"classify", kData + "static.vf", "--json", "--methods", "exact,robust"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  // Three queries carry truth and one does not: the counts mix both.
+  EXPECT_EQ(r.out.rfind("{\"queries\": 4, \"truth\": \"mixed\"", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("\"exact\": {\"tp\": 2, \"tn\": 2, \"fp\": 0, \"fn\": 0, \"ns_per_query\": "),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("paper-literal"), std::string::npos);
+}
+
+TEST(Cli, PerQueryCsv) {
+  const std::string out = ::testing::TempDir() + "per_query.csv";
+  std::remove(out.c_str());
+  const CliRun r = fdhcert({"classify", kData + "static.vf", "--per-query", out, "--methods",
+                         "exact,paper-literal"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(out);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  EXPECT_EQ(ss.str(),
+            "id,truth,exact,paper-literal\n"
+            "through-face,1,1,0\nshort,0,0,0\nhexfloat,1,1,0\nno-truth,0,0,0\n");
+}
+
+TEST(Cli, GateRejectsBadK) {
+  const CliRun r = fdhcert({"classify", kData + "static.vf", "--gate", "7"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--gate takes 6, 14, 18 or 26"), std::string::npos) << r.err;
+}
+
+TEST(Cli, BadInputExitsTwoNamingFileAndLineAndWritesNothing) {
+  const std::string out = ::testing::TempDir() + "never.csv";
+  std::remove(out.c_str());
+  const CliRun r = fdhcert({"classify", kData + "static.vf", kData + "bad_number.vf", "--per-query", out});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("bad_number.vf:3:"), std::string::npos) << r.err;
+  EXPECT_FALSE(file_exists(out));
+  EXPECT_EQ(fdhcert({"classify", kData + "missing.vf"}).status, 2);
+  EXPECT_EQ(fdhcert({"classify", kData + "static.vf", "--bogus"}).status, 2);
+  EXPECT_EQ(fdhcert({"classify", kData + "static.vf", "--methods", "exact,nope"}).status, 2);
+}
+
+TEST(Cli, CheckPassesOnHandMadeTruth) {
+  EXPECT_EQ(fdhcert({"classify", kData + "static.vf", "--check"}).status, 0);
+}
+
+}  // namespace
+}  // namespace fdh::verify
