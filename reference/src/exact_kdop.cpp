@@ -2,8 +2,6 @@
 
 #include <CGAL/Exact_rational.h>
 
-#include <vector>
-
 #include "fdh/kdop.hpp"
 
 namespace fdh::exact {
@@ -11,14 +9,15 @@ namespace {
 
 using Q = CGAL::Exact_rational;
 
-Q exact_projection(const Direction& d, const Vec3& p) {
-  return Q(d.x) * Q(p.x) + Q(d.y) * Q(p.y) + Q(d.z) * Q(p.z);
-}
-
 struct Extent {
   Q lo, hi;
 };
 
+Q exact_projection(const Direction& d, const Vec3& p) {
+  return Q(d.x) * Q(p.x) + Q(d.y) * Q(p.y) + Q(d.z) * Q(p.z);
+}
+
+// Precondition: n >= 1.
 std::vector<Extent> exact_extents(int k, const Vec3* pts, std::size_t n) {
   std::vector<Extent> ext;
   for (int s = 0; s < k / 2; ++s) {
@@ -34,6 +33,12 @@ std::vector<Extent> exact_extents(int k, const Vec3* pts, std::size_t n) {
   return ext;
 }
 
+bool overlap(const std::vector<Extent>& a, const std::vector<Extent>& b) {
+  for (std::size_t s = 0; s < a.size(); ++s)
+    if (a[s].hi < b[s].lo || b[s].hi < a[s].lo) return false;
+  return true;
+}
+
 }  // namespace
 
 int first_uncontained_slab(int k, const Vec3* pts, std::size_t n, const double* lo,
@@ -47,10 +52,24 @@ int first_uncontained_slab(int k, const Vec3* pts, std::size_t n, const double* 
 
 bool kdops_overlap(int k, const Vec3* a, std::size_t na, const Vec3* b, std::size_t nb) {
   if (na == 0 || nb == 0) return false;
-  const std::vector<Extent> ea = exact_extents(k, a, na), eb = exact_extents(k, b, nb);
-  for (int s = 0; s < k / 2; ++s)
-    if (ea[s].hi < eb[s].lo || eb[s].hi < ea[s].lo) return false;
-  return true;
+  return overlap(exact_extents(k, a, na), exact_extents(k, b, nb));
+}
+
+std::vector<std::pair<int, int>> overlapping_pairs(int k, const std::vector<std::vector<Vec3>>& a,
+                                                   const std::vector<std::vector<Vec3>>& b) {
+  const auto extents = [k](const std::vector<std::vector<Vec3>>& sets) {
+    std::vector<std::vector<Extent>> out;
+    for (const auto& s : sets)
+      out.push_back(s.empty() ? std::vector<Extent>{} : exact_extents(k, s.data(), s.size()));
+    return out;
+  };
+  const auto ea = extents(a), eb = extents(b);
+  std::vector<std::pair<int, int>> pairs;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j)
+      if (!a[i].empty() && !b[j].empty() && overlap(ea[i], eb[j]))
+        pairs.push_back({int(i), int(j)});
+  return pairs;
 }
 
 }  // namespace fdh::exact

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstddef>
+#include <utility>
+#include <vector>
 
 #include "fdh/vec3.hpp"
 
@@ -15,5 +17,10 @@ int first_uncontained_slab(int k, const Vec3* pts, std::size_t n, const double* 
 
 // Whether the exact k-DOPs of the two point sets overlap (closed slabs).
 bool kdops_overlap(int k, const Vec3* a, std::size_t na, const Vec3* b, std::size_t nb);
+
+// The exact twin of tree traversal, by brute force: every pair (i, j) such that the exact
+// k-DOPs of a[i] and b[j] overlap. Extents are computed once per set.
+std::vector<std::pair<int, int>> overlapping_pairs(int k, const std::vector<std::vector<Vec3>>& a,
+                                                   const std::vector<std::vector<Vec3>>& b);
 
 }  // namespace fdh::exact

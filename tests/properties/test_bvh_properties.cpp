@@ -1,0 +1,124 @@
+// Property 3: tree traversal ⊇ brute force. Every pair of primitives whose exact FDHs overlap
+// is reported, for every k, leaf size, early-out slab, and after a refit.
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+
+#include <algorithm>
+#include <set>
+
+#include "fdh/bvh.hpp"
+#include "fdh/exact/kdop.hpp"
+
+namespace fdh {
+namespace {
+
+struct Soup {
+  std::vector<Tri> tris;
+  std::vector<Vec3> x0, x1;
+};
+
+// n triangles with dyadic corners in a small box, each moving by a small dyadic step: many
+// touching and near-touching boxes.
+rc::Gen<Soup> soup(int max_tris) {
+  return rc::gen::resize(rc::kNominalSize, rc::gen::exec([max_tris] {
+    Soup s;
+    const int n = *rc::gen::inRange(1, max_tris + 1);
+    const auto coord = [] { return std::ldexp(double(*rc::gen::inRange(-64, 65)), -3); };
+    const auto step = [] { return std::ldexp(double(*rc::gen::inRange(-8, 9)), -4); };
+    for (int t = 0; t < n; ++t) {
+      Tri tri;
+      for (int c = 0; c < 3; ++c) {
+        // Share a vertex with an earlier triangle now and then, as a mesh does.
+        const bool share = !s.x0.empty() && *rc::gen::inRange(0, 4) == 0;
+        if (share) {
+          tri[c] = *rc::gen::inRange(0, int(s.x0.size()));
+        } else {
+          tri[c] = int(s.x0.size());
+          const Vec3 p{coord(), coord(), coord()};
+          s.x0.push_back(p);
+          s.x1.push_back(p + Vec3{step(), step(), step()});
+        }
+      }
+      s.tris.push_back(tri);
+    }
+    return s;
+  }));
+}
+
+// Each primitive's corners: at x0, and at x1 too when swept.
+std::vector<std::vector<Vec3>> corners(const std::vector<Tri>& tris, const std::vector<Vec3>& x0,
+                                       const std::vector<Vec3>& x1) {
+  std::vector<std::vector<Vec3>> out;
+  for (const Tri& t : tris) {
+    std::vector<Vec3> pts;
+    for (const int v : t) {
+      pts.push_back(x0[v]);
+      if (!x1.empty()) pts.push_back(x1[v]);
+    }
+    out.push_back(pts);
+  }
+  return out;
+}
+
+template <int K>
+void check_superset(const Soup& a, const Soup& b, int leaf_size, int first_slab) {
+  Bvh<K> ta(a.tris, a.x0, a.x1, leaf_size);  // swept, like the cloth
+  Bvh<K> tb(b.tris, b.x0, {}, leaf_size);    // static, like an obstacle
+  std::vector<std::pair<int, int>> found;
+  traverse(ta, tb, found, first_slab);
+  const std::set<std::pair<int, int>> got(found.begin(), found.end());
+  RC_ASSERT(got.size() == found.size());  // no pair twice
+  for (const auto& pair :
+       exact::overlapping_pairs(K, corners(a.tris, a.x0, a.x1), corners(b.tris, b.x0, {})))
+    RC_ASSERT(got.count(pair) == 1);
+}
+
+template <int K>
+void check_all_options(const Soup& a, const Soup& b) {
+  const int leaf_size = *rc::gen::element(1, 4);
+  const int first_slab = *rc::gen::inRange(-1, Kdop<K>::kSlabs);
+  check_superset<K>(a, b, leaf_size, first_slab);
+}
+
+TEST(BvhProperties, TraversalContainsBruteForce) {
+  EXPECT_TRUE(rc::check("traversal-contains-brute-force", [] {
+    const Soup a = *soup(24), b = *soup(24);
+    check_all_options<6>(a, b);
+    check_all_options<14>(a, b);
+    check_all_options<18>(a, b);
+    check_all_options<26>(a, b);
+  }));
+}
+
+TEST(BvhProperties, RefitEqualsRebuild) {
+  EXPECT_TRUE(rc::check("refit-equals-rebuild", [] {
+    const Soup a = *soup(24), moved = *soup(24);
+    if (moved.x0.size() < a.x0.size()) return;
+    const std::vector<Vec3> y0(moved.x0.begin(), moved.x0.begin() + a.x0.size()),
+        y1(moved.x1.begin(), moved.x1.begin() + a.x0.size());
+    Bvh<18> t(a.tris, a.x0, a.x1);
+    t.refit(y0, y1);
+    // Every leaf's box contains the exact FDH of its primitives' swept corners, now.
+    const auto swept = corners(t.tris(), y0, y1);
+    for (const auto& n : t.nodes()) {
+      if (!n.leaf()) continue;
+      std::vector<Vec3> pts;
+      for (int p = n.first; p < n.first + n.count; ++p)
+        pts.insert(pts.end(), swept[t.prims()[p]].begin(), swept[t.prims()[p]].end());
+      RC_ASSERT(exact::first_uncontained_slab(18, pts.data(), pts.size(), n.box.lo.data(),
+                                              n.box.hi.data()) == -1);
+    }
+    // And the refit tree finds what a fresh tree finds.
+    Bvh<18> fresh(a.tris, y0, y1);
+    const Bvh<18> other(moved.tris, moved.x0);
+    std::vector<std::pair<int, int>> p1, p2;
+    traverse(t, other, p1);
+    traverse(fresh, other, p2);
+    std::sort(p1.begin(), p1.end());
+    std::sort(p2.begin(), p2.end());
+    RC_ASSERT(p1 == p2);
+  }));
+}
+
+}  // namespace
+}  // namespace fdh
