@@ -1,5 +1,6 @@
 #include "fdh/verify/families.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -15,7 +16,14 @@ struct Triangle {
   Vec3 at(double a, double b) const { return d + a * (e - d) + b * (f - d); }
 };
 
-int pick(int lo, int hi) { return *rc::gen::inRange(lo, hi + 1); }
+// An integer in [lo, hi] that shrinks toward the value nearest 0, alternating sides (c, c+1,
+// c-1, c+2, ...), so that shrunk counterexamples have small coordinates rather than lo's.
+int pick(int lo, int hi) {
+  const int k = *rc::gen::inRange(0, hi - lo + 1);
+  const int c = std::clamp(0, lo, hi), up = hi - c, down = c - lo, m = std::min(up, down);
+  if (k <= 2 * m) return (k % 2) ? c + (k + 1) / 2 : c - k / 2;
+  return up > down ? c + m + (k - 2 * m) : c - m - (k - 2 * m);
+}
 // A multiple of 2^-bits in [lo, hi] (lo, hi integers in units of 2^-bits).
 double dyadic(int lo, int hi, int bits) { return std::ldexp(double(pick(lo, hi)), -bits); }
 
@@ -133,13 +141,31 @@ Generated gen_base(Family f) {
     case Family::Sliver: {
       Triangle s = t;
       const Vec3 r = small_point(4);
-      const bool degenerate = pick(0, 4) == 0;
-      s.f = s.d + dyadic(-128, 384, 8) * (s.e - s.d) +
-            (degenerate ? 0.0 : std::ldexp(1.0, -pick(10, 40))) * r;
+      const Vec3 off = r == Vec3{} ? Vec3{0, 0, 1} : r;
+      s.f = s.d + dyadic(-128, 384, 8) * (s.e - s.d) + std::ldexp(1.0, -pick(10, 40)) * off;
       s.n = cross(s.e - s.d, s.f - s.d);
-      const Vec3 up = s.n == Vec3{} ? small_point(4) : s.n;
+      const Vec3 up = s.n == Vec3{} ? off : s.n;  // n may round to 0 for a thin enough sliver
       const InPlanePoint p0 = gen_in_plane(s), p1 = gen_in_plane(s);
       return make(f, s, p0.x + height() * up, p1.x - height() * up, -1);
+    }
+    case Family::Degenerate: {
+      // F on line DE, or all three corners at D. Half the paths go exactly through a point of
+      // the hull: the construction knows that hit, its kind and its time.
+      Triangle s = t;
+      const bool point = pick(0, 3) == 0;
+      if (point) s.e = s.d;
+      s.f = s.d + dyadic(-128, 384, 8) * (s.e - s.d);
+      s.n = Vec3{};
+      if (*rc::gen::arbitrary<bool>()) return make(f, s, small_point(16), small_point(16), -1);
+      // [D, E] lies in the hull. The path meets it only at t = 1 / (1 + mu), unless it runs
+      // along the hull's line: then it enters earlier, and only the hit is certain.
+      const Vec3 x = s.d + dyadic(0, 256, 8) * (s.e - s.d);
+      Vec3 w = small_point(4);
+      if (w == Vec3{}) w = Vec3{0, 0, 1};
+      const int mu = pick(1, 128);
+      Generated g = make(f, s, x + w, x - std::ldexp(double(mu), -6) * w, 1);
+      if (s.e == s.d || cross(w, s.e - s.d) != Vec3{}) g.time = ratio(64, 64 + mu);
+      return g;
     }
     default:
       break;
@@ -187,7 +213,7 @@ const std::vector<Family>& all_families() {
       Family::ParallelCross, Family::ParallelShort, Family::ParallelLand,  Family::ParallelStart,
       Family::Angled,        Family::ThroughEdge,   Family::ThroughVertex, Family::HairOutsideEdge,
       Family::InPlane,       Family::ZeroMotion,    Family::Grazing,       Family::FarFromOrigin,
-      Family::Tiny,          Family::Sliver};
+      Family::Tiny,          Family::Sliver,        Family::Degenerate};
   return all;
 }
 
@@ -207,6 +233,7 @@ std::string family_name(Family f) {
     case Family::FarFromOrigin: return "far-from-origin";
     case Family::Tiny: return "tiny";
     case Family::Sliver: return "sliver";
+    case Family::Degenerate: return "degenerate";
   }
   return "?";
 }

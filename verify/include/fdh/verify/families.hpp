@@ -29,7 +29,8 @@ enum class Family {
   Grazing,          // B' ends 2^-20 to 2^-45 (times |n|) from the plane, on either side
   FarFromOrigin,    // one of the above translated by up to 2^42
   Tiny,             // one of the above scaled by 2^-20 to 2^-60
-  Sliver,           // F within 2^-10 to 2^-40 of line DE, or on it
+  Sliver,           // F within 2^-10 to 2^-40 of line DE (never on it)
+  Degenerate,       // zero-area triangles: collinear or coincident corners
 };
 
 const std::vector<Family>& all_families();

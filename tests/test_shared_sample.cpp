@@ -1,0 +1,54 @@
+// The CCD benchmark sample in ../shared (exact ground truth computed by its authors): exact
+// must agree with every truth, and robust with exact. Skipped when ../shared is absent.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "fdh/verify/methods.hpp"
+#include "fdh/verify/query_io.hpp"
+
+namespace fdh::verify {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> sample_files(const std::string& kind_folder) {
+  std::vector<fs::path> files;
+  const fs::path root = FDH_SHARED_DIR "/ccd-sample";
+  if (!fs::is_directory(root)) return files;
+  for (const auto& e : fs::recursive_directory_iterator(root))
+    if (e.path().extension() == ".csv" && e.path().parent_path().filename() == kind_folder)
+      files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST(SharedSample, ExactMatchesGroundTruthAndRobustMatchesExact) {
+  const std::vector<fs::path> files = sample_files("vertex-face");
+  if (files.empty()) GTEST_SKIP() << "no ../shared/ccd-sample here";
+  const Method exact = select_methods({"exact"}).front(), robust = select_methods({"robust"}).front();
+  std::size_t checked = 0;
+  for (const fs::path& f : files) {
+    for (const Query& q : read_query_file(f.string())) {
+      ASSERT_TRUE(q.has_truth());
+      if (!q.is_static_vf()) continue;  // moving triangles: the CCD issue
+      SCOPED_TRACE(q.file + ":" + std::to_string(q.line));
+      const bool e = exact.hit(q);
+      EXPECT_EQ(e, bool(q.truth));
+      EXPECT_EQ(robust.hit(q), e);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 300u);
+}
+
+TEST(SharedSample, EveryFileParses) {
+  const std::vector<fs::path> vf = sample_files("vertex-face"), ee = sample_files("edge-edge");
+  if (vf.empty() && ee.empty()) GTEST_SKIP() << "no ../shared/ccd-sample here";
+  for (const auto& files : {vf, ee})
+    for (const fs::path& f : files) EXPECT_NO_THROW(read_query_file(f.string())) << f;
+}
+
+}  // namespace
+}  // namespace fdh::verify
