@@ -21,7 +21,9 @@ CliRun fdhcert(const std::vector<std::string>& args) {
   return {status, out.str(), err.str()};
 }
 
-bool file_exists(const std::string& p) { return std::ifstream(p).good(); }
+bool file_exists(const std::string& p) {
+  return std::ifstream(p).good();
+}
 
 TEST(Cli, HelpNamesEveryOption) {
   const CliRun r = fdhcert({"classify", "--help"});
@@ -42,12 +44,14 @@ TEST(Cli, ClassifyPrintsOneRowPerMethod) {
 }
 
 TEST(Cli, ClassifyJson) {
-  const CliRun r = fdhcert({"classify", kData + "static.vf", "--json", "--methods", "exact,robust"});
+  const CliRun r =
+      fdhcert({"classify", kData + "static.vf", "--json", "--methods", "exact,robust"});
   ASSERT_EQ(r.status, 0) << r.err;
   // Three queries carry truth and one does not: the counts mix both.
   EXPECT_EQ(r.out.rfind("{\"queries\": 4, \"truth\": \"mixed\"", 0), 0u) << r.out;
-  EXPECT_NE(r.out.find("\"exact\": {\"tp\": 2, \"tn\": 2, \"fp\": 0, \"fn\": 0, \"ns_per_query\": "),
-            std::string::npos)
+  EXPECT_NE(
+      r.out.find("\"exact\": {\"tp\": 2, \"tn\": 2, \"fp\": 0, \"fn\": 0, \"ns_per_query\": "),
+      std::string::npos)
       << r.out;
   EXPECT_EQ(r.out.find("paper-literal"), std::string::npos);
 }
@@ -55,15 +59,16 @@ TEST(Cli, ClassifyJson) {
 TEST(Cli, PerQueryCsv) {
   const std::string out = ::testing::TempDir() + "per_query.csv";
   std::remove(out.c_str());
-  const CliRun r = fdhcert({"classify", kData + "static.vf", "--per-query", out, "--methods",
-                         "exact,paper-literal"});
+  const CliRun r = fdhcert(
+      {"classify", kData + "static.vf", "--per-query", out, "--methods", "exact,paper-literal"});
   ASSERT_EQ(r.status, 0) << r.err;
   std::ifstream in(out);
   std::stringstream ss;
   ss << in.rdbuf();
   EXPECT_EQ(ss.str(),
-            "id,truth,exact,paper-literal\n"
-            "through-face,1,1,0\nshort,0,0,0\nhexfloat,1,1,0\nno-truth,0,0,0\n");
+            "id,truth,exact,paper-literal,contact,time\n"
+            "through-face,1,1,0,face,1/2\nshort,0,0,0,none,\nhexfloat,1,1,0,face,1/2\n"
+            "no-truth,0,0,0,none,\n");
 }
 
 TEST(Cli, GateRejectsBadK) {
@@ -75,7 +80,8 @@ TEST(Cli, GateRejectsBadK) {
 TEST(Cli, BadInputExitsTwoNamingFileAndLineAndWritesNothing) {
   const std::string out = ::testing::TempDir() + "never.csv";
   std::remove(out.c_str());
-  const CliRun r = fdhcert({"classify", kData + "static.vf", kData + "bad_number.vf", "--per-query", out});
+  const CliRun r =
+      fdhcert({"classify", kData + "static.vf", kData + "bad_number.vf", "--per-query", out});
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out, "");
   EXPECT_NE(r.err.find("bad_number.vf:3:"), std::string::npos) << r.err;

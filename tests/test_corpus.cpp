@@ -15,7 +15,8 @@ namespace fs = std::filesystem;
 const fs::path kCorpus = FDH_SOURCE_DIR "/corpus/counterexamples";
 
 TEST(Corpus, EveryCounterexampleStillFailsItsMethod) {
-  const Method exact = select_methods({"exact"}).front(), robust = select_methods({"robust"}).front();
+  const Method exact = select_methods({"exact"}).front(),
+               robust = select_methods({"robust"}).front();
   int files = 0;
   for (const auto& dir : fs::directory_iterator(kCorpus)) {
     const Method m = select_methods({dir.path().filename().string()}).front();

@@ -60,7 +60,9 @@ TEST(Kdop, MostAlignedSlabOfAFall) {
   EXPECT_EQ(Kdop<26>::direction(most_aligned_slab<26>(Vec3{1, 1.1, 0.9})).z, 1);
 }
 
-TEST(Kdop, BadKIsAnError) { EXPECT_THROW(with_k(8, [](auto) { return 0; }), std::invalid_argument); }
+TEST(Kdop, BadKIsAnError) {
+  EXPECT_THROW(with_k(8, [](auto) { return 0; }), std::invalid_argument);
+}
 
 }  // namespace
 }  // namespace fdh

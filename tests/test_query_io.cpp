@@ -75,15 +75,17 @@ TEST_P(QueryIoErrors, NameTheFileAndLine) {
 
 INSTANTIATE_TEST_SUITE_P(
     All, QueryIoErrors,
-    ::testing::Values(BadFile{"bad_count.vf", "bad_count.vf:2: expected 'vf <id> <24 numbers>"},
-                      BadFile{"bad_number.vf", "bad_number.vf:3: number 8: 'zero' is not a number"},
-                      BadFile{"bad_nan.vf", "bad_nan.vf:1: number 24: 'nan' is not a finite"},
-                      BadFile{"bad_inf.vf", "bad_inf.vf:1: number 24: '1e999' is outside the range"},
-                      BadFile{"bad_kind.vf", "bad_kind.vf:1: a query line starts with"},
-                      BadFile{"bad_truth.vf", "bad_truth.vf:1: truth must be 0 or 1"},
-                      BadFile{"vertex-face/bad_rational.csv", "bad_rational.csv:1: '1/3' is not exactly a double"},
-                      BadFile{"vertex-face/bad_short.csv", "bad_short.csv:5: the file ends inside a query"},
-                      BadFile{"missing.vf", "missing.vf: cannot open file"}));
+    ::testing::Values(
+        BadFile{"bad_count.vf", "bad_count.vf:2: expected 'vf <id> <24 numbers>"},
+        BadFile{"bad_number.vf", "bad_number.vf:3: number 8: 'zero' is not a number"},
+        BadFile{"bad_nan.vf", "bad_nan.vf:1: number 24: 'nan' is not a finite"},
+        BadFile{"bad_inf.vf", "bad_inf.vf:1: number 24: '1e999' is outside the range"},
+        BadFile{"bad_kind.vf", "bad_kind.vf:1: a query line starts with"},
+        BadFile{"bad_truth.vf", "bad_truth.vf:1: truth must be 0 or 1"},
+        BadFile{"vertex-face/bad_rational.csv",
+                "bad_rational.csv:1: '1/3' is not exactly a double"},
+        BadFile{"vertex-face/bad_short.csv", "bad_short.csv:5: the file ends inside a query"},
+        BadFile{"missing.vf", "missing.vf: cannot open file"}));
 
 }  // namespace
 }  // namespace fdh::verify

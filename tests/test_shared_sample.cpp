@@ -27,7 +27,8 @@ std::vector<fs::path> sample_files(const std::string& kind_folder) {
 TEST(SharedSample, ExactMatchesGroundTruthAndRobustMatchesExact) {
   const std::vector<fs::path> files = sample_files("vertex-face");
   if (files.empty()) GTEST_SKIP() << "no ../shared/ccd-sample here";
-  const Method exact = select_methods({"exact"}).front(), robust = select_methods({"robust"}).front();
+  const Method exact = select_methods({"exact"}).front(),
+               robust = select_methods({"robust"}).front();
   std::size_t checked = 0;
   for (const fs::path& f : files) {
     for (const Query& q : read_query_file(f.string())) {

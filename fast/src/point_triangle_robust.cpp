@@ -10,8 +10,8 @@ namespace fdh {
 //   are all >= 0 or all <= 0. Two certain opposite signs: no. This holds for zero-area triangles
 //   too: a line that meets the triangle makes all three signs zero there.
 // - P and Q certainly on opposite sides and all three line signs certain (hence equal): yes.
-Filtered robust_point_triangle_filter(const Vec3& b0, const Vec3& b1, const Vec3& d,
-                                      const Vec3& e, const Vec3& f) {
+Filtered robust_point_triangle_filter(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
+                                      const Vec3& f) {
   const int sp = orient3d_filtered(d, e, f, b0);
   const int sq = orient3d_filtered(d, e, f, b1);
   if (sp != 0 && sp == sq) return Filtered::No;

@@ -19,8 +19,12 @@ using EK = CGAL::Simple_cartesian<FT>;
 using Point = EK::Point_3;
 using Vector = EK::Vector_3;
 
-Point to_exact(const Vec3& p) { return Point(p.x, p.y, p.z); }
-Epick::Point_3 to_epick(const Vec3& p) { return Epick::Point_3(p.x, p.y, p.z); }
+Point to_exact(const Vec3& p) {
+  return Point(p.x, p.y, p.z);
+}
+Epick::Point_3 to_epick(const Vec3& p) {
+  return Epick::Point_3(p.x, p.y, p.z);
+}
 
 struct Contact {
   bool hit = false;
@@ -56,7 +60,7 @@ Contact path_segment(const Point& P, const Vector& d, const Point& A, const Poin
     return (s == 0 || s == 1) ? ContactKind::Vertex : ContactKind::Edge;
   };
   const Vector w = CGAL::cross_product(d, e);
-  if (w != CGAL::NULL_VECTOR) {  // lines not parallel: P + t d = A + s e
+  if (w != CGAL::NULL_VECTOR) {    // lines not parallel: P + t d = A + s e
     if (r * w != 0) return kNone;  // skew
     const FT ww = w * w;
     const FT t = (CGAL::cross_product(r, e) * w) / ww;
@@ -137,11 +141,16 @@ std::string rational_string(const FT& q) {
 
 const char* to_string(ContactKind k) {
   switch (k) {
-    case ContactKind::None: return "none";
-    case ContactKind::Face: return "face";
-    case ContactKind::Edge: return "edge";
-    case ContactKind::Vertex: return "vertex";
-    case ContactKind::InPlane: return "in-plane";
+    case ContactKind::None:
+      return "none";
+    case ContactKind::Face:
+      return "face";
+    case ContactKind::Edge:
+      return "edge";
+    case ContactKind::Vertex:
+      return "vertex";
+    case ContactKind::InPlane:
+      return "in-plane";
   }
   return "?";
 }

@@ -20,29 +20,30 @@ struct Soup {
 // n triangles with dyadic corners in a small box, each moving by a small dyadic step: many
 // touching and near-touching boxes.
 rc::Gen<Soup> soup(int max_tris) {
-  return rc::gen::resize(rc::kNominalSize, rc::gen::exec([max_tris] {
-    Soup s;
-    const int n = *rc::gen::inRange(1, max_tris + 1);
-    const auto coord = [] { return std::ldexp(double(*rc::gen::inRange(-64, 65)), -3); };
-    const auto step = [] { return std::ldexp(double(*rc::gen::inRange(-8, 9)), -4); };
-    for (int t = 0; t < n; ++t) {
-      Tri tri;
-      for (int c = 0; c < 3; ++c) {
-        // Share a vertex with an earlier triangle now and then, as a mesh does.
-        const bool share = !s.x0.empty() && *rc::gen::inRange(0, 4) == 0;
-        if (share) {
-          tri[c] = *rc::gen::inRange(0, int(s.x0.size()));
-        } else {
-          tri[c] = int(s.x0.size());
-          const Vec3 p{coord(), coord(), coord()};
-          s.x0.push_back(p);
-          s.x1.push_back(p + Vec3{step(), step(), step()});
+  return rc::gen::resize(
+      rc::kNominalSize, rc::gen::exec([max_tris] {
+        Soup s;
+        const int n = *rc::gen::inRange(1, max_tris + 1);
+        const auto coord = [] { return std::ldexp(double(*rc::gen::inRange(-64, 65)), -3); };
+        const auto step = [] { return std::ldexp(double(*rc::gen::inRange(-8, 9)), -4); };
+        for (int t = 0; t < n; ++t) {
+          Tri tri;
+          for (int c = 0; c < 3; ++c) {
+            // Share a vertex with an earlier triangle now and then, as a mesh does.
+            const bool share = !s.x0.empty() && *rc::gen::inRange(0, 4) == 0;
+            if (share) {
+              tri[c] = *rc::gen::inRange(0, int(s.x0.size()));
+            } else {
+              tri[c] = int(s.x0.size());
+              const Vec3 p{coord(), coord(), coord()};
+              s.x0.push_back(p);
+              s.x1.push_back(p + Vec3{step(), step(), step()});
+            }
+          }
+          s.tris.push_back(tri);
         }
-      }
-      s.tris.push_back(tri);
-    }
-    return s;
-  }));
+        return s;
+      }));
 }
 
 // Each primitive's corners: at x0, and at x1 too when swept.

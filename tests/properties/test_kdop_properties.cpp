@@ -15,27 +15,29 @@ namespace {
 // Any double with |x| in [2^-60, 2^41), all 53 bits random: the sums round.
 rc::Gen<double> wide_double() {
   return rc::gen::resize(rc::kNominalSize, rc::gen::exec([] {
-    const auto mant = *rc::gen::inRange<std::int64_t>(std::int64_t(1) << 52, std::int64_t(1) << 53);
-    const int e = *rc::gen::inRange(-60, 41);
-    const double sign = *rc::gen::element(-1.0, 1.0);
-    return sign * std::ldexp(double(mant), e - 53);
-  }));
+                           const auto mant = *rc::gen::inRange<std::int64_t>(std::int64_t(1) << 52,
+                                                                             std::int64_t(1) << 53);
+                           const int e = *rc::gen::inRange(-60, 41);
+                           const double sign = *rc::gen::element(-1.0, 1.0);
+                           return sign * std::ldexp(double(mant), e - 53);
+                         }));
 }
 
 // A cloud of 1 to 8 points: near the origin, or 2^20 to 2^40 from it with small spread.
 rc::Gen<std::vector<Vec3>> cloud() {
-  return rc::gen::resize(rc::kNominalSize, rc::gen::exec([] {
-    const int n = *rc::gen::inRange(1, 9);
-    const bool far = *rc::gen::arbitrary<bool>();
-    const Vec3 centre = far ? Vec3{std::ldexp(1.0, *rc::gen::inRange(20, 41)),
-                                   -std::ldexp(1.0, *rc::gen::inRange(20, 41)),
-                                   std::ldexp(3.0, *rc::gen::inRange(20, 41))}
-                            : Vec3{};
-    std::vector<Vec3> pts;
-    for (int i = 0; i < n; ++i)
-      pts.push_back(centre + Vec3{*wide_double(), *wide_double(), *wide_double()});
-    return pts;
-  }));
+  return rc::gen::resize(
+      rc::kNominalSize, rc::gen::exec([] {
+        const int n = *rc::gen::inRange(1, 9);
+        const bool far = *rc::gen::arbitrary<bool>();
+        const Vec3 centre = far ? Vec3{std::ldexp(1.0, *rc::gen::inRange(20, 41)),
+                                       -std::ldexp(1.0, *rc::gen::inRange(20, 41)),
+                                       std::ldexp(3.0, *rc::gen::inRange(20, 41))}
+                                : Vec3{};
+        std::vector<Vec3> pts;
+        for (int i = 0; i < n; ++i)
+          pts.push_back(centre + Vec3{*wide_double(), *wide_double(), *wide_double()});
+        return pts;
+      }));
 }
 
 template <int K>

@@ -90,18 +90,28 @@ TEST_P(PaperFacts, Hold) {
     const exact::PointTriangleContact e =
         exact::point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f());
     switch (c.fact) {
-      case Fact::AlwaysNo: RC_ASSERT(!v); break;
-      case Fact::AlwaysYes: RC_ASSERT(v); break;
-      case Fact::NeverMisses: RC_ASSERT(v || !e.hit); break;
-      case Fact::NoFalseAlarm: RC_ASSERT(!v || e.hit); break;
-      case Fact::NeverMissesFace: RC_ASSERT(v || e.kind != exact::ContactKind::Face); break;
+      case Fact::AlwaysNo:
+        RC_ASSERT(!v);
+        break;
+      case Fact::AlwaysYes:
+        RC_ASSERT(v);
+        break;
+      case Fact::NeverMisses:
+        RC_ASSERT(v || !e.hit);
+        break;
+      case Fact::NoFalseAlarm:
+        RC_ASSERT(!v || e.hit);
+        break;
+      case Fact::NeverMissesFace:
+        RC_ASSERT(v || e.kind != exact::ContactKind::Face);
+        break;
     }
   })) << c.why;
 }
 
 std::string claim_name(const ::testing::TestParamInfo<Claim>& info) {
-  static const char* const kFacts[] = {"always_no", "always_yes", "never_misses",
-                                       "no_false_alarm", "never_misses_face"};
+  static const char* const kFacts[] = {"always_no", "always_yes", "never_misses", "no_false_alarm",
+                                       "never_misses_face"};
   std::string n = std::string(info.param.method) + "_" + family_name(info.param.family) + "_" +
                   kFacts[int(info.param.fact)];
   for (char& ch : n)

@@ -25,7 +25,8 @@ TEST_P(PointTriangleFamily, ExactMatchesTheConstruction) {
   EXPECT_TRUE(rc::check("exact-matches-construction/" + family_name(GetParam()), [f = GetParam()] {
     const Generated g = *gen_family(f);
     const Query& q = g.query;
-    const exact::PointTriangleContact c = exact::point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f());
+    const exact::PointTriangleContact c =
+        exact::point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f());
     if (q.has_truth()) RC_ASSERT(c.hit == bool(q.truth));
     if (!g.kind.empty()) RC_ASSERT(std::string(exact::to_string(c.kind)) == g.kind);
     if (!g.time.empty()) RC_ASSERT(c.time == g.time);

@@ -9,7 +9,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::vector<char> run_and_time(const Method& m, const std::vector<Query>& qs, double& ns_per_query) {
+std::vector<char> run_and_time(const Method& m, const std::vector<Query>& qs,
+                               double& ns_per_query) {
   std::vector<char> verdict(qs.size());
   const auto pass = [&] {
     for (std::size_t i = 0; i < qs.size(); ++i) verdict[i] = m.hit(qs[i]);

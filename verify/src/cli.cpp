@@ -14,7 +14,8 @@
 namespace fdh::verify {
 namespace {
 
-const char* const kMainHelp = R"(fdhcert: exact verification of FDH (k-DOP) cloth collision detection
+const char* const kMainHelp =
+    R"(fdhcert: exact verification of FDH (k-DOP) cloth collision detection
 
 usage: fdhcert <command> [options]
 
@@ -25,7 +26,8 @@ Run 'fdhcert <command> --help' for the options of a command.
 Exit status: 0 success, 1 a --check failed, 2 bad input or usage.
 )";
 
-const char* const kClassifyHelp = R"(usage: fdhcert classify FILE... [--methods LIST] [--gate K] [--kind vf|ee]
+const char* const kClassifyHelp =
+    R"(usage: fdhcert classify FILE... [--methods LIST] [--gate K] [--kind vf|ee]
                                 [--json] [--per-query OUT.csv] [--check]
 
 Runs the point-triangle methods side by side on every static vertex-face query
@@ -49,8 +51,9 @@ options:
                      {"queries": N, "truth": "file"|"exact"|"mixed", "gate": K,
                       "skipped": S, "methods": {"exact": {"tp": .., "tn": ..,
                       "fp": .., "fn": .., "ns_per_query": ..}, ...}}
-  --per-query FILE   also write FILE, one CSV row per query: id, truth, then
-                     each method's verdict (0/1)
+  --per-query FILE   also write FILE, one CSV row per query: id, truth, each
+                     method's verdict (0/1), then exact's contact kind and
+                     exact contact time (a rational)
   --check            exit 1 if exact disagrees with a file's truth, or robust
                      with exact, on any query
   -h, --help         this text
@@ -104,9 +107,12 @@ int classify_command(const std::vector<std::string>& args, std::ostream& out, st
       gate = parse_int(a, value());
     } else if (a == "--kind") {
       const std::string& k = value();
-      if (k == "vf") kind = QueryKind::VertexFace;
-      else if (k == "ee") kind = QueryKind::EdgeEdge;
-      else throw UsageError("--kind takes vf or ee, not '" + k + "'");
+      if (k == "vf")
+        kind = QueryKind::VertexFace;
+      else if (k == "ee")
+        kind = QueryKind::EdgeEdge;
+      else
+        throw UsageError("--kind takes vf or ee, not '" + k + "'");
     } else if (a == "--json") {
       json = true;
     } else if (a == "--per-query") {
@@ -154,15 +160,17 @@ int classify_command(const std::vector<std::string>& args, std::ostream& out, st
   const Classification c = classify(queries, methods);
   const ReportContext ctx{gate, skipped};
   if (!per_query.empty()) write_file_atomically(per_query, per_query_csv(queries, c));
-  if (json) print_json(out, c, ctx);
-  else print_table(out, c, ctx);
+  if (json)
+    print_json(out, c, ctx);
+  else
+    print_table(out, c, ctx);
 
   for (const std::size_t i : c.exact_vs_file)
     err << "fdhcert: exact disagrees with the file's truth at " << queries[i].file << ":"
         << queries[i].line << " (query " << queries[i].id << ")\n";
   for (const std::size_t i : c.robust_vs_exact)
-    err << "fdhcert: robust disagrees with exact at " << queries[i].file << ":"
-        << queries[i].line << " (query " << queries[i].id << ")\n";
+    err << "fdhcert: robust disagrees with exact at " << queries[i].file << ":" << queries[i].line
+        << " (query " << queries[i].id << ")\n";
   const bool failed = !c.exact_vs_file.empty() || !c.robust_vs_exact.empty();
   return check && failed ? 1 : 0;
 }

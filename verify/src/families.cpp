@@ -25,9 +25,13 @@ int pick(int lo, int hi) {
   return up > down ? c + m + (k - 2 * m) : c - m - (k - 2 * m);
 }
 // A multiple of 2^-bits in [lo, hi] (lo, hi integers in units of 2^-bits).
-double dyadic(int lo, int hi, int bits) { return std::ldexp(double(pick(lo, hi)), -bits); }
+double dyadic(int lo, int hi, int bits) {
+  return std::ldexp(double(pick(lo, hi)), -bits);
+}
 
-Vec3 small_point(int r) { return Vec3{double(pick(-r, r)), double(pick(-r, r)), double(pick(-r, r))}; }
+Vec3 small_point(int r) {
+  return Vec3{double(pick(-r, r)), double(pick(-r, r)), double(pick(-r, r))};
+}
 
 // Zero-area draws (rare) become a unit right triangle at D: no retry loop, so shrinking stays
 // simple.
@@ -173,8 +177,8 @@ Generated gen_base(Family f) {
   return make(f, t, t.d, t.d, -1);  // unreachable: the composite families are built below
 }
 
-const std::vector<Family> kBases = {Family::ParallelCross, Family::Angled,
-                                    Family::ThroughEdge,   Family::ThroughVertex,
+const std::vector<Family> kBases = {Family::ParallelCross,   Family::Angled,
+                                    Family::ThroughEdge,     Family::ThroughVertex,
                                     Family::HairOutsideEdge, Family::Grazing};
 
 // a + b, and whether it was exact (Knuth's TwoSum error term is zero).
@@ -219,21 +223,36 @@ const std::vector<Family>& all_families() {
 
 std::string family_name(Family f) {
   switch (f) {
-    case Family::ParallelCross: return "parallel-cross";
-    case Family::ParallelShort: return "parallel-short";
-    case Family::ParallelLand: return "parallel-land";
-    case Family::ParallelStart: return "parallel-start";
-    case Family::Angled: return "angled";
-    case Family::ThroughEdge: return "through-edge";
-    case Family::ThroughVertex: return "through-vertex";
-    case Family::HairOutsideEdge: return "hair-outside-edge";
-    case Family::InPlane: return "in-plane";
-    case Family::ZeroMotion: return "zero-motion";
-    case Family::Grazing: return "grazing";
-    case Family::FarFromOrigin: return "far-from-origin";
-    case Family::Tiny: return "tiny";
-    case Family::Sliver: return "sliver";
-    case Family::Degenerate: return "degenerate";
+    case Family::ParallelCross:
+      return "parallel-cross";
+    case Family::ParallelShort:
+      return "parallel-short";
+    case Family::ParallelLand:
+      return "parallel-land";
+    case Family::ParallelStart:
+      return "parallel-start";
+    case Family::Angled:
+      return "angled";
+    case Family::ThroughEdge:
+      return "through-edge";
+    case Family::ThroughVertex:
+      return "through-vertex";
+    case Family::HairOutsideEdge:
+      return "hair-outside-edge";
+    case Family::InPlane:
+      return "in-plane";
+    case Family::ZeroMotion:
+      return "zero-motion";
+    case Family::Grazing:
+      return "grazing";
+    case Family::FarFromOrigin:
+      return "far-from-origin";
+    case Family::Tiny:
+      return "tiny";
+    case Family::Sliver:
+      return "sliver";
+    case Family::Degenerate:
+      return "degenerate";
   }
   return "?";
 }
@@ -247,9 +266,10 @@ std::optional<Family> family_by_name(const std::string& name) {
 // RapidCheck scales inRange by its size parameter (size 0 gives only the minimum). A family is
 // a fixed distribution, so every case is drawn at the nominal size; shrinking still works.
 rc::Gen<Generated> gen_family(Family f) {
-  return rc::gen::resize(rc::kNominalSize, rc::gen::exec([f] {
-    return (f == Family::FarFromOrigin || f == Family::Tiny) ? gen_composite(f) : gen_base(f);
-  }));
+  return rc::gen::resize(
+      rc::kNominalSize, rc::gen::exec([f] {
+        return (f == Family::FarFromOrigin || f == Family::Tiny) ? gen_composite(f) : gen_base(f);
+      }));
 }
 
 void showValue(const Generated& g, std::ostream& os) {

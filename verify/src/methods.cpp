@@ -40,7 +40,8 @@ std::vector<Method> all_methods(int gate_k) {
     throw std::invalid_argument("--gate takes 6, 14, 18 or 26, not " + std::to_string(gate_k));
   const auto paper = [gate_k](Test t) { return gate_k ? gated(t, gate_k) : on_query(t); };
   return {
-      {"exact", "CGAL/GMP exact segment-triangle test (reference/)", on_query(&exact::point_triangle_hit)},
+      {"exact", "CGAL/GMP exact segment-triangle test (reference/)",
+       on_query(&exact::point_triangle_hit)},
       {"robust", "orient3d signs behind a static filter, exact fallback", on_query(&robust)},
       {"paper-literal", "Han & Jia 3.2 as printed", paper(&paper_literal)},
       {"paper-intended", "Han & Jia 3.2 as Figs. 3-4 read", paper(&paper_intended)},

@@ -2,7 +2,9 @@
 
 #include <cstdio>
 #include <set>
+
 #include <sstream>
+#include "fdh/exact/point_triangle.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -35,8 +37,9 @@ std::string csv_field(const std::string& s) {
 
 void print_table(std::ostream& os, const Classification& c, const ReportContext& ctx) {
   os << c.queries << " static vertex-face queries, counted against "
-     << (c.truth == "file" ? "the file's truth"
-                           : c.truth == "exact" ? "exact" : "the file's truth where given, else exact");
+     << (c.truth == "file"    ? "the file's truth"
+         : c.truth == "exact" ? "exact"
+                              : "the file's truth where given, else exact");
   if (ctx.gate_k) os << "; paper methods gated by " << ctx.gate_k << "-DOP overlap";
   if (ctx.skipped) os << "; " << ctx.skipped << " other queries skipped";
   os << "\n";
@@ -75,12 +78,14 @@ std::string per_query_csv(const std::vector<Query>& queries, const Classificatio
   std::ostringstream os;
   os << "id,truth";
   for (const MethodResult& m : c.methods) os << ',' << m.name;
-  os << '\n';
+  os << ",contact,time\n";
   for (std::size_t i = 0; i < queries.size(); ++i) {
-    os << csv_field(prefix ? queries[i].file + ":" + queries[i].id : queries[i].id) << ','
-       << int(c.reference[i]);
+    const Query& q = queries[i];
+    os << csv_field(prefix ? q.file + ":" + q.id : q.id) << ',' << int(c.reference[i]);
     for (const MethodResult& m : c.methods) os << ',' << int(m.verdict[i]);
-    os << '\n';
+    const exact::PointTriangleContact e =
+        exact::point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f());
+    os << ',' << exact::to_string(e.kind) << ',' << e.time << '\n';
   }
   return os.str();
 }

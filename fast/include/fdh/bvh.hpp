@@ -84,14 +84,15 @@ class Bvh {
     double longest = -1;
     for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
       const Direction& d = Kdop<K>::direction(s);
-      const double len = (node.box.hi[s] - node.box.lo[s]) /
-                         std::sqrt(double(d.x * d.x + d.y * d.y + d.z * d.z));
+      const double len =
+          (node.box.hi[s] - node.box.lo[s]) / std::sqrt(double(d.x * d.x + d.y * d.y + d.z * d.z));
       if (len > longest) axis = s, longest = len;
     }
     const Direction& d = Kdop<K>::direction(axis);
     const auto centre = [&](int prim) {  // sum of the corners: the centroid up to a factor
       double c = 0;
-      for (const int v : tris_[prim]) c += project(d, x0[v]) + (x1.empty() ? 0.0 : project(d, x1[v]));
+      for (const int v : tris_[prim])
+        c += project(d, x0[v]) + (x1.empty() ? 0.0 : project(d, x1[v]));
       return c;
     };
     const int mid = first + (last - first) / 2;

@@ -24,10 +24,19 @@ struct Direction {
 };
 
 // The 13 integer directions: 3 axes, 4 corner diagonals, 6 edge diagonals.
-inline constexpr std::array<Direction, 13> kDirections = {{
-    {1, 0, 0}, {0, 1, 0}, {0, 0, 1},                                                // axes
-    {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {1, -1, -1},                                  // corners
-    {1, 1, 0}, {1, -1, 0}, {1, 0, 1}, {1, 0, -1}, {0, 1, 1}, {0, 1, -1}}};           // edges
+inline constexpr std::array<Direction, 13> kDirections = {{{1, 0, 0},
+                                                           {0, 1, 0},
+                                                           {0, 0, 1},  // axes
+                                                           {1, 1, 1},
+                                                           {1, 1, -1},
+                                                           {1, -1, 1},
+                                                           {1, -1, -1},  // corners
+                                                           {1, 1, 0},
+                                                           {1, -1, 0},
+                                                           {1, 0, 1},
+                                                           {1, 0, -1},
+                                                           {0, 1, 1},
+                                                           {0, 1, -1}}};  // edges
 
 // Which of the 13 directions a k-DOP uses: 6 = axes, 14 = axes + corners, 18 = axes + edges,
 // 26 = all.
@@ -43,10 +52,14 @@ constexpr std::array<int, K / 2> direction_indices() {
   return idx;
 }
 
-inline bool is_valid_k(int k) { return k == 6 || k == 14 || k == 18 || k == 26; }
+inline bool is_valid_k(int k) {
+  return k == 6 || k == 14 || k == 18 || k == 26;
+}
 
 // d·p in the order ((dx·px + dy·py) + dz·pz). The products are exact (d is 0 or ±1).
-inline double project(const Direction& d, const Vec3& p) { return d.x * p.x + d.y * p.y + d.z * p.z; }
+inline double project(const Direction& d, const Vec3& p) {
+  return d.x * p.x + d.y * p.y + d.z * p.z;
+}
 
 // How far to push a diagonal slab outward, given mag = the largest |coordinate| of the points.
 // Each projection is s2 = fl(fl(a+b)+c) with |a|,|b|,|c| <= mag. In the standard model
@@ -163,10 +176,14 @@ int most_aligned_slab(const Vec3& motion) {
 template <class F>
 decltype(auto) with_k(int k, F&& f) {
   switch (k) {
-    case 6: return f(std::integral_constant<int, 6>{});
-    case 14: return f(std::integral_constant<int, 14>{});
-    case 18: return f(std::integral_constant<int, 18>{});
-    case 26: return f(std::integral_constant<int, 26>{});
+    case 6:
+      return f(std::integral_constant<int, 6>{});
+    case 14:
+      return f(std::integral_constant<int, 14>{});
+    case 18:
+      return f(std::integral_constant<int, 18>{});
+    case 26:
+      return f(std::integral_constant<int, 26>{});
   }
   throw std::invalid_argument("k must be 6, 14, 18 or 26, not " + std::to_string(k));
 }

@@ -11,8 +11,8 @@ namespace fdh {
 
 enum class Filtered { No, Yes, Uncertain };
 
-Filtered robust_point_triangle_filter(const Vec3& b0, const Vec3& b1, const Vec3& d,
-                                      const Vec3& e, const Vec3& f);
+Filtered robust_point_triangle_filter(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
+                                      const Vec3& f);
 
 using PointTriangleTest = bool (*)(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
                                    const Vec3& f);
@@ -20,9 +20,12 @@ using PointTriangleTest = bool (*)(const Vec3& b0, const Vec3& b1, const Vec3& d
 inline bool robust_point_triangle(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
                                   const Vec3& f, PointTriangleTest exact_fallback) {
   switch (robust_point_triangle_filter(b0, b1, d, e, f)) {
-    case Filtered::No: return false;
-    case Filtered::Yes: return true;
-    case Filtered::Uncertain: break;
+    case Filtered::No:
+      return false;
+    case Filtered::Yes:
+      return true;
+    case Filtered::Uncertain:
+      break;
   }
   return exact_fallback(b0, b1, d, e, f);
 }

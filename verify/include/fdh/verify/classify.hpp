@@ -24,11 +24,11 @@ struct MethodResult {
 
 struct Classification {
   std::size_t queries = 0;
-  std::string truth;           // "file" (every query has one), "exact" (none has), or "mixed"
+  std::string truth;            // "file" (every query has one), "exact" (none has), or "mixed"
   std::vector<char> reference;  // per query: the file's truth where given, else exact's verdict
   std::vector<char> exact;      // per query: exact's verdict
   std::vector<MethodResult> methods;
-  std::vector<std::size_t> exact_vs_file;  // queries where exact disagrees with the file's truth
+  std::vector<std::size_t> exact_vs_file;    // queries where exact disagrees with the file's truth
   std::vector<std::size_t> robust_vs_exact;  // queries where robust (if run) disagrees with exact
 };
 

@@ -39,9 +39,9 @@ std::optional<Family> family_by_name(const std::string& name);
 
 struct Generated {
   Family family;
-  Query query;        // query.truth: 0 or 1 where the construction decides it, else -1
-  std::string kind;   // the contact kind the construction guarantees ("edge", ...), or ""
-  std::string time;   // the exact contact time it guarantees ("p/q"), or ""
+  Query query;       // query.truth: 0 or 1 where the construction decides it, else -1
+  std::string kind;  // the contact kind the construction guarantees ("edge", ...), or ""
+  std::string time;  // the exact contact time it guarantees ("p/q"), or ""
 };
 
 rc::Gen<Generated> gen_family(Family f);

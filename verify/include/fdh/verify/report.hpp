@@ -11,7 +11,7 @@
 namespace fdh::verify {
 
 struct ReportContext {
-  int gate_k = 0;        // the --gate in force, 0 if none
+  int gate_k = 0;           // the --gate in force, 0 if none
   std::size_t skipped = 0;  // queries left out (moving triangles, edge-edge)
 };
 
@@ -21,8 +21,9 @@ void print_table(std::ostream& os, const Classification& c, const ReportContext&
 //  "methods": {"<name>": {"tp":…, "tn":…, "fp":…, "fn":…, "ns_per_query":…}, …}}
 void print_json(std::ostream& os, const Classification& c, const ReportContext& ctx);
 
-// id,truth,<method>,… with one row per query; verdicts are 0 or 1. With queries from several
-// files the id is "<file>:<id>".
+// id,truth,<method>,…,contact,time with one row per query; verdicts are 0 or 1; contact and
+// time are exact's contact kind and earliest contact time (a rational, empty for no contact).
+// With queries from several files the id is "<file>:<id>".
 std::string per_query_csv(const std::vector<Query>& queries, const Classification& c);
 
 }  // namespace fdh::verify
