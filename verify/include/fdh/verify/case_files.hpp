@@ -1,0 +1,22 @@
+// Stored cases: one query per native file, named by a hash of its coordinates so that the same
+// case found twice (by two threads, two shards, or a resumed run) is one file.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fdh/query.hpp"
+
+namespace fdh::verify {
+
+// 16 hex digits (FNV-1a over the 24 coordinates' bits and the kind).
+std::string case_hash(const Query& q);
+
+// `# comment` lines, then the query as a native line (hex-float, truth included).
+std::string case_file_text(const Query& q, const std::vector<std::string>& comments);
+
+// The query files under `path`: the file itself, or every *.vf below a folder, sorted.
+// Throws InputError for a path that does not exist.
+std::vector<std::string> list_query_files(const std::string& path);
+
+}  // namespace fdh::verify
