@@ -8,43 +8,13 @@
 
 #include "fdh/bvh.hpp"
 #include "fdh/exact/kdop.hpp"
+#include "fdh/verify/families.hpp"
 
 namespace fdh {
 namespace {
 
-struct Soup {
-  std::vector<Tri> tris;
-  std::vector<Vec3> x0, x1;
-};
-
-// n triangles with dyadic corners in a small box, each moving by a small dyadic step: many
-// touching and near-touching boxes.
-rc::Gen<Soup> soup(int max_tris) {
-  return rc::gen::resize(
-      rc::kNominalSize, rc::gen::exec([max_tris] {
-        Soup s;
-        const int n = *rc::gen::inRange(1, max_tris + 1);
-        const auto coord = [] { return std::ldexp(double(*rc::gen::inRange(-64, 65)), -3); };
-        const auto step = [] { return std::ldexp(double(*rc::gen::inRange(-8, 9)), -4); };
-        for (int t = 0; t < n; ++t) {
-          Tri tri;
-          for (int c = 0; c < 3; ++c) {
-            // Share a vertex with an earlier triangle now and then, as a mesh does.
-            const bool share = !s.x0.empty() && *rc::gen::inRange(0, 4) == 0;
-            if (share) {
-              tri[c] = *rc::gen::inRange(0, int(s.x0.size()));
-            } else {
-              tri[c] = int(s.x0.size());
-              const Vec3 p{coord(), coord(), coord()};
-              s.x0.push_back(p);
-              s.x1.push_back(p + Vec3{step(), step(), step()});
-            }
-          }
-          s.tris.push_back(tri);
-        }
-        return s;
-      }));
-}
+using verify::gen_soup;
+using verify::Soup;
 
 // Each primitive's corners: at x0, and at x1 too when swept.
 std::vector<std::vector<Vec3>> corners(const std::vector<Tri>& tris, const std::vector<Vec3>& x0,
@@ -83,7 +53,7 @@ void check_all_options(const Soup& a, const Soup& b) {
 
 TEST(BvhProperties, TraversalContainsBruteForce) {
   EXPECT_TRUE(rc::check("traversal-contains-brute-force", [] {
-    const Soup a = *soup(24), b = *soup(24);
+    const Soup a = *gen_soup(24), b = *gen_soup(24);
     check_all_options<6>(a, b);
     check_all_options<14>(a, b);
     check_all_options<18>(a, b);
@@ -93,7 +63,7 @@ TEST(BvhProperties, TraversalContainsBruteForce) {
 
 TEST(BvhProperties, RefitEqualsRebuild) {
   EXPECT_TRUE(rc::check("refit-equals-rebuild", [] {
-    const Soup a = *soup(24), moved = *soup(24);
+    const Soup a = *gen_soup(24), moved = *gen_soup(24);
     if (moved.x0.size() < a.x0.size()) return;
     const std::vector<Vec3> y0(moved.x0.begin(), moved.x0.begin() + a.x0.size()),
         y1(moved.x1.begin(), moved.x1.begin() + a.x0.size());

@@ -16,6 +16,7 @@ commands:
   fuzz               search a generator family for cases where a method is wrong,
                      shrink them and store them
   replay PATH...     re-run stored cases: which methods still fail where
+  certify            certify the fast library against the exact reference
 
 Run 'fdhcert <command> --help' for the options of a command.
 Exit status: 0 success, 1 a check or certificate failed, 2 bad input or usage.
@@ -38,6 +39,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (cmd == "classify") return classify_command(rest, out, err);
     if (cmd == "fuzz") return fuzz_command(rest, out, err);
     if (cmd == "replay") return replay_command(rest, out, err);
+    if (cmd == "certify") return certify_command(rest, out, err);
     throw UsageError("unknown command '" + cmd + "' (see fdhcert --help)");
   } catch (const UsageError& e) {
     err << "fdhcert: " << e.what() << "\n";

@@ -272,6 +272,30 @@ rc::Gen<Generated> gen_family(Family f) {
       }));
 }
 
+rc::Gen<Soup> gen_soup(int max_tris) {
+  return rc::gen::resize(rc::kNominalSize, rc::gen::exec([max_tris] {
+                           Soup s;
+                           const int n = pick(1, max_tris);
+                           const auto coord = [] { return dyadic(-64, 64, 3); };
+                           const auto step = [] { return dyadic(-8, 8, 4); };
+                           for (int t = 0; t < n; ++t) {
+                             Tri tri;
+                             for (int& corner : tri) {
+                               if (!s.x0.empty() && pick(0, 3) == 3) {
+                                 corner = pick(0, int(s.x0.size()) - 1);
+                               } else {
+                                 corner = int(s.x0.size());
+                                 const Vec3 p{coord(), coord(), coord()};
+                                 s.x0.push_back(p);
+                                 s.x1.push_back(p + Vec3{step(), step(), step()});
+                               }
+                             }
+                             s.tris.push_back(tri);
+                           }
+                           return s;
+                         }));
+}
+
 void showValue(const Generated& g, std::ostream& os) {
   os << family_name(g.family) << " (truth " << g.query.truth << ")\n";
   write_native(os, g.query);

@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "fdh/verify/fuzz.hpp"
+#include "fdh/verify/json.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -39,15 +40,6 @@ every chunk of cases, in DIR/.fuzz/: a run that is killed and started again
 with the same arguments continues where it stopped, losing no case. On a
 terminal, a progress line shows cases done, rate and cases found.
 )";
-
-std::string json_escape(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -104,14 +96,14 @@ int fuzz_command(const Args& args, std::ostream& out, std::ostream& err) {
   }
   const std::string family = family_name(opt.family);
   if (json) {
-    out << "{\"method\": \"" << json_escape(opt.method) << "\", \"family\": \"" << family
+    out << "{\"method\": " << json_string(opt.method) << ", \"family\": \"" << family
         << "\", \"seed\": " << opt.seed << ", \"shard\": \"" << opt.shard + 1 << "/" << opt.shards
         << "\", \"first\": " << s.first << ", \"last\": " << s.last << ", \"cases\": " << s.cases
         << ", \"resumed\": " << s.resumed << ", \"disagreements\": " << s.disagreements
         << ", \"distinct\": " << s.distinct.size() << ", \"files\": [";
     bool first = true;
     for (const std::string& f : s.distinct) {
-      out << (first ? "" : ", ") << '"' << json_escape(f) << '"';
+      out << (first ? "" : ", ") << json_string(f);
       first = false;
     }
     out << "]}\n";

@@ -5,6 +5,7 @@
 #include "fdh/verify/case_files.hpp"
 #include "fdh/verify/classify.hpp"
 #include "fdh/verify/input_error.hpp"
+#include "fdh/verify/json.hpp"
 #include "fdh/verify/methods.hpp"
 #include "fdh/verify/query_io.hpp"
 
@@ -81,14 +82,14 @@ int replay_command(const Args& args, std::ostream& out, std::ostream& err) {
   if (json) {
     out << "{\"cases\": " << cases.size() << ", \"exact_mismatches\": [";
     for (std::size_t k = 0; k < c.exact_vs_file.size(); ++k)
-      out << (k ? ", " : "") << '"' << where(c.exact_vs_file[k]) << '"';
+      out << (k ? ", " : "") << json_string(where(c.exact_vs_file[k]));
     out << "], \"methods\": {";
     bool first = true;
     for (const MethodResult& m : c.methods) {
       const auto& list = failing[m.name];
       out << (first ? "" : ", ") << '"' << m.name << "\": {\"failing\": " << list.size()
           << ", \"cases\": [";
-      for (std::size_t k = 0; k < list.size(); ++k) out << (k ? ", " : "") << '"' << list[k] << '"';
+      for (std::size_t k = 0; k < list.size(); ++k) out << (k ? ", " : "") << json_string(list[k]);
       out << "]}";
       first = false;
     }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "fdh/bvh.hpp"
 #include "fdh/query.hpp"
 
 namespace fdh::verify {
@@ -48,5 +49,14 @@ rc::Gen<Generated> gen_family(Family f);
 
 // For RapidCheck's counterexample output: the query as a native-format line.
 void showValue(const Generated& g, std::ostream& os);
+
+// A triangle soup for tree tests: 1 to max_tris triangles with dyadic corners in a small box,
+// sometimes sharing corners as a mesh does, each corner moving by a small dyadic step from x0
+// to x1. Many touching and near-touching boxes.
+struct Soup {
+  std::vector<Tri> tris;
+  std::vector<Vec3> x0, x1;
+};
+rc::Gen<Soup> gen_soup(int max_tris);
 
 }  // namespace fdh::verify

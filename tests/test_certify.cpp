@@ -1,0 +1,64 @@
+#include "fdh/verify/certify.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "fdh/verify/cli.hpp"
+
+namespace fdh::verify {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(::testing::TempDir()) / ("fdh_certify_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+CertifyOptions small(const fs::path& corpus, const fs::path& out) {
+  CertifyOptions o;
+  o.corpus_dir = corpus.string();
+  o.out_dir = out.string();
+  o.per_family = 20;
+  o.soups = 3;
+  return o;
+}
+
+TEST(Certify, CertifiesTheCommittedCorpusAndCountsEveryCheck) {
+  const fs::path out = fresh_dir("ok");
+  const Certificate c = certify(small(FDH_SOURCE_DIR "/corpus", out));
+  EXPECT_TRUE(c.certified()) << c.first_violation;
+  EXPECT_GT(c.corpus_queries, 50);
+  EXPECT_EQ(c.fuzzed_queries, 20 * long(c.families.size()));
+  EXPECT_EQ(c.soup_pairs[0], 3);
+  EXPECT_GT(c.boxes[3], c.corpus_queries);
+  EXPECT_GT(c.truths, 50);
+  const std::string json = certificate_json(c);
+  EXPECT_NE(json.find("\"certified\": true"), std::string::npos);
+  EXPECT_NE(json.find("\"cgal\": \"5."), std::string::npos);
+  EXPECT_NE(certificate_markdown(c).find("**Certified**"), std::string::npos);
+}
+
+TEST(Certify, AWrongStoredTruthIsAViolationSavedAsACorpusFile) {
+  const fs::path corpus = fresh_dir("bad_corpus"), out = fresh_dir("bad_out");
+  std::ofstream(corpus / "wrong.vf")
+      << "vf wrong 0.25 0.25 1  0 0 0  1 0 0  0 1 0  0.25 0.25 -1  0 0 0  1 0 0  0 1 0  0\n";
+  std::ostringstream so, se;
+  const int status = run_cli({"certify", "--corpus", corpus.string(), "--out", out.string(),
+                              "--per-family", "5", "--soups", "1"},
+                             so, se);
+  EXPECT_EQ(status, 1);
+  EXPECT_NE(se.str().find("wrong.vf:1"), std::string::npos) << se.str();
+  int saved = 0;
+  for (const auto& e : fs::directory_iterator(out))
+    saved += e.path().filename().string().rfind("violation-", 0) == 0;
+  EXPECT_EQ(saved, 1);
+  EXPECT_TRUE(fs::exists(out / "certificate.json"));
+}
+
+}  // namespace
+}  // namespace fdh::verify
