@@ -17,6 +17,7 @@ commands:
                      shrink them and store them
   replay PATH...     re-run stored cases: which methods still fail where
   certify            certify the fast library against the exact reference
+  report             certificate, measurements and charts in one folder
 
 Run 'fdhcert <command> --help' for the options of a command.
 Exit status: 0 success, 1 a check or certificate failed, 2 bad input or usage.
@@ -40,6 +41,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (cmd == "fuzz") return fuzz_command(rest, out, err);
     if (cmd == "replay") return replay_command(rest, out, err);
     if (cmd == "certify") return certify_command(rest, out, err);
+    if (cmd == "report") return report_command(rest, out, err);
     throw UsageError("unknown command '" + cmd + "' (see fdhcert --help)");
   } catch (const UsageError& e) {
     err << "fdhcert: " << e.what() << "\n";

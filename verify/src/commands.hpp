@@ -20,6 +20,7 @@ int classify_command(const Args& args, std::ostream& out, std::ostream& err);
 int fuzz_command(const Args& args, std::ostream& out, std::ostream& err);
 int replay_command(const Args& args, std::ostream& out, std::ostream& err);
 int certify_command(const Args& args, std::ostream& out, std::ostream& err);
+int report_command(const Args& args, std::ostream& out, std::ostream& err);
 
 // Walks the arguments: options with values, flags, and positional words.
 class ArgReader {

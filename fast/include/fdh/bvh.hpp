@@ -39,7 +39,10 @@ class Bvh {
       : tris_(std::move(tris)), leaf_size_(std::max(1, leaf_size)) {
     prims_.resize(tris_.size());
     for (std::size_t i = 0; i < prims_.size(); ++i) prims_[i] = int(i);
-    if (!tris_.empty()) build(0, int(tris_.size()), x0, x1);
+    // Each primitive's box once; a node's box is the exact merge of its primitives' boxes.
+    std::vector<Kdop<K>> boxes(tris_.size());
+    for (std::size_t i = 0; i < tris_.size(); ++i) boxes[i] = prim_box(int(i), x0, x1);
+    if (!tris_.empty()) build(0, int(tris_.size()), boxes, x0, x1);
   }
 
   // New positions, same topology: leaves recomputed, internal nodes merged bottom up (children
@@ -58,22 +61,29 @@ class Bvh {
   const std::vector<Tri>& tris() const { return tris_; }
 
  private:
-  Kdop<K> range_box(int first, int last, const std::vector<Vec3>& x0,
-                    const std::vector<Vec3>& x1) const {
+  Kdop<K> prim_box(int prim, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) const {
     KdopBuilder<K> b;
-    for (int i = first; i < last; ++i)
-      for (const int v : tris_[prims_[i]]) {
-        b.add(x0[v]);
-        if (!x1.empty()) b.add(x1[v]);
-      }
+    for (const int v : tris_[prim]) {
+      b.add(x0[v]);
+      if (!x1.empty()) b.add(x1[v]);
+    }
     return b.finish();
   }
 
-  int build(int first, int last, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  Kdop<K> range_box(int first, int last, const std::vector<Vec3>& x0,
+                    const std::vector<Vec3>& x1) const {
+    Kdop<K> b = prim_box(prims_[first], x0, x1);
+    for (int i = first + 1; i < last; ++i) b = merge(b, prim_box(prims_[i], x0, x1));
+    return b;
+  }
+
+  int build(int first, int last, const std::vector<Kdop<K>>& boxes, const std::vector<Vec3>& x0,
+            const std::vector<Vec3>& x1) {
     const int id = int(nodes_.size());
     nodes_.emplace_back();
     Node node;
-    node.box = range_box(first, last, x0, x1);
+    node.box = boxes[prims_[first]];
+    for (int i = first + 1; i < last; ++i) node.box = merge(node.box, boxes[prims_[i]]);
     if (last - first <= leaf_size_) {
       node.first = first;
       node.count = last - first;
@@ -98,8 +108,8 @@ class Bvh {
     const int mid = first + (last - first) / 2;
     std::nth_element(prims_.begin() + first, prims_.begin() + mid, prims_.begin() + last,
                      [&](int a, int b) { return centre(a) < centre(b); });
-    node.left = build(first, mid, x0, x1);
-    node.right = build(mid, last, x0, x1);
+    node.left = build(first, mid, boxes, x0, x1);
+    node.right = build(mid, last, boxes, x0, x1);
     nodes_[id] = node;
     return id;
   }
