@@ -121,10 +121,14 @@ struct Run {
       if (!fs::exists(marker(c))) run_chunk(c);
   }
 
-  long chunks_done() const {
-    long n = 0;
-    for (long c = 0; c < chunks; ++c) n += fs::exists(marker(c));
-    return n;
+  // Finished chunks and the disagreements they found, from the markers.
+  std::pair<long, long> progress() const {
+    long n = 0, found = 0;
+    for (long c = 0; c < chunks; ++c) {
+      ChunkResult r;
+      if (read_marker(marker(c), r)) ++n, found += r.disagreements;
+    }
+    return {n, found};
   }
 };
 
@@ -180,13 +184,14 @@ FuzzSummary run_fuzz(const FuzzOptions& opt, std::ostream& progress_stream) {
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
     if (opt.progress) {
-      const long done = std::min(sum.last - sum.first, run.chunks_done() * run.chunk);
+      const auto [chunks_done, found] = run.progress();
+      const long done = std::min(sum.last - sum.first, chunks_done * run.chunk);
       const double secs =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       char line[200];
-      std::snprintf(line, sizeof line, "\rfuzz %s on %s: %ld/%ld cases, %.0f cases/s ",
+      std::snprintf(line, sizeof line, "\rfuzz %s on %s: %ld/%ld cases, %.0f cases/s, %ld found ",
                     run.method.name.c_str(), run.family.c_str(), done, sum.last - sum.first,
-                    double(done - sum.resumed) / std::max(secs, 1e-9));
+                    double(done - sum.resumed) / std::max(secs, 1e-9), found);
       progress_stream << line << std::flush;
     }
   }
