@@ -3,6 +3,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/intersections.h>
 
 #include <array>
 #include <sstream>
@@ -10,9 +11,10 @@
 namespace fdh::exact {
 namespace {
 
-// Signs come first from CGAL's filtered exact predicate (Epick); values, when a contact time is
-// needed, from plain rational arithmetic (no filter at all), so this file shares no float
-// reasoning with fast/'s `robust`.
+// point_triangle(): a fast exit by CGAL's filtered exact predicate (Epick), then plain rational
+// arithmetic (no filter at all) for the verdict, the contact kind and the contact time.
+// point_triangle_hit(): CGAL's exact do_intersect. Neither shares float reasoning with fast/'s
+// `robust`, and a property checks that the two agree.
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using FT = CGAL::Exact_rational;
 using EK = CGAL::Simple_cartesian<FT>;
@@ -165,9 +167,26 @@ PointTriangleContact point_triangle(const Vec3& b0, const Vec3& b1, const Vec3& 
   return out;
 }
 
+// The verdict alone, by CGAL's own exact (filtered) intersection test: a second exact
+// implementation, independent of solve() above, and fast because CGAL's filters settle most
+// signs in floating point. CGAL requires proper triangles and segments, so the zero-area and
+// no-motion cases are reduced to segments and points first.
 bool point_triangle_hit(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
                         const Vec3& f) {
-  return solve(b0, b1, d, e, f).hit;
+  using P3 = Epick::Point_3;
+  using S3 = Epick::Segment_3;
+  const P3 P = to_epick(b0), Q = to_epick(b1), D = to_epick(d), E = to_epick(e), F = to_epick(f);
+  if (!CGAL::collinear(D, E, F)) {
+    const Epick::Triangle_3 t(D, E, F);
+    return P == Q ? t.has_on(P) : CGAL::do_intersect(t, S3(P, Q));
+  }
+  // Zero area: the hull is the segment between the two corners that the third lies between.
+  P3 a = D, b = E;
+  if (CGAL::collinear_are_ordered_along_line(E, D, F)) a = E, b = F;
+  else if (CGAL::collinear_are_ordered_along_line(D, E, F)) a = D, b = F;
+  if (a == b) return P == Q ? P == a : S3(P, Q).has_on(a);
+  const S3 hull(a, b);
+  return P == Q ? hull.has_on(P) : CGAL::do_intersect(hull, S3(P, Q));
 }
 
 }  // namespace fdh::exact

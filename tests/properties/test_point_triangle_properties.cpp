@@ -31,6 +31,8 @@ TEST_P(PointTriangleFamily, ExactMatchesTheConstruction) {
     if (!g.kind.empty()) RC_ASSERT(std::string(exact::to_string(c.kind)) == g.kind);
     if (!g.time.empty()) RC_ASSERT(c.time == g.time);
     RC_ASSERT(c.hit == (c.kind != exact::ContactKind::None));
+    // Two independent exact methods: the rational parametric one and CGAL's do_intersect.
+    RC_ASSERT(c.hit == exact::point_triangle_hit(q.b0(), q.b1(), q.d(), q.e(), q.f()));
   }));
 }
 

@@ -27,7 +27,8 @@ struct PointTriangleContact {
 PointTriangleContact point_triangle(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
                                     const Vec3& f);
 
-// The same verdict without formatting the time: the fallback of `robust`.
+// The same verdict by a second, independent exact method (CGAL's do_intersect), faster because
+// it computes no time: the fallback of `robust`.
 bool point_triangle_hit(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
                         const Vec3& f);
 
