@@ -44,8 +44,11 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
 inline double norm(const Vec3& a) {
   return std::sqrt(dot(a, a));
 }
+// Plain comparisons: std::fmax must order NaNs and costs a call in a hot loop.
 inline double max_abs(const Vec3& a) {
-  return std::fmax(std::fabs(a.x), std::fmax(std::fabs(a.y), std::fabs(a.z)));
+  const double x = std::fabs(a.x), y = std::fabs(a.y), z = std::fabs(a.z);
+  const double xy = x > y ? x : y;
+  return xy > z ? xy : z;
 }
 
 }  // namespace fdh
