@@ -38,28 +38,35 @@ the output, and the exit status is 1.
 
 }  // namespace
 
+bool read_certify_option(ArgReader& a, CertifyOptions& opt) {
+  if (a.is("--quick")) {
+    opt.quick = true;
+  } else if (a.is("--out")) {
+    opt.out_dir = a.value();
+  } else if (a.is("--corpus")) {
+    opt.corpus_dir = a.value();
+  } else if (a.is("--seed")) {
+    opt.seed = std::uint64_t(a.integer(0, 1LL << 40));
+  } else if (a.is("--per-family")) {
+    opt.per_family = long(a.integer(0, 1LL << 30));
+  } else if (a.is("--soups")) {
+    opt.soups = long(a.integer(0, 1LL << 30));
+  } else if (!a.is_option()) {
+    opt.extra_files.push_back(a.word());
+  } else {
+    return false;
+  }
+  return true;
+}
+
 int certify_command(const Args& args, std::ostream& out, std::ostream& err) {
   CertifyOptions opt;
   for (ArgReader a(args); a.next();) {
     if (a.is("-h") || a.is("--help")) {
       out << kCertifyHelp;
       return 0;
-    } else if (a.is("--quick")) {
-      opt.quick = true;
-    } else if (a.is("--out")) {
-      opt.out_dir = a.value();
-    } else if (a.is("--corpus")) {
-      opt.corpus_dir = a.value();
-    } else if (a.is("--seed")) {
-      opt.seed = std::uint64_t(a.integer(0, 1LL << 40));
-    } else if (a.is("--per-family")) {
-      opt.per_family = long(a.integer(0, 1LL << 30));
-    } else if (a.is("--soups")) {
-      opt.soups = long(a.integer(0, 1LL << 30));
-    } else if (a.is_option()) {
+    } else if (!read_certify_option(a, opt)) {
       a.unknown("certify");
-    } else {
-      opt.extra_files.push_back(a.word());
     }
   }
   const Certificate c = certify(opt);

@@ -46,4 +46,9 @@ class ArgReader {
 
 std::vector<std::string> split_list(const std::string& s);
 
+struct CertifyOptions;
+// The options certify and report share (--quick --out --corpus --seed --per-family --soups, and
+// extra files). False if the current word is none of them.
+bool read_certify_option(ArgReader& a, CertifyOptions& opt);
+
 }  // namespace fdh::verify

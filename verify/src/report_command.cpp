@@ -18,7 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 
 const char* const kReportHelp =
-    R"(usage: fdhcert report [--quick] [--out DIR] [--corpus DIR] [EXTRA FILES...]
+    R"(usage: fdhcert report [--quick] [--out DIR] [--corpus DIR] [--seed S]
+                      [--per-family N] [--soups N] [EXTRA FILES...]
 
 The verification report, as `./run verify` makes it (into docs/report):
   DIR/certificate.json, .md   fdhcert certify over the corpus, fuzzed cases
@@ -38,7 +39,7 @@ finds a violation (the report is written all the same).
   --quick          smaller samples (a quick certificate, 100 queries per family
                    and point): for a first look, not for the committed report
   --out DIR        default: report
-  --corpus DIR     default: corpus
+  --corpus DIR, --seed S, --per-family N, --soups N: as for certify
   -h, --help       this text
 )";
 
@@ -147,16 +148,8 @@ int report_command(const Args& args, std::ostream& out, std::ostream& err) {
     if (a.is("-h") || a.is("--help")) {
       out << kReportHelp;
       return 0;
-    } else if (a.is("--quick")) {
-      opt.quick = true;
-    } else if (a.is("--out")) {
-      opt.out_dir = a.value();
-    } else if (a.is("--corpus")) {
-      opt.corpus_dir = a.value();
-    } else if (a.is_option()) {
+    } else if (!read_certify_option(a, opt)) {
       a.unknown("report");
-    } else {
-      opt.extra_files.push_back(a.word());
     }
   }
   const fs::path dir(opt.out_dir);
