@@ -7,17 +7,12 @@
 
 #include "fdh/verify/cli.hpp"
 
+#include "temp_dir.hpp"
+
 namespace fdh::verify {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / ("fdh_certify_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 
 CertifyOptions small(const fs::path& corpus, const fs::path& out) {
   CertifyOptions o;
@@ -29,7 +24,7 @@ CertifyOptions small(const fs::path& corpus, const fs::path& out) {
 }
 
 TEST(Certify, CertifiesTheCommittedCorpusAndCountsEveryCheck) {
-  const fs::path out = fresh_dir("ok");
+  const fs::path out = fresh_temp_dir("certify_ok");
   const Certificate c = certify(small(FDH_SOURCE_DIR "/corpus", out));
   EXPECT_TRUE(c.certified()) << c.first_violation;
   EXPECT_GT(c.corpus_queries, 50);
@@ -44,7 +39,8 @@ TEST(Certify, CertifiesTheCommittedCorpusAndCountsEveryCheck) {
 }
 
 TEST(Certify, AWrongStoredTruthIsAViolationSavedAsACorpusFile) {
-  const fs::path corpus = fresh_dir("bad_corpus"), out = fresh_dir("bad_out");
+  const fs::path corpus = fresh_temp_dir("certify_bad_corpus"),
+                 out = fresh_temp_dir("certify_bad_out");
   std::ofstream(corpus / "wrong.vf")
       << "vf wrong 0.25 0.25 1  0 0 0  1 0 0  0 1 0  0.25 0.25 -1  0 0 0  1 0 0  0 1 0  0\n";
   std::ostringstream so, se;

@@ -18,16 +18,12 @@
 
 #include "fdh/verify/query_io.hpp"
 
+#include "temp_dir.hpp"
+
 namespace fdh::verify {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / ("fdh_fuzz_" + name);
-  fs::remove_all(d);
-  return d;
-}
 
 FuzzOptions options(const fs::path& out, int threads) {
   FuzzOptions o;
@@ -56,7 +52,7 @@ std::map<std::string, std::string> cases_in(const fs::path& dir) {
 }
 
 TEST(Fuzz, FindsShrinksAndStoresCasesThatReplayAsFailures) {
-  const fs::path d = fresh_dir("basic");
+  const fs::path d = fresh_temp_dir("fuzz_basic");
   std::ostringstream progress;
   const FuzzSummary s = run_fuzz(options(d, 1), progress);
   EXPECT_EQ(s.cases, 1200);
@@ -71,7 +67,8 @@ TEST(Fuzz, FindsShrinksAndStoresCasesThatReplayAsFailures) {
 }
 
 TEST(Fuzz, SameCasesForAnyWorkerCountAndShards) {
-  const fs::path one = fresh_dir("one"), two = fresh_dir("two"), shards = fresh_dir("shards");
+  const fs::path one = fresh_temp_dir("fuzz_one"), two = fresh_temp_dir("fuzz_two"),
+                 shards = fresh_temp_dir("fuzz_shards");
   std::ostringstream progress;
   const FuzzSummary a = run_fuzz(options(one, 1), progress);
   const FuzzSummary b = run_fuzz(options(two, 2), progress);
@@ -89,7 +86,7 @@ TEST(Fuzz, SameCasesForAnyWorkerCountAndShards) {
 }
 
 TEST(Fuzz, KilledWithSigkillAndRestartedLosesNothing) {
-  const fs::path whole = fresh_dir("whole"), killed = fresh_dir("killed");
+  const fs::path whole = fresh_temp_dir("fuzz_whole"), killed = fresh_temp_dir("fuzz_killed");
   std::ostringstream progress;
   FuzzOptions o = options(whole, 2);
   o.count = 6000;

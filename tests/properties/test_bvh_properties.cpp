@@ -16,20 +16,7 @@ namespace {
 using verify::gen_soup;
 using verify::Soup;
 
-// Each primitive's corners: at x0, and at x1 too when swept.
-std::vector<std::vector<Vec3>> corners(const std::vector<Tri>& tris, const std::vector<Vec3>& x0,
-                                       const std::vector<Vec3>& x1) {
-  std::vector<std::vector<Vec3>> out;
-  for (const Tri& t : tris) {
-    std::vector<Vec3> pts;
-    for (const int v : t) {
-      pts.push_back(x0[v]);
-      if (!x1.empty()) pts.push_back(x1[v]);
-    }
-    out.push_back(pts);
-  }
-  return out;
-}
+using verify::primitive_corners;
 
 template <int K>
 void check_superset(const Soup& a, const Soup& b, int leaf_size, int first_slab) {
@@ -40,7 +27,7 @@ void check_superset(const Soup& a, const Soup& b, int leaf_size, int first_slab)
   const std::set<std::pair<int, int>> got(found.begin(), found.end());
   RC_ASSERT(got.size() == found.size());  // no pair twice
   for (const auto& pair :
-       exact::overlapping_pairs(K, corners(a.tris, a.x0, a.x1), corners(b.tris, b.x0, {})))
+       exact::overlapping_pairs(K, primitive_corners(a.tris, a.x0, a.x1), primitive_corners(b.tris, b.x0, {})))
     RC_ASSERT(got.count(pair) == 1);
 }
 
@@ -70,7 +57,7 @@ TEST(BvhProperties, RefitEqualsRebuild) {
     Bvh<18> t(a.tris, a.x0, a.x1);
     t.refit(y0, y1);
     // Every leaf's box contains the exact FDH of its primitives' swept corners, now.
-    const auto swept = corners(t.tris(), y0, y1);
+    const auto swept = primitive_corners(t.tris(), y0, y1);
     for (const auto& n : t.nodes()) {
       if (!n.leaf()) continue;
       std::vector<Vec3> pts;

@@ -73,7 +73,8 @@ class Certifier {
         std::vector<std::pair<int, int>> found;
         traverse(ta, tb, found);
         const std::set<std::pair<int, int>> got(found.begin(), found.end());
-        const auto pairs = exact::overlapping_pairs(K, corners(a, true), corners(b, false));
+        const auto pairs = exact::overlapping_pairs(K, primitive_corners(a.tris, a.x0, a.x1),
+                                                    primitive_corners(b.tris, b.x0, {}));
         ++c_.soup_pairs[i];
         c_.exact_pairs[i] += long(pairs.size());
         for (const auto& p : pairs)
@@ -103,19 +104,6 @@ class Certifier {
   void check_boxes(const Query& q, const std::vector<Vec3>& pts) {
     for (std::size_t i = 0; i < kCertifiedK.size(); ++i)
       with_k(kCertifiedK[i], [&](auto kc) { check_boxes_k<decltype(kc)::value>(q, pts, i); });
-  }
-
-  static std::vector<std::vector<Vec3>> corners(const Soup& s, bool swept) {
-    std::vector<std::vector<Vec3>> out;
-    for (const Tri& t : s.tris) {
-      std::vector<Vec3> pts;
-      for (const int v : t) {
-        pts.push_back(s.x0[v]);
-        if (swept) pts.push_back(s.x1[v]);
-      }
-      out.push_back(pts);
-    }
-    return out;
   }
 
   void violation(const Query& q, const std::string& what) {
@@ -196,6 +184,12 @@ Certificate certify(const CertifyOptions& options) {
       cert.check_query(q);
     }
   return c;
+}
+
+void write_certificate(const Certificate& c) {
+  const fs::path dir(c.options.out_dir);
+  write_file_atomically((dir / "certificate.json").string(), certificate_json(c));
+  write_file_atomically((dir / "certificate.md").string(), certificate_markdown(c));
 }
 
 std::string certificate_json(const Certificate& c) {

@@ -2,7 +2,6 @@
 #include <filesystem>
 
 #include "commands.hpp"
-#include "fdh/verify/atomic_file.hpp"
 #include "fdh/verify/certify.hpp"
 
 namespace fdh::verify {
@@ -70,9 +69,8 @@ int certify_command(const Args& args, std::ostream& out, std::ostream& err) {
     }
   }
   const Certificate c = certify(opt);
+  write_certificate(c);
   const std::filesystem::path dir(opt.out_dir);
-  write_file_atomically((dir / "certificate.json").string(), certificate_json(c));
-  write_file_atomically((dir / "certificate.md").string(), certificate_markdown(c));
 
   long checks = c.static_queries + c.truths, violations = c.robust_violations + c.truth_violations;
   for (std::size_t i = 0; i < kCertifiedK.size(); ++i) {

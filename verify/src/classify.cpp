@@ -68,7 +68,6 @@ Classification classify(const std::vector<Query>& queries, const std::vector<Met
     for (std::size_t i = 0; i < queries.size(); ++i) {
       const bool v = r.verdict[i], t = c.reference[i];
       (v ? (t ? r.tally.tp : r.tally.fp) : (t ? r.tally.fn : r.tally.tn))++;
-      if (m.name == "robust" && v != bool(c.exact[i])) c.robust_vs_exact.push_back(i);
     }
     c.methods.push_back(std::move(r));
   }

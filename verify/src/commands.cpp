@@ -17,6 +17,14 @@ long long ArgReader::integer(long long lo, long long hi) {
                    std::to_string(hi) + ", not '" + v + "'");
 }
 
+std::vector<Method> methods_named(const std::vector<std::string>& names, int gate_k) {
+  try {
+    return names.empty() ? all_methods(gate_k) : select_methods(names, gate_k);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+}
+
 std::vector<std::string> split_list(const std::string& s) {
   std::vector<std::string> out;
   std::string item;

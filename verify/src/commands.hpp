@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "fdh/verify/methods.hpp"
+
 namespace fdh::verify {
 
 // A wrong command line: printed as "fdhcert: <what>", exit status 2.
@@ -45,6 +47,9 @@ class ArgReader {
 };
 
 std::vector<std::string> split_list(const std::string& s);
+
+// The named methods (all of them for an empty list); an unknown name or gate is a UsageError.
+std::vector<Method> methods_named(const std::vector<std::string>& names, int gate_k = 0);
 
 struct CertifyOptions;
 // The options certify and report share (--quick --out --corpus --seed --per-family --soups, and

@@ -296,6 +296,21 @@ rc::Gen<Soup> gen_soup(int max_tris) {
                          }));
 }
 
+std::vector<std::vector<Vec3>> primitive_corners(const std::vector<Tri>& tris,
+                                                 const std::vector<Vec3>& x0,
+                                                 const std::vector<Vec3>& x1) {
+  std::vector<std::vector<Vec3>> out;
+  for (const Tri& t : tris) {
+    std::vector<Vec3> pts;
+    for (const int v : t) {
+      pts.push_back(x0[v]);
+      if (!x1.empty()) pts.push_back(x1[v]);
+    }
+    out.push_back(pts);
+  }
+  return out;
+}
+
 void showValue(const Generated& g, std::ostream& os) {
   os << family_name(g.family) << " (truth " << g.query.truth << ")\n";
   write_native(os, g.query);

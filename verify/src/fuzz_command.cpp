@@ -12,7 +12,7 @@ namespace {
 
 const char* const kFuzzHelp =
     R"(usage: fdhcert fuzz --method M --family F --out DIR [--seed S] [--count N]
-                    [--shard I/N] [--threads T] [--json]
+                    [--shard I/N] [--threads T] [--chunk N] [--json]
 
 Draws N queries from generator family F and runs method M and exact on each.
 Every disagreement is shrunk (RapidCheck's shrink tree, greedy) to a minimal
@@ -31,7 +31,8 @@ with exact's verdict as the truth and a comment saying what M answered.
                    [(I-1)N'/N, I N'/N) of the N' cases. The shards of one seed
                    together are exactly the unsharded run; merge them by
                    copying their DIRs into one (file names are content hashes)
-  --threads T      worker threads (default: every core)
+  --threads T      worker processes (default: every core)
+  --chunk N        cases per checkpoint step (default 500)
   --json           print the summary as one JSON object
   -h, --help       this text
 
@@ -77,7 +78,7 @@ int fuzz_command(const Args& args, std::ostream& out, std::ostream& err) {
       opt.shards = n;
     } else if (a.is("--json")) {
       json = true;
-    } else if (a.is("--chunk")) {  // for tests: smaller checkpoint steps
+    } else if (a.is("--chunk")) {
       opt.chunk = int(a.integer(1, 1 << 20));
     } else {
       a.unknown("fuzz");

@@ -47,12 +47,7 @@ int replay_command(const Args& args, std::ostream& out, std::ostream& err) {
     }
   }
   if (paths.empty()) throw UsageError("replay needs at least one file or folder");
-  std::vector<Method> methods;
-  try {
-    methods = names.empty() ? all_methods() : select_methods(names);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
+  const std::vector<Method> methods = methods_named(names);
 
   std::vector<Query> cases;
   std::size_t skipped = 0;

@@ -158,9 +158,8 @@ int report_command(const Args& args, std::ostream& out, std::ostream& err) {
 
   out << "report: certificate ..." << std::endl;
   const Certificate cert = certify(opt);
-  write_file_atomically((dir / "certificate.json").string(), certificate_json(cert));
+  write_certificate(cert);
   const std::string cert_md = certificate_markdown(cert);
-  write_file_atomically((dir / "certificate.md").string(), cert_md);
 
   out << "report: speed against accuracy ..." << std::endl;
   const std::string speed = speed_accuracy_csv(sample, opt.seed);

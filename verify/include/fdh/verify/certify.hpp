@@ -44,4 +44,7 @@ Certificate certify(const CertifyOptions& options);
 std::string certificate_json(const Certificate& c);
 std::string certificate_markdown(const Certificate& c);
 
+// certificate.json and certificate.md, each written whole, into c.options.out_dir.
+void write_certificate(const Certificate& c);
+
 }  // namespace fdh::verify

@@ -28,8 +28,7 @@ struct Classification {
   std::vector<char> reference;  // per query: the file's truth where given, else exact's verdict
   std::vector<char> exact;      // per query: exact's verdict
   std::vector<MethodResult> methods;
-  std::vector<std::size_t> exact_vs_file;    // queries where exact disagrees with the file's truth
-  std::vector<std::size_t> robust_vs_exact;  // queries where robust (if run) disagrees with exact
+  std::vector<std::size_t> exact_vs_file;  // queries where exact disagrees with the file's truth
 };
 
 // Every query must be a static vertex-face query. Each method's time is the mean over enough

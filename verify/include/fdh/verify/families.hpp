@@ -59,4 +59,10 @@ struct Soup {
 };
 rc::Gen<Soup> gen_soup(int max_tris);
 
+// Each primitive's corners at x0, and at x1 too when x1 is given (a swept primitive): the
+// point sets whose exact k-DOPs the tree's leaves must contain.
+std::vector<std::vector<Vec3>> primitive_corners(const std::vector<Tri>& tris,
+                                                 const std::vector<Vec3>& x0,
+                                                 const std::vector<Vec3>& x1);
+
 }  // namespace fdh::verify
