@@ -182,8 +182,10 @@ bool point_triangle_hit(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec
   }
   // Zero area: the hull is the segment between the two corners that the third lies between.
   P3 a = D, b = E;
-  if (CGAL::collinear_are_ordered_along_line(E, D, F)) a = E, b = F;
-  else if (CGAL::collinear_are_ordered_along_line(D, E, F)) a = D, b = F;
+  if (CGAL::collinear_are_ordered_along_line(E, D, F))
+    a = E, b = F;
+  else if (CGAL::collinear_are_ordered_along_line(D, E, F))
+    a = D, b = F;
   if (a == b) return P == Q ? P == a : S3(P, Q).has_on(a);
   const S3 hull(a, b);
   return P == Q ? hull.has_on(P) : CGAL::do_intersect(hull, S3(P, Q));

@@ -11,9 +11,12 @@ using Clock = std::chrono::steady_clock;
 
 std::vector<char> run_and_time(const Method& m, const std::vector<Query>& qs,
                                double& ns_per_query) {
-  std::vector<char> verdict(qs.size());
+  std::vector<char> verdict(qs.size(), kNotApplicable);
+  std::vector<std::size_t> mine;
+  for (std::size_t i = 0; i < qs.size(); ++i)
+    if (m.applies_to(qs[i])) mine.push_back(i);
   const auto pass = [&] {
-    for (std::size_t i = 0; i < qs.size(); ++i) verdict[i] = m.hit(qs[i]);
+    for (const std::size_t i : mine) verdict[i] = m.hit(qs[i]);
   };
   const auto seconds = [](Clock::time_point a) {
     return std::chrono::duration<double>(Clock::now() - a).count();
@@ -29,7 +32,7 @@ std::vector<char> run_and_time(const Method& m, const std::vector<Query>& qs,
     for (long p = 0; p < passes; ++p) pass();
     elapsed = seconds(start);
   }
-  ns_per_query = qs.empty() ? 0 : elapsed * 1e9 / (double(passes) * double(qs.size()));
+  ns_per_query = mine.empty() ? 0 : elapsed * 1e9 / (double(passes) * double(mine.size()));
   return verdict;
 }
 
@@ -45,7 +48,13 @@ Classification classify(const std::vector<Query>& queries, const std::vector<Met
     if (m.name == "exact") exact = &m;
   if (!exact) exact = &all.front();
   c.exact.resize(queries.size());
-  for (std::size_t i = 0; i < queries.size(); ++i) c.exact[i] = exact->hit(queries[i]);
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    c.exact[i] = exact->hit(queries[i]);
+    const Query& q = queries[i];
+    ++(q.is_static_vf()                  ? c.static_vf
+       : q.kind == QueryKind::VertexFace ? c.moving_vf
+                                         : c.edge_edge);
+  }
 
   std::size_t with_truth = 0;
   c.reference.resize(queries.size());
@@ -66,12 +75,44 @@ Classification classify(const std::vector<Query>& queries, const std::vector<Met
     r.name = m.name;
     r.verdict = run_and_time(m, queries, r.tally.ns_per_query);
     for (std::size_t i = 0; i < queries.size(); ++i) {
+      if (r.verdict[i] == kNotApplicable) {
+        ++r.tally.na;
+        continue;
+      }
       const bool v = r.verdict[i], t = c.reference[i];
       (v ? (t ? r.tally.tp : r.tally.fp) : (t ? r.tally.fn : r.tally.tn))++;
     }
     c.methods.push_back(std::move(r));
   }
   return c;
+}
+
+Classification join(const std::vector<Classification>& parts) {
+  Classification all;
+  bool truth_set = false;
+  for (const Classification& c : parts) {
+    const std::size_t offset = all.queries;
+    all.queries += c.queries;
+    all.static_vf += c.static_vf, all.moving_vf += c.moving_vf, all.edge_edge += c.edge_edge;
+    all.truth = !truth_set || all.truth == c.truth ? c.truth : "mixed";
+    truth_set = true;
+    all.reference.insert(all.reference.end(), c.reference.begin(), c.reference.end());
+    all.exact.insert(all.exact.end(), c.exact.begin(), c.exact.end());
+    for (const std::size_t i : c.exact_vs_file) all.exact_vs_file.push_back(offset + i);
+    if (all.methods.empty())
+      for (const MethodResult& m : c.methods) all.methods.push_back({m.name, {}, {}});
+    for (std::size_t k = 0; k < c.methods.size(); ++k) {
+      Tally& t = all.methods[k].tally;
+      const Tally& u = c.methods[k].tally;
+      const double time =
+          t.ns_per_query * double(t.decided()) + u.ns_per_query * double(u.decided());
+      t.tp += u.tp, t.tn += u.tn, t.fp += u.fp, t.fn += u.fn, t.na += u.na;
+      t.ns_per_query = t.decided() ? time / double(t.decided()) : 0;
+      auto& v = all.methods[k].verdict;
+      v.insert(v.end(), c.methods[k].verdict.begin(), c.methods[k].verdict.end());
+    }
+  }
+  return all;
 }
 
 }  // namespace fdh::verify

@@ -16,30 +16,39 @@ const char* const kClassifyHelp =
     R"(usage: fdhcert classify FILE... [--methods LIST] [--gate K] [--kind vf|ee]
                                 [--json] [--per-query OUT.csv] [--check]
 
-Runs the point-triangle methods side by side on every static vertex-face query
-(particle B moves to B' during the step; triangle DEF stands still) and prints
-one row per method: TP, TN, FP, FN and the mean ns per query. Counts are
+Runs the collision methods side by side on every query and prints one row per
+method: TP, TN, FP, FN, the queries it does not apply to (n/a) and the mean ns
+per query. With several files: one block per file, then the total. Counts are
 against the file's truth where a query has one, else against `exact`.
 
+Queries are vertex-face (a point against a triangle) or edge-edge, every vertex
+moving linearly over the step. exact, robust and float-cubic take them all;
+the paper's methods and linear-system take only static vertex-face queries
+(the triangle stands still) and show n/a elsewhere.
+
 FILE                 a native query file (docs/formats.md) or a CCD benchmark
-                     CSV (*.csv). Queries with a moving triangle and edge-edge
-                     queries are skipped with a note: not supported yet.
+                     CSV (*.csv), whose kind comes from a vertex-face or
+                     edge-edge folder in its path, else from --kind.
 
 options:
   --methods LIST     comma-separated methods, printed in that order; default:
-                     exact,robust,paper-literal,paper-intended,linear-system
+                     exact,robust,float-cubic,paper-literal,paper-intended,
+                     linear-system
   --gate K           the paper methods say "hit" only if the K-DOP of the sweep
                      BB' overlaps the K-DOP of DEF, as inside the FDH tree
                      (K = 6, 14, 18 or 26)
   --kind vf|ee       the kind of CSV files whose path names no vertex-face or
                      edge-edge folder
   --json             print one JSON object instead of the table:
-                     {"queries": N, "truth": "file"|"exact"|"mixed", "gate": K,
-                      "skipped": S, "methods": {"exact": {"tp": .., "tn": ..,
-                      "fp": .., "fn": .., "ns_per_query": ..}, ...}}
+                     {"queries": N, "static_vf": S, "moving_vf": M,
+                      "edge_edge": E, "truth": "file"|"exact"|"mixed",
+                      "methods": {"exact": {"tp": .., "tn": .., "fp": ..,
+                      "fn": .., "na": .., "ns_per_query": ..}, ...},
+                      "gate": K, "files": [{"file": F, <the same counts>}]}
+                     with null counts where a method applies to nothing
   --per-query FILE   also write FILE, one CSV row per query: id, truth, each
-                     method's verdict (0/1), then exact's contact kind and
-                     exact contact time (a rational)
+                     method's verdict (0/1/n/a), then exact's contact kind
+                     and earliest contact time (a rational, or lo..hi)
   --check            exit 1 if exact disagrees with a file's truth, or robust
                      with exact, on any query
   -h, --help         this text
@@ -90,34 +99,28 @@ int classify_command(const Args& args, std::ostream& out, std::ostream& err) {
   const std::vector<Method> methods = methods_named(method_names, gate);
 
   // Read everything before printing anything.
-  std::vector<Query> all, queries;
+  std::vector<Query> queries;
+  std::vector<FileClassification> per_file;
+  std::vector<std::vector<Query>> groups;
   for (const std::string& f : files) {
     std::vector<Query> qs = read_query_file(f, kind);
-    all.insert(all.end(), qs.begin(), qs.end());
+    if (qs.empty()) continue;
+    queries.insert(queries.end(), qs.begin(), qs.end());
+    per_file.push_back({f, {}});
+    groups.push_back(std::move(qs));
   }
-  std::size_t skipped = 0;
-  const Query* first_skipped = nullptr;
-  for (const Query& q : all) {
-    if (q.is_static_vf()) {
-      queries.push_back(q);
-    } else if (skipped++ == 0) {
-      first_skipped = &q;
-    }
-  }
-  if (skipped)
-    err << "fdhcert: note: skipped " << skipped
-        << " queries with a moving triangle or edge-edge (first: " << first_skipped->file << ":"
-        << first_skipped->line << "): not supported yet\n";
-  if (queries.empty())
-    throw InputError(files.front(), 0, "no static vertex-face query to classify");
+  if (queries.empty()) throw InputError(files.front(), 0, "no query to classify");
+  std::vector<Classification> parts;
+  for (std::size_t i = 0; i < groups.size(); ++i)
+    parts.push_back(per_file[i].c = classify(groups[i], methods));
+  const Classification c = join(parts);
 
-  const Classification c = classify(queries, methods);
-  const ReportContext ctx{gate, skipped};
+  const ReportContext ctx{gate};
   if (!per_query.empty()) write_file_atomically(per_query, per_query_csv(queries, c));
   if (json)
-    print_json(out, c, ctx);
+    print_json(out, per_file, c, ctx);
   else
-    print_table(out, c, ctx);
+    print_table(out, per_file, c, ctx);
 
   for (const std::size_t i : c.exact_vs_file)
     err << "fdhcert: exact disagrees with the file's truth at " << queries[i].file << ":"
@@ -126,7 +129,7 @@ int classify_command(const Args& args, std::ostream& out, std::ostream& err) {
   for (const MethodResult& m : c.methods) {
     if (m.name != "robust") continue;
     for (std::size_t i = 0; i < queries.size(); ++i) {
-      if (m.verdict[i] == c.exact[i]) continue;
+      if (m.verdict[i] == c.exact[i] || m.verdict[i] == kNotApplicable) continue;
       ++robust_vs_exact;
       err << "fdhcert: robust disagrees with exact at " << queries[i].file << ":" << queries[i].line
           << " (query " << queries[i].id << ")\n";

@@ -71,7 +71,8 @@ int replay_command(const Args& args, std::ostream& out, std::ostream& err) {
   for (const MethodResult& m : c.methods) {
     std::vector<std::string>& list = failing[m.name];
     for (std::size_t i = 0; i < cases.size(); ++i)
-      if (m.verdict[i] != c.reference[i]) list.push_back(where(i));
+      if (m.verdict[i] != kNotApplicable && m.verdict[i] != c.reference[i])
+        list.push_back(where(i));
   }
 
   if (json) {

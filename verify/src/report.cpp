@@ -4,6 +4,7 @@
 #include <set>
 
 #include <sstream>
+#include "fdh/exact/ccd.hpp"
 #include "fdh/exact/point_triangle.hpp"
 #include "fdh/verify/json.hpp"
 
@@ -19,40 +20,85 @@ std::string csv_field(const std::string& s) {
 
 }  // namespace
 
-void print_table(std::ostream& os, const Classification& c, const ReportContext& ctx) {
-  os << c.queries << " static vertex-face queries, counted against "
+namespace {
+
+std::string kinds(const Classification& c) {
+  std::string out;
+  const auto add = [&](std::size_t n, const char* what) {
+    if (n) out += (out.empty() ? "" : ", ") + std::to_string(n) + " " + what;
+  };
+  add(c.static_vf, "static vertex-face");
+  add(c.moving_vf, "moving vertex-face");
+  add(c.edge_edge, "edge-edge");
+  return out.empty() ? "no queries" : out;
+}
+
+void print_block(std::ostream& os, const std::string& title, const Classification& c,
+                 const ReportContext& ctx) {
+  os << title << ": " << kinds(c) << "; counted against "
      << (c.truth == "file"    ? "the file's truth"
          : c.truth == "exact" ? "exact"
                               : "the file's truth where given, else exact");
   if (ctx.gate_k) os << "; paper methods gated by " << ctx.gate_k << "-DOP overlap";
-  if (ctx.skipped) os << "; " << ctx.skipped << " other queries skipped";
   os << "\n";
   char buf[160];
-  std::snprintf(buf, sizeof buf, "%-16s %8s %8s %8s %8s %12s\n", "method", "TP", "TN", "FP", "FN",
-                "ns/query");
+  std::snprintf(buf, sizeof buf, "  %-16s %8s %8s %8s %8s %8s %12s\n", "method", "TP", "TN", "FP",
+                "FN", "n/a", "ns/query");
   os << buf;
   for (const MethodResult& m : c.methods) {
     const Tally& t = m.tally;
-    std::snprintf(buf, sizeof buf, "%-16s %8ld %8ld %8ld %8ld %12.1f\n", m.name.c_str(), t.tp, t.tn,
-                  t.fp, t.fn, t.ns_per_query);
+    if (t.decided() == 0)
+      std::snprintf(buf, sizeof buf, "  %-16s %8s %8s %8s %8s %8ld %12s\n", m.name.c_str(), "n/a",
+                    "n/a", "n/a", "n/a", t.na, "n/a");
+    else
+      std::snprintf(buf, sizeof buf, "  %-16s %8ld %8ld %8ld %8ld %8ld %12.1f\n", m.name.c_str(),
+                    t.tp, t.tn, t.fp, t.fn, t.na, t.ns_per_query);
     os << buf;
   }
 }
 
-void print_json(std::ostream& os, const Classification& c, const ReportContext& ctx) {
-  os << "{\"queries\": " << c.queries << ", \"truth\": " << json_string(c.truth)
-     << ", \"gate\": " << ctx.gate_k << ", \"skipped\": " << ctx.skipped << ", \"methods\": {";
+void print_json_body(std::ostream& os, const Classification& c) {
+  os << "\"queries\": " << c.queries << ", \"static_vf\": " << c.static_vf
+     << ", \"moving_vf\": " << c.moving_vf << ", \"edge_edge\": " << c.edge_edge
+     << ", \"truth\": " << json_string(c.truth) << ", \"methods\": {";
   bool first = true;
   for (const MethodResult& m : c.methods) {
     const Tally& t = m.tally;
-    char ns[32];
-    std::snprintf(ns, sizeof ns, "%.3f", t.ns_per_query);
-    os << (first ? "" : ", ") << json_string(m.name) << ": {\"tp\": " << t.tp
-       << ", \"tn\": " << t.tn << ", \"fp\": " << t.fp << ", \"fn\": " << t.fn
-       << ", \"ns_per_query\": " << ns << "}";
+    os << (first ? "" : ", ") << json_string(m.name) << ": {";
+    if (t.decided() == 0) {
+      os << "\"tp\": null, \"tn\": null, \"fp\": null, \"fn\": null, \"na\": " << t.na
+         << ", \"ns_per_query\": null}";
+    } else {
+      char ns[32];
+      std::snprintf(ns, sizeof ns, "%.3f", t.ns_per_query);
+      os << "\"tp\": " << t.tp << ", \"tn\": " << t.tn << ", \"fp\": " << t.fp
+         << ", \"fn\": " << t.fn << ", \"na\": " << t.na << ", \"ns_per_query\": " << ns << "}";
+    }
     first = false;
   }
-  os << "}}\n";
+  os << "}";
+}
+
+}  // namespace
+
+void print_table(std::ostream& os, const std::vector<FileClassification>& files,
+                 const Classification& total, const ReportContext& ctx) {
+  if (files.size() > 1)
+    for (const FileClassification& f : files) print_block(os, f.file, f.c, ctx), os << "\n";
+  print_block(os, files.size() > 1 ? "total" : files.front().file, total, ctx);
+}
+
+void print_json(std::ostream& os, const std::vector<FileClassification>& files,
+                const Classification& total, const ReportContext& ctx) {
+  os << "{";
+  print_json_body(os, total);
+  os << ", \"gate\": " << ctx.gate_k << ", \"files\": [";
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    os << (i ? ", " : "") << "{\"file\": " << json_string(files[i].file) << ", ";
+    print_json_body(os, files[i].c);
+    os << "}";
+  }
+  os << "]}\n";
 }
 
 std::string per_query_csv(const std::vector<Query>& queries, const Classification& c) {

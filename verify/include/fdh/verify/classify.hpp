@@ -12,14 +12,18 @@ namespace fdh::verify {
 
 struct Tally {
   long tp = 0, tn = 0, fp = 0, fn = 0;
-  double ns_per_query = 0;
+  long na = 0;              // queries the method does not apply to (counted in nothing else)
+  double ns_per_query = 0;  // mean over the queries it applies to
   long errors() const { return fp + fn; }
+  long decided() const { return tp + tn + fp + fn; }
 };
+
+inline constexpr char kNotApplicable = -1;
 
 struct MethodResult {
   std::string name;
   Tally tally;
-  std::vector<char> verdict;  // per query, 1 = hit
+  std::vector<char> verdict;  // per query: 1 = hit, 0 = no hit, kNotApplicable
 };
 
 struct Classification {
@@ -29,10 +33,16 @@ struct Classification {
   std::vector<char> exact;      // per query: exact's verdict
   std::vector<MethodResult> methods;
   std::vector<std::size_t> exact_vs_file;  // queries where exact disagrees with the file's truth
+  std::size_t static_vf = 0, moving_vf = 0, edge_edge = 0;  // the queries by kind
 };
 
-// Every query must be a static vertex-face query. Each method's time is the mean over enough
-// passes to fill about 20 ms, so that short files still give a stable ns per query.
+// Any queries; a method that does not apply to a query (Method::applies_to) gets
+// kNotApplicable there. Each method's time is the mean over enough passes to fill about 20 ms,
+// so that short files still give a stable ns per query.
 Classification classify(const std::vector<Query>& queries, const std::vector<Method>& methods);
+
+// The classifications of consecutive groups (files) joined into one: counts add up, times are
+// weighted by the queries each method applied to.
+Classification join(const std::vector<Classification>& parts);
 
 }  // namespace fdh::verify

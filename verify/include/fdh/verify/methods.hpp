@@ -13,12 +13,15 @@ namespace fdh::verify {
 struct Method {
   std::string name;
   std::string summary;
-  // The verdict on a static vertex-face query: true = hit.
+  // The verdict: true = hit. Defined on static vertex-face queries always, and on moving
+  // triangles and edge-edge queries too when `moving` is set; elsewhere the method is "n/a".
   std::function<bool(const Query&)> hit;
+  bool moving = false;
+  bool applies_to(const Query& q) const { return moving || q.is_static_vf(); }
 };
 
-// exact, robust, paper-literal, paper-intended, linear-system, in that order. With gate_k > 0
-// the paper methods say "hit" only when the k-DOP of the particle's sweep overlaps the
+// exact, robust, float-cubic, paper-literal, paper-intended, linear-system, in that order. With
+// gate_k > 0 the paper methods say "hit" only when the k-DOP of the particle's sweep overlaps the
 // triangle's k-DOP, as they would inside the FDH tree.
 std::vector<Method> all_methods(int gate_k = 0);
 

@@ -11,18 +11,31 @@
 namespace fdh::verify {
 
 struct ReportContext {
-  int gate_k = 0;           // the --gate in force, 0 if none
-  std::size_t skipped = 0;  // queries left out (moving triangles, edge-edge)
+  int gate_k = 0;  // the --gate in force, 0 if none
 };
 
-void print_table(std::ostream& os, const Classification& c, const ReportContext& ctx);
+// One classification per file, in the order read, and their total.
+struct FileClassification {
+  std::string file;
+  Classification c;
+};
 
-// {"queries": N, "truth": "file"|"exact"|"mixed", "gate": K, "skipped": S,
-//  "methods": {"<name>": {"tp":…, "tn":…, "fp":…, "fn":…, "ns_per_query":…}, …}}
-void print_json(std::ostream& os, const Classification& c, const ReportContext& ctx);
+// One block per file when there are several, then the total. A method that applies to none of
+// a block's queries shows "n/a".
+void print_table(std::ostream& os, const std::vector<FileClassification>& files,
+                 const Classification& total, const ReportContext& ctx);
 
-// id,truth,<method>,…,contact,time with one row per query; verdicts are 0 or 1; contact and
-// time are exact's contact kind and earliest contact time (a rational, empty for no contact).
+// {"queries": N, "static_vf": S, "moving_vf": M, "edge_edge": E,
+//  "truth": "file"|"exact"|"mixed", "gate": K,
+//  "methods": {"<name>": {"tp":…, "tn":…, "fp":…, "fn":…, "na":…, "ns_per_query":…}, …},
+//  "files": [{"file": "…", "queries": …, …, "methods": {…}}, …]}
+// for the total, then each file. Counts and time are null where a method applies to nothing.
+void print_json(std::ostream& os, const std::vector<FileClassification>& files,
+                const Classification& total, const ReportContext& ctx);
+
+// id,truth,<method>,…,contact,time with one row per query; verdicts are 0, 1 or n/a; contact and
+// time are exact's contact kind ("moving" for a moving query) and earliest contact time (a
+// rational, or "lo..hi" around an irrational one; empty for no contact).
 // With queries from several files the id is "<file>:<id>".
 std::string per_query_csv(const std::vector<Query>& queries, const Classification& c);
 

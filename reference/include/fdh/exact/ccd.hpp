@@ -1,0 +1,40 @@
+// `exact` continuous collision detection: do a point and a triangle (vertex-face) or two edges
+// (edge-edge), each vertex moving linearly over the step, touch at some time in [0, 1]?
+// Closed primitives, touching counts. Exact on exactly the given doubles in every case: several
+// contacts in one step (the point crossing the plane twice, the "hourglass"), coplanar for the
+// whole step, triangles or edges of zero size at some time, no motion at all.
+//
+// The algebra (docs/methods.md): contact needs coplanarity, a cubic in t. If the cubic is not
+// identically zero, only its roots in [0, 1] can be contacts; they are isolated by Sturm
+// sequences and the inside test is decided by exact signs at each root. If it is identically
+// zero, the first contact is at the start or where a vertex meets an edge, and the same
+// reasoning recurses to point-edge and point-point problems. GMP rationals throughout.
+#pragma once
+
+#include <string>
+
+#include "fdh/query.hpp"
+
+namespace fdh::exact {
+
+struct CcdOptions {
+  double t0 = 0, t1 = 1;  // the time window searched, 0 <= t0 <= t1 <= 1
+  int time_bits = 0;      // refine the contact time to width < 2^-time_bits (0: as isolated)
+};
+
+struct CcdContact {
+  bool hit = false;
+  // The earliest contact lies in the closed interval [time_lo, time_hi]; time_lo == time_hi
+  // when it is known exactly (a rational). Exact decimal fractions "p/q"; "" without a hit.
+  std::string time_lo, time_hi;
+  double time_lo_down = 0, time_hi_up = 0;  // the same bounds rounded outward to doubles
+  bool time_exact() const { return hit && time_lo == time_hi; }
+};
+
+// Vertex-face or edge-edge by q.kind (fdh/query.hpp gives the point order).
+CcdContact ccd(const Query& q, const CcdOptions& options = {});
+
+// The verdict alone: the fallback of fast/'s `robust` moving test.
+bool ccd_hit(const Query& q);
+
+}  // namespace fdh::exact
