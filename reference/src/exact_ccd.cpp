@@ -1,5 +1,7 @@
 #include "fdh/exact/ccd.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <stdexcept>
@@ -18,20 +20,11 @@ struct PVec {
   Poly x, y, z;
   bool is_zero() const { return x.is_zero() && y.is_zero() && z.is_zero(); }
 };
-PVec operator-(const PVec& a, const PVec& b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
+PVec operator-(const PVec& a, const PVec& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 PVec cross(const PVec& a, const PVec& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-Poly dot(const PVec& a, const PVec& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
-// The linear path from `at0` (t = 0) to `at1` (t = 1).
-PVec path(const Vec3& at0, const Vec3& at1) {
-  return {Poly::linear(at0.x, at1.x), Poly::linear(at0.y, at1.y), Poly::linear(at0.z, at1.z)};
-}
+Poly dot(const PVec& a, const PVec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
 bool zero_at(const PVec& v, Root& r) {
   return sign_at(v.x, r) == 0 && sign_at(v.y, r) == 0 && sign_at(v.z, r) == 0;
@@ -48,33 +41,58 @@ struct OnSegment {
   bool at(Root& r) const { return zero_at(w, r) && sign_at(h, r) <= 0; }
 };
 
+// The four moving points with their coordinates scaled by one power of two into integers:
+// every condition below is homogeneous in the coordinates, so no sign changes.
+std::array<PVec, 4> integer_paths(const Query& q) {
+  algebra::Dyadic d[24];
+  unsigned long k = 0;
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 3; ++j) {
+      algebra::Dyadic& e = d[3 * i + j];
+      e = algebra::Dyadic::of(j == 0 ? q.x[i].x : j == 1 ? q.x[i].y : q.x[i].z);
+      k = std::max(k, e.k);
+    }
+  mpz_class z[24];
+  for (int i = 0; i < 24; ++i) mpz_mul_2exp(z[i].get_mpz_t(), d[i].a.get_mpz_t(), k - d[i].k);
+  std::array<PVec, 4> v;
+  for (int i = 0; i < 4; ++i)
+    v[i] = {Poly::linear(z[3 * i], z[3 * i + 12]), Poly::linear(z[3 * i + 1], z[3 * i + 13]),
+            Poly::linear(z[3 * i + 2], z[3 * i + 14])};
+  return v;
+}
+
 class Search {
  public:
-  Search(const CcdOptions& o, bool want_time) : t0_(o.t0), t1_(o.t1), want_time_(want_time) {}
+  Search(const CcdOptions& o, bool want_time)
+      : t0_(algebra::Dyadic::of(o.t0)), t1_(algebra::Dyadic::of(o.t1)), want_time_(want_time) {}
 
   CcdContact vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec& c);
   CcdContact edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVec& b1);
 
-  // The earliest contact found, refined to `width`.
-  CcdContact result(const mpq_class& width);
+  // The earliest contact found, refined to width < 2^-bits (bits = 0: as found).
+  CcdContact result(unsigned long bits);
 
  private:
   // Records the earliest root in [t0, t1] common to `zeros` (not all zero) where `ok` holds.
   template <class Ok>
   bool first_common_root(std::initializer_list<const Poly*> zeros, Ok ok) {
-    Poly g;
-    for (const Poly* z : zeros) g = algebra::gcd(g, *z);
-    if (g.degree() < 1) return false;
-    keep_.push_back(algebra::squarefree(g));
-    for (Root& r : algebra::roots_in(keep_.back(), t0_, t1_))
+    for (Root& r : common_roots(zeros))
       if (ok(r)) {
         found_.push_back(r);
         return true;
       }
     return false;
   }
+  // The roots in [t0, t1] common to `zeros` (not all zero), increasing.
+  std::vector<Root> common_roots(std::initializer_list<const Poly*> zeros) {
+    Poly g;
+    for (const Poly* z : zeros) g = algebra::gcd(g, *z);
+    if (g.degree() < 1) return {};
+    keep_.push_back(algebra::squarefree(g));
+    return algebra::roots_in(keep_.back(), t0_, t1_);
+  }
   bool found_at_start() {
-    found_.push_back(Root{nullptr, t0_, t0_});
+    found_.push_back(Root::at(t0_));
     return true;
   }
   bool done() const { return !want_time_ && !found_.empty(); }
@@ -82,7 +100,7 @@ class Search {
   bool point_point(const PVec& p, const PVec& a);
   bool point_edge(const PVec& p, const PVec& a, const PVec& b);
 
-  mpq_class t0_, t1_;
+  algebra::Dyadic t0_, t1_;
   bool want_time_;
   std::deque<Poly> keep_;    // the squarefree polynomials that the roots point into
   std::vector<Root> found_;  // candidates for the earliest contact
@@ -101,7 +119,7 @@ bool Search::point_edge(const PVec& p, const PVec& a, const PVec& b) {
   if (!on.w.is_zero())
     return first_common_root({&on.w.x, &on.w.y, &on.w.z},
                              [&](Root& r) { return sign_at(on.h, r) <= 0; });
-  if (on.h.sign_at(t0_) <= 0) return found_at_start();
+  if (algebra::sign_at(on.h, t0_) <= 0) return found_at_start();
   const bool hit_a = point_point(p, a);
   if (done()) return true;
   return point_point(p, b) || hit_a;
@@ -109,21 +127,30 @@ bool Search::point_edge(const PVec& p, const PVec& a, const PVec& b) {
 
 CcdContact Search::vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec& c) {
   const Poly f = dot(a - p, cross(b - p, c - p));  // 6 x signed volume: 0 iff coplanar
+  std::vector<Root> times;
+  if (!f.is_zero()) {
+    times = common_roots({&f});
+    if (times.empty()) return result(0);  // never coplanar: the common case, decided here
+  }
   const PVec n = cross(b - a, c - a);
   // At a coplanar time with n != 0, these are |n|^2 times p's barycentric coordinates.
   const Poly ga = dot(n, cross(b - p, c - p)), gb = dot(n, cross(c - p, a - p)),
              gc = dot(n, cross(a - p, b - p));
-  const OnSegment ab(p, a, b), bc(p, b, c), ca(p, c, a);
   const auto inside = [&](Root& r) {  // p in the closed triangle, given coplanarity at r
     if (!zero_at(n, r)) return sign_at(ga, r) >= 0 && sign_at(gb, r) >= 0 && sign_at(gc, r) >= 0;
-    return ab.at(r) || bc.at(r) || ca.at(r);  // a zero-area triangle is the union of its edges
+    // A zero-area triangle is the union of its edges.
+    return OnSegment(p, a, b).at(r) || OnSegment(p, b, c).at(r) || OnSegment(p, c, a).at(r);
   };
   if (!f.is_zero()) {
-    first_common_root({&f}, inside);
+    for (Root& r : times)
+      if (inside(r)) {
+        found_.push_back(r);
+        break;
+      }
   } else {
     // Coplanar throughout: a first contact after the start puts p on an edge, since inside a
     // non-degenerate triangle it would have been inside a moment earlier.
-    Root start{nullptr, t0_, t0_};
+    Root start = Root::at(t0_);
     if (inside(start)) found_at_start();
     for (auto [u, v] : {std::pair{&a, &b}, {&b, &c}, {&c, &a}})
       if (!done()) point_edge(p, *u, *v);
@@ -134,25 +161,33 @@ CcdContact Search::vertex_face(const PVec& p, const PVec& a, const PVec& b, cons
 CcdContact Search::edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVec& b1) {
   const PVec ea = a1 - a0, eb = b1 - b0, w = b0 - a0;
   const Poly f = dot(ea, cross(w, b1 - a0));
+  std::vector<Root> times;
+  if (!f.is_zero()) {
+    times = common_roots({&f});
+    if (times.empty()) return result(0);
+  }
   const PVec m = cross(ea, eb);
   // At a coplanar time with m != 0: a0 + (s/mm) ea = b0 + (u/mm) eb.
   const Poly mm = dot(m, m), s = dot(cross(w, eb), m), u = dot(cross(w, ea), m);
   const Poly mm_s = mm - s, mm_u = mm - u;
-  const OnSegment a0_on_b(a0, b0, b1), a1_on_b(a1, b0, b1), b0_on_a(b0, a0, a1),
-      b1_on_a(b1, a0, a1);
   const auto meet = [&](Root& r) {  // the closed segments meet, given coplanarity at r
     if (!zero_at(m, r))
       return sign_at(s, r) >= 0 && sign_at(mm_s, r) >= 0 && sign_at(u, r) >= 0 &&
              sign_at(mm_u, r) >= 0;
     // Parallel or zero-length: they meet iff an end of one lies on the other.
-    return a0_on_b.at(r) || a1_on_b.at(r) || b0_on_a.at(r) || b1_on_a.at(r);
+    return OnSegment(a0, b0, b1).at(r) || OnSegment(a1, b0, b1).at(r) ||
+           OnSegment(b0, a0, a1).at(r) || OnSegment(b1, a0, a1).at(r);
   };
   if (!f.is_zero()) {
-    first_common_root({&f}, meet);
+    for (Root& r : times)
+      if (meet(r)) {
+        found_.push_back(r);
+        break;
+      }
   } else {
     // Coplanar throughout: segments that cross properly crossed a moment earlier too, so a
     // first contact after the start puts an end of one on the other.
-    Root start{nullptr, t0_, t0_};
+    Root start = Root::at(t0_);
     if (meet(start)) found_at_start();
     const PVec* ends[4][3] = {{&a0, &b0, &b1}, {&a1, &b0, &b1}, {&b0, &a0, &a1}, {&b1, &a0, &a1}};
     for (auto& e : ends)
@@ -170,7 +205,7 @@ double up(const mpq_class& q) {
   return mpq_class(d) < q ? std::nextafter(d, 2.0) : d;
 }
 
-CcdContact Search::result(const mpq_class& width) {
+CcdContact Search::result(unsigned long bits) {
   CcdContact out;
   if (found_.empty()) return out;
   out.hit = true;
@@ -178,9 +213,10 @@ CcdContact Search::result(const mpq_class& width) {
   // Each candidate's interval holds its time; the earliest lies in [min lo, min hi].
   mpq_class lo = 2, hi = 2;
   for (Root& r : found_) {
-    if (width > 0) algebra::refine(r, width);
-    if (r.lo < lo) lo = r.lo;
-    if (r.hi < hi) hi = r.hi;
+    if (bits > 0) algebra::refine(r, bits);
+    const mpq_class rl = r.lo().value(), rh = r.hi().value();
+    if (rl < lo) lo = rl;
+    if (rh < hi) hi = rh;
   }
   out.time_lo = lo.get_str();
   out.time_hi = hi.get_str();
@@ -193,15 +229,10 @@ CcdContact run(const Query& q, const CcdOptions& o, bool want_time) {
   if (!(0 <= o.t0 && o.t0 <= o.t1 && o.t1 <= 1))
     throw std::invalid_argument("ccd: the time window must satisfy 0 <= t0 <= t1 <= 1");
   Search search(o, want_time);
-  PVec v[4];
-  for (int i = 0; i < 4; ++i) v[i] = path(q.x[i], q.x[i + 4]);
+  const std::array<PVec, 4> v = integer_paths(q);
   CcdContact c = q.kind == QueryKind::VertexFace ? search.vertex_face(v[0], v[1], v[2], v[3])
                                                  : search.edge_edge(v[0], v[1], v[2], v[3]);
-  if (want_time && c.hit && o.time_bits > 0) {
-    mpq_class width = 1;
-    mpq_div_2exp(width.get_mpq_t(), width.get_mpq_t(), o.time_bits);
-    c = search.result(width);
-  }
+  if (want_time && c.hit && o.time_bits > 0) c = search.result(unsigned(o.time_bits));
   return c;
 }
 

@@ -1,29 +1,64 @@
 #include "polynomial.hpp"
 
-#include <cstdlib>
+#include <cmath>
+#include <cstdint>
 #include <utility>
 
 namespace fdh::exact::algebra {
 namespace {
 
-void trim(std::vector<mpq_class>& c) {
+void trim(std::vector<mpz_class>& c) {
   while (!c.empty() && sgn(c.back()) == 0) c.pop_back();
 }
 
-Poly monic(Poly p) {
+mpz_class shifted(const mpz_class& x, unsigned long bits) {
+  mpz_class y;
+  mpz_mul_2exp(y.get_mpz_t(), x.get_mpz_t(), bits);
+  return y;
+}
+
+// p divided by the (positive) gcd of its coefficients: the same sign everywhere.
+Poly content_free(Poly p) {
   if (p.is_zero()) return p;
-  const mpq_class lead = p.c.back();
-  for (mpq_class& x : p.c) x /= lead;
+  mpz_class g = 0;
+  for (const mpz_class& x : p.c) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), x.get_mpz_t());
+  for (mpz_class& x : p.c) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
   return p;
+}
+
+// content_free with a positive leading coefficient: the normal form of a gcd.
+Poly primitive(Poly p) {
+  p = content_free(std::move(p));
+  if (!p.is_zero() && sgn(p.c.back()) < 0)
+    for (mpz_class& x : p.c) x = -x;
+  return p;
+}
+
+// A positive multiple of the remainder of a by b: each step scales by |lc(b)| > 0, so signs
+// at every point are those of the true remainder (what Sturm sequences need).
+Poly pseudo_remainder(const Poly& a, const Poly& b) {
+  std::vector<mpz_class> r = a.c;
+  const mpz_class lb = abs(b.c.back());
+  const int sb = sgn(b.c.back());
+  const std::size_t n = b.c.size();
+  while (r.size() >= n) {
+    const mpz_class lr = r.back() * sb;
+    const std::size_t e = r.size() - n;
+    for (mpz_class& x : r) x *= lb;
+    for (std::size_t j = 0; j < n; ++j) r[e + j] -= lr * b.c[j];
+    r.pop_back();  // now zero
+    trim(r);
+  }
+  return Poly(std::move(r));
 }
 
 // The Sturm sequence of a squarefree s: s, s', then negated remainders down to a constant.
 std::vector<Poly> sturm_sequence(const Poly& s) {
   std::vector<Poly> seq{s, derivative(s)};
   while (!seq.back().is_zero() && seq.back().degree() > 0) {
-    Poly r = remainder(seq[seq.size() - 2], seq.back());
+    Poly r = content_free(pseudo_remainder(seq[seq.size() - 2], seq.back()));
     if (r.is_zero()) break;
-    for (mpq_class& x : r.c) x = -x;
+    for (mpz_class& x : r.c) x = -x;
     seq.push_back(std::move(r));
   }
   return seq;
@@ -31,10 +66,10 @@ std::vector<Poly> sturm_sequence(const Poly& s) {
 
 // Sign variations of the sequence at t, zeros dropped. For squarefree s, V(a) - V(b) is the
 // number of distinct roots in (a, b] (Sturm's theorem with the half-open convention).
-int variations(const std::vector<Poly>& seq, const mpq_class& t) {
+int variations(const std::vector<Poly>& seq, const Dyadic& t) {
   int v = 0, last = 0;
   for (const Poly& p : seq) {
-    const int s = p.sign_at(t);
+    const int s = sign_at(p, t);
     if (s == 0) continue;
     if (last != 0 && s != last) ++v;
     last = s;
@@ -47,82 +82,86 @@ struct Isolator {
   std::vector<Poly> seq;
   std::vector<Root> out;
 
-  int count(const mpq_class& a, const mpq_class& b) const {
-    return variations(seq, a) - variations(seq, b);
+  int count(const mpz_class& a, const mpz_class& b, unsigned long k) const {
+    return variations(seq, {a, k}) - variations(seq, {b, k});
   }
 
-  // Appends the roots in (a, b], in order.
-  void isolate(mpq_class a, mpq_class b) {
-    const int n = count(a, b);
+  // Appends the roots in (a, b] / 2^k, in order.
+  void isolate(const mpz_class& a0, const mpz_class& b0, unsigned long k) {
+    const int n = count(a0, b0, k);
     if (n == 0) return;
     if (n > 1) {
-      const mpq_class m = (a + b) / 2;
-      isolate(a, m);
-      isolate(m, b);
+      const mpz_class m = a0 + b0;
+      isolate(2 * a0, m, k + 1);
+      isolate(m, 2 * b0, k + 1);
       return;
     }
-    if (s.sign_at(b) == 0) {
-      out.push_back(Root{&s, b, b});
+    if (sign_at(s, Dyadic{b0, k}) == 0) {
+      out.push_back(Root{&s, b0, b0, k});
       return;
     }
     // One root in (a, b). Move a off a root of s so that s changes sign across (a, b).
-    while (s.sign_at(a) == 0) {
-      const mpq_class m = (a + b) / 2;
-      if (s.sign_at(m) == 0) {
-        out.push_back(Root{&s, m, m});
+    mpz_class a = a0, b = b0;
+    while (sign_at(s, Dyadic{a, k}) == 0) {
+      const mpz_class m = a + b;
+      a *= 2, b *= 2, ++k;
+      if (sign_at(s, Dyadic{m, k}) == 0) {
+        out.push_back(Root{&s, m, m, k});
         return;
       }
-      (count(m, b) == 1 ? a : b) = m;
+      (count(m, b, k) == 1 ? a : b) = m;
     }
-    out.push_back(Root{&s, a, b});
+    out.push_back(Root{&s, a, b, k});
   }
 };
 
-// Coefficients of g(m + x) in x: the Taylor expansion at m, by repeated synthetic division.
-std::vector<mpq_class> taylor_at(const Poly& g, const mpq_class& m) {
-  std::vector<mpq_class> a = g.c;
-  const int n = int(a.size());
-  for (int k = 0; k < n; ++k)
-    for (int i = n - 2; i >= k; --i) a[i] += m * a[i + 1];
-  return a;
-}
-
+// Halves the interval; false if the midpoint is the root.
 bool bisect_once(Root& r) {
-  const mpq_class m = (r.lo + r.hi) / 2;
-  const int sm = r.s->sign_at(m);
+  const mpz_class m = r.a + r.b;
+  r.a *= 2, r.b *= 2, ++r.k;
+  const int sm = sign_at(*r.s, Dyadic{m, r.k});
   if (sm == 0) {
-    r.lo = r.hi = m;
+    r.a = r.b = m;
     return false;
   }
-  (r.s->sign_at(r.lo) == sm ? r.lo : r.hi) = m;
+  (sign_at(*r.s, r.lo()) == sm ? r.a : r.b) = m;
   return true;
+}
+
+// Certain sign of g over [a, b] / 2^k, or 0. With H(x) = 2^(k d) g((a + (b - a) x) / 2^k), an
+// integer polynomial, |H(x) - H(0)| <= sum |H_i| for x in [0, 1].
+int sign_over(const Poly& g, const Root& r) {
+  const int d = g.degree();
+  std::vector<mpz_class> h(g.c.size());
+  for (int i = 0; i <= d; ++i) h[i] = shifted(g.c[i], r.k * unsigned(d - i));
+  for (int j = 0; j < d; ++j)  // Taylor shift by a
+    for (int i = d - 1; i >= j; --i) h[i] += r.a * h[i + 1];
+  const mpz_class w = r.b - r.a;
+  mpz_class spread = 0, power = 1;
+  for (int i = 1; i <= d; ++i) {
+    power *= w;
+    spread += abs(h[i]) * power;
+  }
+  return abs(h[0]) > spread ? sgn(h[0]) : 0;
 }
 
 }  // namespace
 
-Poly::Poly(std::vector<mpq_class> coefficients) : c(std::move(coefficients)) {
-  trim(c);
-}
+Poly::Poly(std::vector<mpz_class> coefficients) : c(std::move(coefficients)) { trim(c); }
 
-Poly Poly::linear(const mpq_class& at0, const mpq_class& at1) {
+Poly Poly::linear(const mpz_class& at0, const mpz_class& at1) {
   return Poly({at0, at1 - at0});
 }
 
-mpq_class Poly::operator()(const mpq_class& t) const {
-  mpq_class v = 0;
-  for (std::size_t i = c.size(); i-- > 0;) v = v * t + c[i];
-  return v;
-}
-
 Poly operator+(const Poly& a, const Poly& b) {
-  std::vector<mpq_class> c(std::max(a.c.size(), b.c.size()));
+  std::vector<mpz_class> c(std::max(a.c.size(), b.c.size()));
   for (std::size_t i = 0; i < a.c.size(); ++i) c[i] += a.c[i];
   for (std::size_t i = 0; i < b.c.size(); ++i) c[i] += b.c[i];
   return Poly(std::move(c));
 }
 
 Poly operator-(const Poly& a, const Poly& b) {
-  std::vector<mpq_class> c(std::max(a.c.size(), b.c.size()));
+  std::vector<mpz_class> c(std::max(a.c.size(), b.c.size()));
   for (std::size_t i = 0; i < a.c.size(); ++i) c[i] += a.c[i];
   for (std::size_t i = 0; i < b.c.size(); ++i) c[i] -= b.c[i];
   return Poly(std::move(c));
@@ -130,83 +169,93 @@ Poly operator-(const Poly& a, const Poly& b) {
 
 Poly operator*(const Poly& a, const Poly& b) {
   if (a.is_zero() || b.is_zero()) return Poly();
-  std::vector<mpq_class> c(a.c.size() + b.c.size() - 1);
+  std::vector<mpz_class> c(a.c.size() + b.c.size() - 1);
   for (std::size_t i = 0; i < a.c.size(); ++i)
     for (std::size_t j = 0; j < b.c.size(); ++j) c[i + j] += a.c[i] * b.c[j];
   return Poly(std::move(c));
 }
 
 Poly derivative(const Poly& p) {
-  std::vector<mpq_class> c;
-  for (std::size_t i = 1; i < p.c.size(); ++i) c.push_back(p.c[i] * int(i));
+  std::vector<mpz_class> c;
+  for (std::size_t i = 1; i < p.c.size(); ++i) c.push_back(p.c[i] * (unsigned long)i);
   return Poly(std::move(c));
 }
 
-namespace {
-// Long division: a = q b + r with deg r < deg b.
-std::pair<Poly, Poly> divide(const Poly& a, const Poly& b) {
-  std::vector<mpq_class> r = a.c;
-  std::vector<mpq_class> q(a.c.size() >= b.c.size() ? a.c.size() - b.c.size() + 1 : 0);
-  for (std::size_t k = q.size(); k-- > 0;) {
-    const mpq_class f = r[k + b.c.size() - 1] / b.c.back();
-    q[k] = f;
-    for (std::size_t j = 0; j < b.c.size(); ++j) r[k + j] -= f * b.c[j];
-  }
-  return {Poly(std::move(q)), Poly(std::move(r))};
-}
-}  // namespace
-
-Poly remainder(const Poly& a, const Poly& b) {
-  return divide(a, b).second;
-}
-Poly quotient(const Poly& a, const Poly& b) {
-  return divide(a, b).first;
-}
-
-Poly gcd(Poly a, Poly b) {
+Poly gcd(const Poly& a0, const Poly& b0) {
+  Poly a = primitive(a0), b = primitive(b0);
+  if (a.degree() < b.degree()) std::swap(a, b);
   while (!b.is_zero()) {
-    Poly r = remainder(a, b);
+    Poly r = primitive(pseudo_remainder(a, b));
     a = std::move(b);
     b = std::move(r);
   }
-  return monic(std::move(a));
+  return a;
 }
 
 Poly squarefree(const Poly& p) {
   const Poly g = gcd(p, derivative(p));
-  return g.degree() <= 0 ? monic(p) : monic(quotient(p, g));
+  Poly q = primitive(p);
+  if (g.degree() <= 0) return q;
+  // Exact division: by Gauss's lemma the quotient of primitive integer polynomials is integer.
+  std::vector<mpz_class> r = q.c, out(q.c.size() - g.c.size() + 1);
+  for (std::size_t k = out.size(); k-- > 0;) {
+    mpz_divexact(out[k].get_mpz_t(), r[k + g.c.size() - 1].get_mpz_t(), g.c.back().get_mpz_t());
+    for (std::size_t j = 0; j < g.c.size(); ++j) r[k + j] -= out[k] * g.c[j];
+  }
+  return primitive(Poly(std::move(out)));
 }
 
-std::vector<Root> roots_in(const Poly& s, const mpq_class& t0, const mpq_class& t1) {
+Dyadic Dyadic::of(double x) {
+  int e = 0;
+  const double m = std::frexp(x, &e);  // x = m 2^e, 0.5 <= |m| < 1
+  Dyadic d{mpz_class(double(std::int64_t(std::ldexp(m, 53)))), 0};
+  if (e - 53 >= 0) {
+    mpz_mul_2exp(d.a.get_mpz_t(), d.a.get_mpz_t(), unsigned(e - 53));
+  } else {
+    d.k = unsigned(53 - e);
+  }
+  return d;
+}
+
+mpq_class Dyadic::value() const {
+  mpq_class q(a);
+  mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), k);
+  return q;
+}
+
+int sign_at(const Poly& p, const Dyadic& t) {
+  const int d = p.degree();
+  if (d < 0) return 0;
+  mpz_class v = p.c[d];
+  for (int i = d - 1; i >= 0; --i) v = v * t.a + shifted(p.c[i], t.k * unsigned(d - i));
+  return sgn(v);
+}
+
+std::vector<Root> roots_in(const Poly& s, const Dyadic& t0, const Dyadic& t1) {
   Isolator iso{s, sturm_sequence(s), {}};
-  if (s.sign_at(t0) == 0) iso.out.push_back(Root{&s, t0, t0});
-  if (t0 < t1) iso.isolate(t0, t1);
+  const unsigned long k = std::max(t0.k, t1.k);
+  const mpz_class a = shifted(t0.a, k - t0.k), b = shifted(t1.a, k - t1.k);
+  if (sign_at(s, t0) == 0) iso.out.push_back(Root{&s, a, a, k});
+  if (a < b) iso.isolate(a, b, k);
   return iso.out;
 }
 
 int sign_at(const Poly& g, Root& r) {
-  if (r.rational()) return g.sign_at(r.lo);
+  if (r.exact()) return sign_at(g, r.lo());
   // g vanishes at the root iff gcd(s, g) does; that gcd divides s, so its only root in
   // [lo, hi] can be ours, and then it changes sign across the interval.
   const Poly h = gcd(*r.s, g);
-  if (h.degree() >= 1 && h.sign_at(r.lo) * h.sign_at(r.hi) < 0) return 0;
-  // g(root) != 0: shrink the interval until |g(m)| beats the Taylor bound of g's variation.
+  if (h.degree() >= 1 && sign_at(h, r.lo()) * sign_at(h, r.hi()) < 0) return 0;
+  // g(root) != 0: shrink the interval until g's sign over it is certain.
   for (;;) {
-    const mpq_class m = (r.lo + r.hi) / 2, rad = (r.hi - r.lo) / 2;
-    const std::vector<mpq_class> d = taylor_at(g, m);
-    mpq_class spread = 0, power = 1;
-    for (std::size_t k = 1; k < d.size(); ++k) {
-      power *= rad;
-      spread += abs(d[k]) * power;
-    }
-    if (d.empty()) return 0;
-    if (abs(d[0]) > spread) return sgn(d[0]);
-    if (!bisect_once(r)) return g.sign_at(r.lo);
+    if (const int s = sign_over(g, r)) return s;
+    if (!bisect_once(r)) return sign_at(g, r.lo());
   }
 }
 
-void refine(Root& r, const mpq_class& width) {
-  while (!r.rational() && r.hi - r.lo >= width)
+void refine(Root& r, unsigned long bits) {
+  // width (b - a) / 2^k < 2^-bits  <=>  (b - a) 2^bits < 2^k
+  while (!r.exact() && shifted(r.b - r.a, bits) >= shifted(mpz_class(1), r.k))
     if (!bisect_once(r)) break;
 }
 
