@@ -17,20 +17,13 @@ mpz_class shifted(const mpz_class& x, unsigned long bits) {
   return y;
 }
 
-// p divided by the (positive) gcd of its coefficients: the same sign everywhere.
-Poly content_free(Poly p) {
+// p divided by the gcd of its coefficients, with a positive leading coefficient.
+Poly primitive(Poly p) {
   if (p.is_zero()) return p;
   mpz_class g = 0;
   for (const mpz_class& x : p.c) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), x.get_mpz_t());
+  if (sgn(p.c.back()) < 0) g = -g;
   for (mpz_class& x : p.c) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
-  return p;
-}
-
-// content_free with a positive leading coefficient: the normal form of a gcd.
-Poly primitive(Poly p) {
-  p = content_free(std::move(p));
-  if (!p.is_zero() && sgn(p.c.back()) < 0)
-    for (mpz_class& x : p.c) x = -x;
   return p;
 }
 
@@ -56,7 +49,7 @@ Poly pseudo_remainder(const Poly& a, const Poly& b) {
 std::vector<Poly> sturm_sequence(const Poly& s) {
   std::vector<Poly> seq{s, derivative(s)};
   while (!seq.back().is_zero() && seq.back().degree() > 0) {
-    Poly r = content_free(pseudo_remainder(seq[seq.size() - 2], seq.back()));
+    Poly r = pseudo_remainder(seq[seq.size() - 2], seq.back());
     if (r.is_zero()) break;
     for (mpz_class& x : r.c) x = -x;
     seq.push_back(std::move(r));
@@ -182,14 +175,16 @@ Poly derivative(const Poly& p) {
 }
 
 Poly gcd(const Poly& a0, const Poly& b0) {
-  Poly a = primitive(a0), b = primitive(b0);
+  // Degrees are at most 4 here: coefficient growth without content removal stays small, and
+  // removing it (integer gcds) costs more than it saves.
+  Poly a = a0, b = b0;
   if (a.degree() < b.degree()) std::swap(a, b);
   while (!b.is_zero()) {
-    Poly r = primitive(pseudo_remainder(a, b));
+    Poly r = pseudo_remainder(a, b);
     a = std::move(b);
     b = std::move(r);
   }
-  return a;
+  return primitive(std::move(a));
 }
 
 Poly squarefree(const Poly& p) {
@@ -241,15 +236,17 @@ std::vector<Root> roots_in(const Poly& s, const Dyadic& t0, const Dyadic& t1) {
 }
 
 int sign_at(const Poly& g, Root& r) {
+  if (g.is_zero()) return 0;
   if (r.exact()) return sign_at(g, r.lo());
+  if (const int s = sign_over(g, r)) return s;  // the common case: no gcd needed
   // g vanishes at the root iff gcd(s, g) does; that gcd divides s, so its only root in
   // [lo, hi] can be ours, and then it changes sign across the interval.
   const Poly h = gcd(*r.s, g);
   if (h.degree() >= 1 && sign_at(h, r.lo()) * sign_at(h, r.hi()) < 0) return 0;
   // g(root) != 0: shrink the interval until g's sign over it is certain.
   for (;;) {
-    if (const int s = sign_over(g, r)) return s;
     if (!bisect_once(r)) return sign_at(g, r.lo());
+    if (const int s = sign_over(g, r)) return s;
   }
 }
 
