@@ -92,7 +92,7 @@ Conditions edge_edge(const Query& q, const Interval& t) {
 
 Filtered bisect(const Query& q) {
   const auto eval = q.kind == QueryKind::VertexFace ? &vertex_face : &edge_edge;
-  constexpr int kMaxPieces = 48;  // evaluations before giving up
+  constexpr int kMaxPieces = 16;  // evaluations before giving up
   constexpr double kMinWidth = 0x1p-16;
   Interval stack[40];
   int top = 0;
