@@ -48,12 +48,35 @@ TEST(Cli, ClassifyJson) {
       fdhcert({"classify", kData + "static.vf", "--json", "--methods", "exact,robust"});
   ASSERT_EQ(r.status, 0) << r.err;
   // Three queries carry truth and one does not: the counts mix both.
-  EXPECT_EQ(r.out.rfind("{\"queries\": 4, \"truth\": \"mixed\"", 0), 0u) << r.out;
-  EXPECT_NE(
-      r.out.find("\"exact\": {\"tp\": 2, \"tn\": 2, \"fp\": 0, \"fn\": 0, \"ns_per_query\": "),
-      std::string::npos)
+  EXPECT_EQ(r.out.rfind("{\"queries\": 4, \"static_vf\": 4, \"moving_vf\": 0, \"edge_edge\": 0, "
+                        "\"truth\": \"mixed\"",
+                        0),
+            0u)
+      << r.out;
+  EXPECT_NE(r.out.find("\"exact\": {\"tp\": 2, \"tn\": 2, \"fp\": 0, \"fn\": 0, \"na\": 0, "
+                       "\"ns_per_query\": "),
+            std::string::npos)
       << r.out;
   EXPECT_EQ(r.out.find("paper-literal"), std::string::npos);
+}
+
+TEST(Cli, ClassifyMovingShowsNotApplicable) {
+  const CliRun r = fdhcert({"classify", kData + "moving.vf", "--json", "--check"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"moving_vf\": 1, \"edge_edge\": 2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"robust\": {\"tp\": 2, \"tn\": 1, \"fp\": 0, \"fn\": 0, \"na\": 0"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("\"paper-literal\": {\"tp\": null, \"tn\": null, \"fp\": null, "
+                       "\"fn\": null, \"na\": 3, \"ns_per_query\": null}"),
+            std::string::npos)
+      << r.out;
+  const CliRun table = fdhcert({"classify", kData + "moving.vf", kData + "static.vf"});
+  ASSERT_EQ(table.status, 0) << table.err;
+  EXPECT_NE(table.out.find("total: 4 static vertex-face, 1 moving vertex-face, 2 edge-edge"),
+            std::string::npos)
+      << table.out;
+  EXPECT_NE(table.out.find("paper-literal         n/a"), std::string::npos) << table.out;
 }
 
 TEST(Cli, PerQueryCsv) {

@@ -20,11 +20,15 @@ struct PVec {
   Poly x, y, z;
   bool is_zero() const { return x.is_zero() && y.is_zero() && z.is_zero(); }
 };
-PVec operator-(const PVec& a, const PVec& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+PVec operator-(const PVec& a, const PVec& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
 PVec cross(const PVec& a, const PVec& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-Poly dot(const PVec& a, const PVec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Poly dot(const PVec& a, const PVec& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
 bool zero_at(const PVec& v, Root& r) {
   return sign_at(v.x, r) == 0 && sign_at(v.y, r) == 0 && sign_at(v.z, r) == 0;

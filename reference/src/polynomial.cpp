@@ -200,7 +200,9 @@ int sign_over(const Poly& g, const Root& r) {
 
 }  // namespace
 
-Poly::Poly(std::vector<mpz_class> coefficients) : c(std::move(coefficients)) { trim(c); }
+Poly::Poly(std::vector<mpz_class> coefficients) : c(std::move(coefficients)) {
+  trim(c);
+}
 
 Poly Poly::linear(const mpz_class& at0, const mpz_class& at1) {
   return Poly({at0, at1 - at0});

@@ -19,7 +19,9 @@ namespace fdh::exact {
 
 struct CcdOptions {
   double t0 = 0, t1 = 1;  // the time window searched, 0 <= t0 <= t1 <= 1
-  int time_bits = 0;      // refine the contact time to width < 2^-time_bits (0: as isolated)
+  // Refine the contact time to width < 2^-time_bits (0: as isolated, possibly all of [t0, t1]).
+  // Bisection from [t0, t1] lands exactly on dyadic times with few bits, such as 1/2 or 3/8.
+  int time_bits = 52;
 };
 
 struct CcdContact {

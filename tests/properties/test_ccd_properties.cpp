@@ -1,0 +1,89 @@
+// Moving queries (vertex-face with a moving triangle, edge-edge): `robust` equals `exact` on
+// every family; `exact` agrees with what a construction guarantees (truth, earliest time); and
+// exact's contact time really is the first contact: the query touches inside the reported
+// interval and not before it. On static queries, the CCD and the static exact test (CGAL's
+// do_intersect) are two independent exact methods, and they must agree.
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+
+#include <cmath>
+
+#include "fdh/ccd/float_cubic.hpp"
+#include "fdh/ccd/robust.hpp"
+#include "fdh/exact/ccd.hpp"
+#include "fdh/exact/point_triangle.hpp"
+#include "fdh/verify/families.hpp"
+#include "fdh/verify/moving_families.hpp"
+
+namespace fdh::verify {
+namespace {
+
+class MovingFamilyTest : public ::testing::TestWithParam<MovingFamily> {};
+
+TEST_P(MovingFamilyTest, RobustEqualsExact) {
+  EXPECT_TRUE(
+      rc::check("ccd-robust-equals-exact/" + moving_family_name(GetParam()), [f = GetParam()] {
+        const Query q = (*gen_moving(f)).query;
+        RC_ASSERT(robust_ccd(q, &exact::ccd_hit) == exact::ccd_hit(q));
+      }));
+}
+
+TEST_P(MovingFamilyTest, ExactMatchesTheConstruction) {
+  EXPECT_TRUE(rc::check("ccd-exact-matches-construction/" + moving_family_name(GetParam()),
+                        [f = GetParam()] {
+                          const GeneratedMoving g = *gen_moving(f);
+                          const exact::CcdContact c = exact::ccd(g.query);
+                          if (g.query.has_truth()) RC_ASSERT(c.hit == bool(g.query.truth));
+                          if (!g.time.empty()) {
+                            RC_ASSERT(c.time_exact());
+                            RC_ASSERT(c.time_lo == g.time);
+                          }
+                        }));
+}
+
+TEST_P(MovingFamilyTest, ContactTimeIsTheFirstContact) {
+  EXPECT_TRUE(
+      rc::check("ccd-time-is-first-contact/" + moving_family_name(GetParam()), [f = GetParam()] {
+        const Query q = (*gen_moving(f)).query;
+        exact::CcdOptions o;
+        o.time_bits = 40;
+        const exact::CcdContact c = exact::ccd(q, o);
+        if (!c.hit) return;  // most random motions miss
+        const double lo = c.time_lo_down, hi = c.time_hi_up;
+        RC_ASSERT(0 <= lo && lo <= hi && hi <= 1);
+        if (!c.time_exact()) RC_ASSERT(hi - lo < 0x1p-39);
+        RC_ASSERT(exact::ccd(q, {lo, hi, 0}).hit);  // it touches in there
+        if (lo > 0)                                 // and never before
+          RC_ASSERT(!exact::ccd(q, {0, std::nextafter(lo, -1.0), 0}).hit);
+      }));
+}
+
+INSTANTIATE_TEST_SUITE_P(All, MovingFamilyTest, ::testing::ValuesIn(all_moving_families()),
+                         [](const auto& info) {
+                           std::string n = moving_family_name(info.param);
+                           for (char& ch : n)
+                             if (ch == '-') ch = '_';
+                           return n;
+                         });
+
+class StaticFamilyCcd : public ::testing::TestWithParam<Family> {};
+
+TEST_P(StaticFamilyCcd, CcdEqualsStaticExactAndRobust) {
+  EXPECT_TRUE(rc::check("ccd-on-static/" + family_name(GetParam()), [f = GetParam()] {
+    const Query q = (*gen_family(f)).query;
+    const bool e = exact::point_triangle_hit(q.b0(), q.b1(), q.d(), q.e(), q.f());
+    RC_ASSERT(exact::ccd_hit(q) == e);
+    RC_ASSERT(robust_ccd(q, &exact::ccd_hit) == e);
+  }));
+}
+
+INSTANTIATE_TEST_SUITE_P(All, StaticFamilyCcd, ::testing::ValuesIn(all_families()),
+                         [](const auto& info) {
+                           std::string n = family_name(info.param);
+                           for (char& ch : n)
+                             if (ch == '-') ch = '_';
+                           return n;
+                         });
+
+}  // namespace
+}  // namespace fdh::verify
