@@ -92,9 +92,8 @@ Conditions edge_edge(const Query& q, const Interval& t) {
 
 Filtered bisect(const Query& q) {
   const auto eval = q.kind == QueryKind::VertexFace ? &vertex_face : &edge_edge;
-  constexpr int kMaxPieces = 16;  // evaluations before giving up
-  constexpr double kMinWidth = 0x1p-16;
-  Interval stack[40];
+  constexpr int kMaxPieces = 16;   // evaluations before giving up
+  Interval stack[kMaxPieces + 1];  // each piece pops one and pushes at most two
   int top = 0;
   stack[top++] = {0, 1};
   for (int pieces = 0; top > 0; ++pieces) {
@@ -110,7 +109,6 @@ Filtered bisect(const Query& q) {
       if ((f0.positive() && f1.negative()) || (f0.negative() && f1.positive()))
         return Filtered::Yes;
     }
-    if (t.hi - t.lo < kMinWidth || top + 2 > 40) return Filtered::Uncertain;
     // Not the midpoint: handcrafted contacts sit at t = 1/2, 1/4, ..., and a piece that ends on
     // a root can never show f changing sign.
     const double mid = t.lo + 0.4914 * (t.hi - t.lo);

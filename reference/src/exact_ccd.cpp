@@ -70,22 +70,42 @@ class Search {
   Search(const CcdOptions& o, bool want_time)
       : t0_(algebra::Dyadic::of(o.t0)), t1_(algebra::Dyadic::of(o.t1)), want_time_(want_time) {}
 
-  CcdContact vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec& c);
-  CcdContact edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVec& b1);
+  void vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec& c);
+  void edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVec& b1);
 
   // The earliest contact found, refined to width < 2^-bits (bits = 0: as found).
   CcdContact result(unsigned long bits);
 
  private:
-  // Records the earliest root in [t0, t1] common to `zeros` (not all zero) where `ok` holds.
+  // Records the first of `roots` (increasing) where `ok` holds.
   template <class Ok>
-  bool first_common_root(std::initializer_list<const Poly*> zeros, Ok ok) {
-    for (Root& r : common_roots(zeros))
+  bool first_where(std::vector<Root> roots, Ok ok) {
+    for (Root& r : roots)
       if (ok(r)) {
         found_.push_back(r);
         return true;
       }
     return false;
+  }
+  // Records the earliest root in [t0, t1] common to `zeros` (not all zero) where `ok` holds.
+  template <class Ok>
+  bool first_common_root(std::initializer_list<const Poly*> zeros, Ok ok) {
+    return first_where(common_roots(zeros), ok);
+  }
+  // The skeleton of both kinds, given the coplanarity polynomial f, its roots in the window
+  // (when f != 0), the contact condition at a coplanar time, and the (vertex, edge start, edge
+  // end) triples that a first contact of a coplanar-throughout motion must pass through.
+  template <class Touch>
+  void first_contact(const Poly& f, std::vector<Root> times, Touch touch,
+                     std::initializer_list<std::array<const PVec*, 3>> vertex_edge) {
+    if (!f.is_zero()) {
+      first_where(std::move(times), touch);
+      return;
+    }
+    Root start = Root::at(t0_);
+    if (touch(start)) found_at_start();
+    for (const auto& e : vertex_edge)
+      if (!done()) point_edge(*e[0], *e[1], *e[2]);
   }
   // The roots in [t0, t1] common to `zeros` (not all zero), increasing.
   std::vector<Root> common_roots(std::initializer_list<const Poly*> zeros) {
@@ -129,13 +149,10 @@ bool Search::point_edge(const PVec& p, const PVec& a, const PVec& b) {
   return point_point(p, b) || hit_a;
 }
 
-CcdContact Search::vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec& c) {
+void Search::vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec& c) {
   const Poly f = dot(a - p, cross(b - p, c - p));  // 6 x signed volume: 0 iff coplanar
-  std::vector<Root> times;
-  if (!f.is_zero()) {
-    times = common_roots({&f});
-    if (times.empty()) return result(0);  // never coplanar: the common case, decided here
-  }
+  const std::vector<Root> times = f.is_zero() ? std::vector<Root>{} : common_roots({&f});
+  if (!f.is_zero() && times.empty()) return;  // never coplanar: the common case, decided here
   const PVec n = cross(b - a, c - a);
   // At a coplanar time with n != 0, these are |n|^2 times p's barycentric coordinates.
   const Poly ga = dot(n, cross(b - p, c - p)), gb = dot(n, cross(c - p, a - p)),
@@ -145,31 +162,16 @@ CcdContact Search::vertex_face(const PVec& p, const PVec& a, const PVec& b, cons
     // A zero-area triangle is the union of its edges.
     return OnSegment(p, a, b).at(r) || OnSegment(p, b, c).at(r) || OnSegment(p, c, a).at(r);
   };
-  if (!f.is_zero()) {
-    for (Root& r : times)
-      if (inside(r)) {
-        found_.push_back(r);
-        break;
-      }
-  } else {
-    // Coplanar throughout: a first contact after the start puts p on an edge, since inside a
-    // non-degenerate triangle it would have been inside a moment earlier.
-    Root start = Root::at(t0_);
-    if (inside(start)) found_at_start();
-    for (auto [u, v] : {std::pair{&a, &b}, {&b, &c}, {&c, &a}})
-      if (!done()) point_edge(p, *u, *v);
-  }
-  return result(0);
+  // Coplanar throughout: a first contact after the start puts p on an edge, since inside a
+  // non-degenerate triangle it would have been inside a moment earlier.
+  first_contact(f, times, inside, {{&p, &a, &b}, {&p, &b, &c}, {&p, &c, &a}});
 }
 
-CcdContact Search::edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVec& b1) {
+void Search::edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVec& b1) {
   const PVec ea = a1 - a0, eb = b1 - b0, w = b0 - a0;
   const Poly f = dot(ea, cross(w, b1 - a0));
-  std::vector<Root> times;
-  if (!f.is_zero()) {
-    times = common_roots({&f});
-    if (times.empty()) return result(0);
-  }
+  const std::vector<Root> times = f.is_zero() ? std::vector<Root>{} : common_roots({&f});
+  if (!f.is_zero() && times.empty()) return;
   const PVec m = cross(ea, eb);
   // At a coplanar time with m != 0: a0 + (s/mm) ea = b0 + (u/mm) eb.
   const Poly mm = dot(m, m), s = dot(cross(w, eb), m), u = dot(cross(w, ea), m);
@@ -182,28 +184,13 @@ CcdContact Search::edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, con
     return OnSegment(a0, b0, b1).at(r) || OnSegment(a1, b0, b1).at(r) ||
            OnSegment(b0, a0, a1).at(r) || OnSegment(b1, a0, a1).at(r);
   };
-  if (!f.is_zero()) {
-    for (Root& r : times)
-      if (meet(r)) {
-        found_.push_back(r);
-        break;
-      }
-  } else {
-    // Coplanar throughout: segments that cross properly crossed a moment earlier too, so a
-    // first contact after the start puts an end of one on the other.
-    Root start = Root::at(t0_);
-    if (meet(start)) found_at_start();
-    const PVec* ends[4][3] = {{&a0, &b0, &b1}, {&a1, &b0, &b1}, {&b0, &a0, &a1}, {&b1, &a0, &a1}};
-    for (auto& e : ends)
-      if (!done()) point_edge(*e[0], *e[1], *e[2]);
-  }
-  return result(0);
+  // Coplanar throughout: segments that cross properly crossed a moment earlier too, so a first
+  // contact after the start puts an end of one on the other.
+  first_contact(f, times, meet,
+                {{&a0, &b0, &b1}, {&a1, &b0, &b1}, {&b0, &a0, &a1}, {&b1, &a0, &a1}});
 }
 
-double down(const mpq_class& q) {
-  const double d = q.get_d();  // truncates: rounds down for q >= 0
-  return d;
-}
+// Bounds as doubles, outward: get_d truncates, which rounds down for q >= 0.
 double up(const mpq_class& q) {
   const double d = q.get_d();
   return mpq_class(d) < q ? std::nextafter(d, 2.0) : d;
@@ -224,7 +211,7 @@ CcdContact Search::result(unsigned long bits) {
   }
   out.time_lo = lo.get_str();
   out.time_hi = hi.get_str();
-  out.time_lo_down = down(lo);
+  out.time_lo_down = lo.get_d();
   out.time_hi_up = up(hi);
   return out;
 }
@@ -234,10 +221,11 @@ CcdContact run(const Query& q, const CcdOptions& o, bool want_time) {
     throw std::invalid_argument("ccd: the time window must satisfy 0 <= t0 <= t1 <= 1");
   Search search(o, want_time);
   const std::array<PVec, 4> v = integer_paths(q);
-  CcdContact c = q.kind == QueryKind::VertexFace ? search.vertex_face(v[0], v[1], v[2], v[3])
-                                                 : search.edge_edge(v[0], v[1], v[2], v[3]);
-  if (want_time && c.hit && o.time_bits > 0) c = search.result(unsigned(o.time_bits));
-  return c;
+  if (q.kind == QueryKind::VertexFace)
+    search.vertex_face(v[0], v[1], v[2], v[3]);
+  else
+    search.edge_edge(v[0], v[1], v[2], v[3]);
+  return search.result(unsigned(std::max(o.time_bits, 0)));
 }
 
 }  // namespace

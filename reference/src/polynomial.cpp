@@ -138,15 +138,16 @@ double to_double(const mpz_class& a, unsigned long k) {
 void jump(Root& r) {
   const Poly& s = *r.s;
   const int d = s.degree();
-  double c[8] = {0};
-  long emax = LONG_MIN, e[8];
-  double m[8];
-  for (int i = 0; i <= d && i < 8; ++i) {
+  // s's coefficients as doubles scaled by a common power of two (tiny ones may underflow: the
+  // float bisection only has to be good, the exact check makes it safe).
+  std::vector<double> c(d + 1), m(d + 1);
+  std::vector<long> e(d + 1);
+  long emax = LONG_MIN;
+  for (int i = 0; i <= d; ++i) {
     m[i] = mpz_get_d_2exp(&e[i], s.c[i].get_mpz_t());
-    if (sgn(s.c[i]) != 0 && e[i] > emax) emax = e[i];
+    if (m[i] != 0 && e[i] > emax) emax = e[i];
   }
-  if (d >= 8) return;
-  for (int i = 0; i <= d; ++i) c[i] = sgn(s.c[i]) ? std::ldexp(m[i], int(e[i] - emax)) : 0;
+  for (int i = 0; i <= d; ++i) c[i] = m[i] != 0 ? std::ldexp(m[i], int(e[i] - emax)) : 0;
   const auto f = [&](double t) {
     double v = 0;
     for (int i = d; i >= 0; --i) v = v * t + c[i];

@@ -26,8 +26,8 @@ void check_superset(const Soup& a, const Soup& b, int leaf_size, int first_slab)
   traverse(ta, tb, found, first_slab);
   const std::set<std::pair<int, int>> got(found.begin(), found.end());
   RC_ASSERT(got.size() == found.size());  // no pair twice
-  for (const auto& pair :
-       exact::overlapping_pairs(K, primitive_corners(a.tris, a.x0, a.x1), primitive_corners(b.tris, b.x0, {})))
+  for (const auto& pair : exact::overlapping_pairs(K, primitive_corners(a.tris, a.x0, a.x1),
+                                                   primitive_corners(b.tris, b.x0, {})))
     RC_ASSERT(got.count(pair) == 1);
 }
 

@@ -8,12 +8,12 @@
 
 #include <cmath>
 
-#include "fdh/ccd/float_cubic.hpp"
 #include "fdh/ccd/robust.hpp"
 #include "fdh/exact/ccd.hpp"
 #include "fdh/exact/point_triangle.hpp"
 #include "fdh/verify/families.hpp"
 #include "fdh/verify/moving_families.hpp"
+#include "test_name.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -60,10 +60,7 @@ TEST_P(MovingFamilyTest, ContactTimeIsTheFirstContact) {
 
 INSTANTIATE_TEST_SUITE_P(All, MovingFamilyTest, ::testing::ValuesIn(all_moving_families()),
                          [](const auto& info) {
-                           std::string n = moving_family_name(info.param);
-                           for (char& ch : n)
-                             if (ch == '-') ch = '_';
-                           return n;
+                           return test_name(moving_family_name(info.param));
                          });
 
 class StaticFamilyCcd : public ::testing::TestWithParam<Family> {};
@@ -78,12 +75,7 @@ TEST_P(StaticFamilyCcd, CcdEqualsStaticExactAndRobust) {
 }
 
 INSTANTIATE_TEST_SUITE_P(All, StaticFamilyCcd, ::testing::ValuesIn(all_families()),
-                         [](const auto& info) {
-                           std::string n = family_name(info.param);
-                           for (char& ch : n)
-                             if (ch == '-') ch = '_';
-                           return n;
-                         });
+                         [](const auto& info) { return test_name(family_name(info.param)); });
 
 }  // namespace
 }  // namespace fdh::verify

@@ -8,6 +8,7 @@
 #include "fdh/exact/point_triangle.hpp"
 #include "fdh/verify/families.hpp"
 #include "fdh/verify/methods.hpp"
+#include "test_name.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -112,11 +113,8 @@ TEST_P(PaperFacts, Hold) {
 std::string claim_name(const ::testing::TestParamInfo<Claim>& info) {
   static const char* const kFacts[] = {"always_no", "always_yes", "never_misses", "no_false_alarm",
                                        "never_misses_face"};
-  std::string n = std::string(info.param.method) + "_" + family_name(info.param.family) + "_" +
-                  kFacts[int(info.param.fact)];
-  for (char& ch : n)
-    if (ch == '-') ch = '_';
-  return n;
+  return test_name(std::string(info.param.method) + "_" + family_name(info.param.family) + "_" +
+                   kFacts[int(info.param.fact)]);
 }
 
 INSTANTIATE_TEST_SUITE_P(All, PaperFacts, ::testing::ValuesIn(kClaims), claim_name);

@@ -6,6 +6,7 @@
 #include "fdh/exact/point_triangle.hpp"
 #include "fdh/point_triangle/robust.hpp"
 #include "fdh/verify/families.hpp"
+#include "test_name.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -37,12 +38,7 @@ TEST_P(PointTriangleFamily, ExactMatchesTheConstruction) {
 }
 
 INSTANTIATE_TEST_SUITE_P(All, PointTriangleFamily, ::testing::ValuesIn(all_families()),
-                         [](const auto& info) {
-                           std::string n = family_name(info.param);
-                           for (char& ch : n)
-                             if (ch == '-') ch = '_';
-                           return n;
-                         });
+                         [](const auto& info) { return test_name(family_name(info.param)); });
 
 }  // namespace
 }  // namespace fdh::verify

@@ -22,7 +22,9 @@ inline constexpr double kOrient3dErrBound = 48 * kEps;
 // The bound assumes no overflow and no underflow of consequence. With every max in
 // [2^-300, 2^300] (or 0), products stay finite, and an underflowed product (absolute error
 // <= 2^-1075) is scaled by at most one max, which is < 2^-470 of maxx maxy maxz: negligible.
-inline bool in_filter_range(double m) { return m == 0 || (m >= 0x1p-300 && m <= 0x1p300); }
+inline bool in_filter_range(double m) {
+  return m == 0 || (m >= 0x1p-300 && m <= 0x1p300);
+}
 
 // Plain comparisons (not std::fmax, which must order NaNs and is not one instruction).
 inline double max3(double a, double b, double c) {
@@ -37,8 +39,8 @@ inline int orient3d_filtered(const Vec3& a, const Vec3& b, const Vec3& c, const 
   const double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
   const double mx = max3(adx, bdx, cdx), my = max3(ady, bdy, cdy), mz = max3(adz, bdz, cdz);
   if (!(in_filter_range(mx) && in_filter_range(my) && in_filter_range(mz))) return 0;
-  const double det = adz * (bdx * cdy - cdx * bdy) + bdz * (cdx * ady - adx * cdy) +
-                     cdz * (adx * bdy - bdx * ady);
+  const double det =
+      adz * (bdx * cdy - cdx * bdy) + bdz * (cdx * ady - adx * cdy) + cdz * (adx * bdy - bdx * ady);
   // A zero max makes every term, hence det, exactly 0: uncertain, as it must be.
   const double bound = kOrient3dErrBound * (mx * my * mz);
   if (det > bound) return 1;

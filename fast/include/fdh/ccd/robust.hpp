@@ -13,7 +13,7 @@
 //    one. Every piece excluded: no. One piece certified: yes. Otherwise: uncertain.
 #pragma once
 
-#include "fdh/point_triangle/robust.hpp"
+#include "fdh/filtered.hpp"
 #include "fdh/query.hpp"
 
 namespace fdh {
@@ -23,15 +23,7 @@ Filtered robust_ccd_filter(const Query& q);
 using CcdTest = bool (*)(const Query& q);
 
 inline bool robust_ccd(const Query& q, CcdTest exact_fallback) {
-  switch (robust_ccd_filter(q)) {
-    case Filtered::No:
-      return false;
-    case Filtered::Yes:
-      return true;
-    case Filtered::Uncertain:
-      break;
-  }
-  return exact_fallback(q);
+  return or_exact(robust_ccd_filter(q), [&] { return exact_fallback(q); });
 }
 
 }  // namespace fdh

@@ -5,11 +5,10 @@
 // in (fdh::exact::point_triangle_hit from reference/ in this project).
 #pragma once
 
+#include "fdh/filtered.hpp"
 #include "fdh/vec3.hpp"
 
 namespace fdh {
-
-enum class Filtered { No, Yes, Uncertain };
 
 Filtered robust_point_triangle_filter(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
                                       const Vec3& f);
@@ -19,15 +18,8 @@ using PointTriangleTest = bool (*)(const Vec3& b0, const Vec3& b1, const Vec3& d
 
 inline bool robust_point_triangle(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
                                   const Vec3& f, PointTriangleTest exact_fallback) {
-  switch (robust_point_triangle_filter(b0, b1, d, e, f)) {
-    case Filtered::No:
-      return false;
-    case Filtered::Yes:
-      return true;
-    case Filtered::Uncertain:
-      break;
-  }
-  return exact_fallback(b0, b1, d, e, f);
+  return or_exact(robust_point_triangle_filter(b0, b1, d, e, f),
+                  [&] { return exact_fallback(b0, b1, d, e, f); });
 }
 
 }  // namespace fdh
