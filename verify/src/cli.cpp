@@ -18,6 +18,8 @@ commands:
   replay PATH...     re-run stored cases: which methods still fail where
   certify            certify the fast library against the exact reference
   report             certificate, measurements and charts in one folder
+  simulate SCENE     run a cloth scene: time per frame, accuracy and exact audit
+  table1             the paper's Table 1 on today's machine, accuracy beside speed
 
 Run 'fdhcert <command> --help' for the options of a command.
 Exit status: 0 success, 1 a check or certificate failed, 2 bad input or usage.
@@ -42,6 +44,8 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (cmd == "replay") return replay_command(rest, out, err);
     if (cmd == "certify") return certify_command(rest, out, err);
     if (cmd == "report") return report_command(rest, out, err);
+    if (cmd == "simulate") return simulate_command(rest, out, err);
+    // TABLE1
     throw UsageError("unknown command '" + cmd + "' (see fdhcert --help)");
   } catch (const UsageError& e) {
     err << "fdhcert: " << e.what() << "\n";

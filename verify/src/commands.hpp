@@ -23,6 +23,8 @@ int fuzz_command(const Args& args, std::ostream& out, std::ostream& err);
 int replay_command(const Args& args, std::ostream& out, std::ostream& err);
 int certify_command(const Args& args, std::ostream& out, std::ostream& err);
 int report_command(const Args& args, std::ostream& out, std::ostream& err);
+int simulate_command(const Args& args, std::ostream& out, std::ostream& err);
+int table1_command(const Args& args, std::ostream& out, std::ostream& err);
 
 // Walks the arguments: options with values, flags, and positional words.
 class ArgReader {

@@ -1,0 +1,81 @@
+// One cloth among still obstacles, stepped frame by frame. Each frame (one step of Δt):
+//   1. springs and integration: eqs. (1)–(3) give every particle's end of step;
+//   2. refit: the cloth's FDH tree over the particles, leaves swept from start to end (§2);
+//   3. traversal: the cloth tree against the obstacles' tree (§3, y slab first as in §3.1);
+//   4. narrow phase: the chosen point–triangle test on every candidate pair (§3.2);
+//   5. response: for each hit, eqs. (4)–(5) on the velocity, and the particle put back on the
+//      surface it crossed (a hair outside it, so that the next step starts outside).
+// The obstacles collide through a skin: each is grown by the scene's thickness.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "fdh/cloth/cloth.hpp"
+#include "fdh/cloth/scene.hpp"
+#include "fdh/vec3.hpp"
+
+namespace fdh::cloth {
+
+// A point–triangle test: does the particle moving from b0 to b1 touch the still triangle def?
+using NarrowPhase = bool (*)(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
+                             const Vec3& f);
+
+// How far outside the crossed plane a particle is put back: 2^-30 m, far above the rounding of
+// the projection (a few ulps of the coordinates) for scenes within 1 km of the origin.
+inline constexpr double kSurfaceGap = 9.313225746154785e-10;
+
+struct FrameTimes {  // seconds
+  double springs = 0, refit = 0, traversal = 0, narrow = 0, response = 0;
+  double collision() const { return refit + traversal + narrow + response; }
+  double total() const { return springs + collision(); }
+  FrameTimes& operator+=(const FrameTimes& o);
+};
+
+struct NarrowQuery {
+  int particle, triangle;
+  bool hit;
+};
+
+class Simulation {
+ public:
+  // k: the FDH's k (6, 14, 18 or 26). dt <= 0 takes the scene's.
+  Simulation(const Scene& scene, NarrowPhase narrow, int k = 18, double dt = 0);
+  ~Simulation();
+
+  void step();
+
+  const Scene& scene() const { return scene_; }
+  const Cloth& cloth() const { return cloth_; }
+  double dt() const { return dt_; }
+  // The obstacles grown by the skin: what the narrow phase tests against.
+  const TriMesh& collision_mesh() const { return mesh_; }
+
+  // The last frame: its times, and its narrow-phase queries. Query q moved particle
+  // q.particle from step_start() to step_end() against triangle q.triangle of collision_mesh().
+  const FrameTimes& times() const { return times_; }
+  const std::vector<NarrowQuery>& queries() const { return queries_; }
+  int collisions() const { return collisions_; }
+  const std::vector<Vec3>& step_start() const { return x0_; }
+  const std::vector<Vec3>& step_end() const { return x1_; }
+
+ private:
+  struct BroadPhase;
+  template <int K>
+  struct BroadPhaseK;
+
+  Scene scene_;
+  Cloth cloth_;
+  NarrowPhase narrow_;
+  double dt_;
+  TriMesh mesh_;
+  std::vector<Vec3> normals_;
+  std::unique_ptr<BroadPhase> broad_;
+  std::vector<Vec3> x0_, x1_;
+  std::vector<std::pair<int, int>> pairs_;
+  std::vector<NarrowQuery> queries_;
+  int collisions_ = 0;
+  FrameTimes times_;
+};
+
+}  // namespace fdh::cloth

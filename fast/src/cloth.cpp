@@ -1,0 +1,95 @@
+#include "fdh/cloth/cloth.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace fdh::cloth {
+
+Cloth::Cloth(const ClothSpec& spec) : grid_(spec.grid), spec_(spec) {
+  if (grid_ < 2) throw std::invalid_argument("a cloth needs at least 2×2 particles");
+  const int n = grid_ * grid_;
+  m_ = spec.mass / n;
+  spacing_ = spec.size / (grid_ - 1);
+  x_.resize(n);
+  v_.assign(n, Vec3{});
+  f_.assign(n, Vec3{});
+  pinned_.assign(n, 0);
+  k_sum_.assign(n, 0);
+  for (int r = 0; r < grid_; ++r)
+    for (int c = 0; c < grid_; ++c)
+      x_[index(r, c)] = spec.centre + Vec3{(c - (grid_ - 1) / 2.0) * spacing_, 0,
+                                           (r - (grid_ - 1) / 2.0) * spacing_};
+  for (const auto& uv : spec.pins) {
+    const int c = int(std::lround(std::clamp(uv[0], 0.0, 1.0) * (grid_ - 1)));
+    const int r = int(std::lround(std::clamp(uv[1], 0.0, 1.0) * (grid_ - 1)));
+    pinned_[index(r, c)] = 1;
+  }
+  for (int r = 0; r < grid_; ++r)
+    for (int c = 0; c < grid_; ++c) {
+      const int i = index(r, c);
+      if (c + 1 < grid_) add_spring(i, index(r, c + 1), spec.k_structural);
+      if (r + 1 < grid_) add_spring(i, index(r + 1, c), spec.k_structural);
+      if (r + 1 < grid_ && c + 1 < grid_) {
+        add_spring(i, index(r + 1, c + 1), spec.k_shear);
+        add_spring(index(r, c + 1), index(r + 1, c), spec.k_shear);
+        // (r, c) (r+1, c) (r+1, c+1) and (r, c) (r+1, c+1) (r, c+1): normals +y at rest.
+        tris_.push_back({i, index(r + 1, c), index(r + 1, c + 1)});
+        tris_.push_back({i, index(r + 1, c + 1), index(r, c + 1)});
+        edges_.push_back({i, index(r + 1, c + 1)});
+      }
+      if (c + 2 < grid_) add_spring(i, index(r, c + 2), spec.k_bend);
+      if (r + 2 < grid_) add_spring(i, index(r + 2, c), spec.k_bend);
+      if (c + 1 < grid_) edges_.push_back({i, index(r, c + 1)});
+      if (r + 1 < grid_) edges_.push_back({i, index(r + 1, c)});
+    }
+}
+
+void Cloth::add_spring(int i, int j, double k) {
+  if (k <= 0) return;
+  springs_.push_back({i, j, norm(x_[j] - x_[i]), k});
+  k_sum_[i] += k;
+  k_sum_[j] += k;
+}
+
+void Cloth::integrate(double dt, std::vector<Vec3>& x_next) {
+  const int n = this->n();
+  // Gravity and air: F = m·g - c·m·(v - wind).
+  for (int i = 0; i < n; ++i) f_[i] = m_ * spec_.gravity - (spec_.damping * m_) * (v_[i] - spec_.wind);
+  for (const Spring& s : springs_) {  // Hooke: k·(|d| - rest)·d/|d|
+    const Vec3 d = x_[s.j] - x_[s.i];
+    const double len = norm(d);
+    if (len == 0) continue;  // no direction to push along
+    const Vec3 f = (s.k * (len - s.rest) / len) * d;
+    f_[s.i] += f;
+    f_[s.j] -= f;
+  }
+  x_next.resize(n);
+  const double h = dt / m_;  // Δt·a = Δt·F/m, eqs. (1)–(2)
+  for (int i = 0; i < n; ++i) {
+    if (pinned_[i]) {
+      v_[i] = Vec3{};
+      x_next[i] = x_[i];
+      continue;
+    }
+    v_[i] += h * f_[i];
+    x_next[i] = x_[i] + dt * v_[i];  // eq. (3), with the new velocity
+  }
+}
+
+double Cloth::energy() const {
+  double e = 0;
+  for (int i = 0; i < n(); ++i) e += m_ * (0.5 * dot(v_[i], v_[i]) - dot(spec_.gravity, x_[i]));
+  for (const Spring& s : springs_) {
+    const double stretch = norm(x_[s.j] - x_[s.i]) - s.rest;
+    e += 0.5 * s.k * stretch * stretch;
+  }
+  return e;
+}
+
+double Cloth::stable_dt() const {
+  const double k = *std::max_element(k_sum_.begin(), k_sum_.end());
+  return k > 0 ? std::sqrt(2 * m_ / k) : INFINITY;
+}
+
+}  // namespace fdh::cloth

@@ -1,0 +1,109 @@
+#include "fdh/cloth/simulation.hpp"
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+#include "fdh/bvh.hpp"
+
+namespace fdh::cloth {
+
+FrameTimes& FrameTimes::operator+=(const FrameTimes& o) {
+  springs += o.springs, refit += o.refit, traversal += o.traversal;
+  narrow += o.narrow, response += o.response;
+  return *this;
+}
+
+// The trees behind a run-time k.
+struct Simulation::BroadPhase {
+  virtual ~BroadPhase() = default;
+  virtual void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) = 0;
+  virtual void pairs(std::vector<std::pair<int, int>>& out) const = 0;
+};
+
+template <int K>
+struct Simulation::BroadPhaseK : Simulation::BroadPhase {
+  Bvh<K> cloth, obstacles;
+  BroadPhaseK(const std::vector<Vec3>& x, const TriMesh& mesh)
+      : cloth(points(int(x.size())), x), obstacles(mesh.tris, mesh.x) {}
+  static std::vector<Tri> points(int n) {
+    std::vector<Tri> t(n);
+    for (int i = 0; i < n; ++i) t[i] = {i, i, i};
+    return t;
+  }
+  void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) override {
+    cloth.refit(x0, x1);
+  }
+  void pairs(std::vector<std::pair<int, int>>& out) const override {
+    traverse(cloth, obstacles, out, /*first_slab=*/1);  // §3.1: the y slab first
+  }
+};
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point& t) {
+  const auto now = Clock::now();
+  const double s = std::chrono::duration<double>(now - t).count();
+  t = now;
+  return s;
+}
+
+}  // namespace
+
+Simulation::Simulation(const Scene& scene, NarrowPhase narrow, int k, double dt)
+    : scene_(scene), cloth_(scene.cloth), narrow_(narrow), dt_(dt > 0 ? dt : scene.dt) {
+  if (!narrow_) throw std::invalid_argument("no narrow-phase test");
+  for (const Obstacle& o : scene.obstacles) mesh_.append(obstacle_mesh(o, scene.skin()));
+  for (int t = 0; t < int(mesh_.tris.size()); ++t) normals_.push_back(unit_normal(mesh_, t));
+  switch (k) {
+    case 6: broad_ = std::make_unique<BroadPhaseK<6>>(cloth_.x(), mesh_); break;
+    case 14: broad_ = std::make_unique<BroadPhaseK<14>>(cloth_.x(), mesh_); break;
+    case 18: broad_ = std::make_unique<BroadPhaseK<18>>(cloth_.x(), mesh_); break;
+    case 26: broad_ = std::make_unique<BroadPhaseK<26>>(cloth_.x(), mesh_); break;
+    default: throw std::invalid_argument("k must be 6, 14, 18 or 26, not " + std::to_string(k));
+  }
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::step() {
+  auto clock = Clock::now();
+  x0_ = cloth_.x();
+  cloth_.integrate(dt_, x1_);
+  times_.springs = seconds_since(clock);
+
+  broad_->refit(x0_, x1_);
+  times_.refit = seconds_since(clock);
+
+  pairs_.clear();
+  broad_->pairs(pairs_);
+  times_.traversal = seconds_since(clock);
+
+  queries_.clear();
+  const auto& tris = mesh_.tris;
+  for (const auto& [p, t] : pairs_) {
+    const Tri& tri = tris[t];
+    const bool hit = narrow_(x0_[p], x1_[p], mesh_.x[tri[0]], mesh_.x[tri[1]], mesh_.x[tri[2]]);
+    queries_.push_back({p, t, hit});
+  }
+  times_.narrow = seconds_since(clock);
+
+  // Response in query order: after the first hit a particle lies outside that plane, so a
+  // second hit on the same flat face changes nothing.
+  std::vector<Vec3>& x = cloth_.x();
+  std::vector<Vec3>& v = cloth_.v();
+  x = x1_;
+  collisions_ = 0;
+  for (const NarrowQuery& q : queries_) {
+    if (!q.hit || cloth_.pinned(q.particle)) continue;
+    ++collisions_;
+    const Vec3& n = normals_[q.triangle];
+    const double s = dot(x[q.particle] - mesh_.x[tris[q.triangle][0]], n);
+    if (s < kSurfaceGap) x[q.particle] += (kSurfaceGap - s) * n;
+    v[q.particle] = respond(v[q.particle], n, scene_.response);
+  }
+  times_.response = seconds_since(clock);
+}
+
+}  // namespace fdh::cloth

@@ -1,0 +1,42 @@
+// The exact audit of a cloth frame against its obstacles (CGAL, exact predicates on exactly the
+// given doubles):
+// - inside: cloth particles strictly inside a closed obstacle mesh (touching the surface is not
+//   inside);
+// - crossing: cloth edges that pass through an obstacle triangle, their ends strictly on
+//   opposite sides of its plane (an edge that only touches the surface is not crossing).
+// A correct collision pass keeps both at 0.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "fdh/cloth/mesh.hpp"
+#include "fdh/vec3.hpp"
+
+namespace fdh::exact {
+
+struct AuditCounts {
+  long inside = 0, crossing = 0;
+  AuditCounts& operator+=(const AuditCounts& o) {
+    inside += o.inside, crossing += o.crossing;
+    return *this;
+  }
+};
+
+class Audit {
+ public:
+  // Each obstacle must be a closed mesh; otherwise std::invalid_argument.
+  explicit Audit(const std::vector<cloth::TriMesh>& obstacles);
+  ~Audit();
+  Audit(const Audit&) = delete;
+  Audit& operator=(const Audit&) = delete;
+
+  AuditCounts count(const std::vector<Vec3>& x, const std::vector<std::array<int, 2>>& edges) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fdh::exact

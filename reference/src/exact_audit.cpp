@@ -1,0 +1,93 @@
+#include "fdh/exact/audit.hpp"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <deque>
+#include <stdexcept>
+#include <string>
+
+namespace fdh::exact {
+namespace {
+
+// Epick: predicates are exact (filtered, then exact arithmetic), and the audit only uses
+// predicates on the input doubles: point location by ray parity, box tests, orientations.
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Triangles = std::vector<K::Triangle_3>;
+using Primitive = CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+
+Point point(const Vec3& p) {
+  return Point(p.x, p.y, p.z);
+}
+
+}  // namespace
+
+struct Audit::Impl {
+  std::deque<Mesh> meshes;  // Side_of_triangle_mesh keeps a reference: stable addresses
+  std::deque<CGAL::Side_of_triangle_mesh<Mesh, K>> inside;
+  Triangles triangles;
+  Tree tree;
+  CGAL::Bbox_3 box;
+};
+
+Audit::Audit(const std::vector<cloth::TriMesh>& obstacles) : impl_(std::make_unique<Impl>()) {
+  for (std::size_t o = 0; o < obstacles.size(); ++o) {
+    const cloth::TriMesh& m = obstacles[o];
+    Mesh& sm = impl_->meshes.emplace_back();
+    std::vector<Mesh::Vertex_index> v;
+    for (const Vec3& p : m.x) v.push_back(sm.add_vertex(point(p)));
+    bool ok = true;
+    for (const Tri& t : m.tris) {
+      ok = ok && sm.add_face(v[t[0]], v[t[1]], v[t[2]]) != Mesh::null_face();
+      impl_->triangles.emplace_back(point(m.x[t[0]]), point(m.x[t[1]]), point(m.x[t[2]]));
+    }
+    if (!ok || !CGAL::is_closed(sm))
+      throw std::invalid_argument("obstacle " + std::to_string(o + 1) +
+                                  " is not a closed manifold mesh");
+    impl_->inside.emplace_back(sm);
+  }
+  impl_->tree.rebuild(impl_->triangles.begin(), impl_->triangles.end());
+  for (const auto& t : impl_->triangles) impl_->box += t.bbox();
+}
+
+Audit::~Audit() = default;
+
+AuditCounts Audit::count(const std::vector<Vec3>& x,
+                         const std::vector<std::array<int, 2>>& edges) const {
+  AuditCounts c;
+  if (impl_->triangles.empty()) return c;
+  for (const Vec3& p : x) {
+    const Point q = point(p);
+    for (const auto& side : impl_->inside)
+      if (side(q) == CGAL::ON_BOUNDED_SIDE) {
+        ++c.inside;
+        break;
+      }
+  }
+  std::vector<Primitive::Id> hits;
+  for (const auto& [i, j] : edges) {
+    const K::Segment_3 s(point(x[i]), point(x[j]));
+    if (!CGAL::do_overlap(s.bbox(), impl_->box)) continue;
+    hits.clear();
+    impl_->tree.all_intersected_primitives(s, std::back_inserter(hits));
+    for (const auto& t : hits) {
+      const CGAL::Orientation a = CGAL::orientation(t->vertex(0), t->vertex(1), t->vertex(2), s.source());
+      const CGAL::Orientation b = CGAL::orientation(t->vertex(0), t->vertex(1), t->vertex(2), s.target());
+      if (a != CGAL::COPLANAR && b != CGAL::COPLANAR && a != b) {  // met, ends strictly apart
+        ++c.crossing;
+        break;
+      }
+    }
+  }
+  return c;
+}
+
+}  // namespace fdh::exact

@@ -1,0 +1,90 @@
+#include "fdh/verify/scene_run.hpp"
+
+#include <stdexcept>
+
+#include "fdh/exact/point_triangle.hpp"
+#include "fdh/point_triangle/linear_system.hpp"
+#include "fdh/point_triangle/paper.hpp"
+#include "fdh/point_triangle/robust.hpp"
+
+namespace fdh::verify {
+namespace {
+
+bool robust_with_exact(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
+                       const Vec3& f) {
+  return robust_point_triangle(b0, b1, d, e, f, &exact::point_triangle_hit);
+}
+
+const std::vector<std::pair<std::string, cloth::NarrowPhase>>& table() {
+  static const std::vector<std::pair<std::string, cloth::NarrowPhase>> t = {
+      {"robust", &robust_with_exact},
+      {"exact", &exact::point_triangle_hit},
+      {"paper-intended", &paper_intended},
+      {"paper-literal", &paper_literal},
+      {"linear-system", &linear_system},
+  };
+  return t;
+}
+
+}  // namespace
+
+const std::vector<std::string>& narrow_phase_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& [name, f] : table()) n.push_back(name);
+    return n;
+  }();
+  return names;
+}
+
+cloth::NarrowPhase narrow_phase_named(const std::string& name) {
+  for (const auto& [n, f] : table())
+    if (n == name) return f;
+  std::string all;
+  for (const auto& n : narrow_phase_names()) all += (all.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown narrow phase '" + name + "' (one of: " + all + ")");
+}
+
+SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
+  SceneRun r;
+  const cloth::Cloth probe(scene.cloth);
+  r.grid = scene.cloth.grid;
+  r.particles = probe.n();
+  r.stable_dt = probe.stable_dt();
+  r.dt = scene.dt;
+  if (r.dt > r.stable_dt) r.dt = 0.9 * r.stable_dt, r.dt_reduced = true;
+  r.skin = scene.skin();
+  r.frames = opt.frames >= 0 ? opt.frames : scene.frames;
+
+  cloth::Simulation sim(scene, narrow_phase_named(opt.narrow), opt.k, r.dt);
+  std::vector<cloth::TriMesh> obstacles;
+  for (const auto& o : scene.obstacles) obstacles.push_back(cloth::obstacle_mesh(o));
+  const exact::Audit audit(obstacles);
+  const auto& mesh = sim.collision_mesh();
+  r.energy_start = sim.cloth().energy();
+  for (int f = 1; f <= r.frames; ++f) {
+    sim.step();
+    r.time += sim.times();
+    r.candidates += long(sim.queries().size());
+    r.collisions += sim.collisions();
+    if (opt.check) {
+      for (const auto& q : sim.queries()) {
+        const Tri& t = mesh.tris[q.triangle];
+        const bool truth =
+            exact::point_triangle_hit(sim.step_start()[q.particle], sim.step_end()[q.particle],
+                                      mesh.x[t[0]], mesh.x[t[1]], mesh.x[t[2]]);
+        r.fp += q.hit && !truth;
+        r.fn += !q.hit && truth;
+      }
+      const exact::AuditCounts c = audit.count(sim.cloth().x(), sim.cloth().edges());
+      r.audit += c;
+      r.audit_last_inside = c.inside, r.audit_last_crossing = c.crossing;
+    }
+    if (opt.on_frame) opt.on_frame(sim, f);
+  }
+  r.energy_end = sim.cloth().energy();
+  r.final_x = sim.cloth().x();
+  return r;
+}
+
+}  // namespace fdh::verify
