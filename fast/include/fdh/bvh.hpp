@@ -41,17 +41,28 @@ class Bvh {
     for (std::size_t i = 0; i < prims_.size(); ++i) prims_[i] = int(i);
     // Each primitive's box once; a node's box is the exact merge of its primitives' boxes.
     std::vector<Kdop<K>> boxes(tris_.size());
-    for (std::size_t i = 0; i < tris_.size(); ++i) boxes[i] = prim_box(int(i), x0, x1);
+    const double w = widening(x0, x1);
+    for (std::size_t i = 0; i < tris_.size(); ++i) range_box(boxes[prims_[i]], int(i), int(i) + 1, x0, x1, w);
     if (!tris_.empty()) build(0, int(tris_.size()), boxes, x0, x1);
   }
 
   // New positions, same topology: leaves recomputed, internal nodes merged bottom up (children
   // always follow their parent in nodes()).
   void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1 = {}) {
+    const double w = widening(x0, x1);
     for (int i = int(nodes_.size()) - 1; i >= 0; --i) {
       Node& n = nodes_[i];
-      n.box = n.leaf() ? range_box(n.first, n.first + n.count, x0, x1)
-                       : merge(nodes_[n.left].box, nodes_[n.right].box);
+      if (n.leaf()) {
+        range_box(n.box, n.first, n.first + n.count, x0, x1, w);
+        continue;
+      }
+      // In place: a Kdop returned by value costs more in copies than the merge itself.
+      const Kdop<K>& l = nodes_[n.left].box;
+      const Kdop<K>& r = nodes_[n.right].box;
+      for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
+        n.box.lo[s] = l.lo[s] < r.lo[s] ? l.lo[s] : r.lo[s];
+        n.box.hi[s] = l.hi[s] > r.hi[s] ? l.hi[s] : r.hi[s];
+      }
     }
   }
 
@@ -61,20 +72,37 @@ class Bvh {
   const std::vector<Tri>& tris() const { return tris_; }
 
  private:
-  Kdop<K> prim_box(int prim, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) const {
-    KdopBuilder<K> b;
-    for (const int v : tris_[prim]) {
-      b.add(x0[v]);
-      if (!x1.empty()) b.add(x1[v]);
-    }
-    return b.finish();
+  // One widening for every box of a build or refit: kdop.hpp's bound for the largest
+  // coordinate of all the points covers each box's own (a larger mag only widens more), and
+  // costs one pass instead of one per box.
+  static double widening(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+    double mag = 0;
+    for (const Vec3& p : x0) mag = std::max(mag, max_abs(p));
+    for (const Vec3& p : x1) mag = std::max(mag, max_abs(p));
+    return widening_of(mag);
   }
 
-  Kdop<K> range_box(int first, int last, const std::vector<Vec3>& x0,
-                    const std::vector<Vec3>& x1) const {
-    Kdop<K> b = prim_box(prims_[first], x0, x1);
-    for (int i = first + 1; i < last; ++i) b = merge(b, prim_box(prims_[i], x0, x1));
-    return b;
+  // The box of primitives prims_[first, last): their distinct vertices at x0 (and x1), the
+  // diagonal slabs pushed out by w. Written in place into b (see add_point).
+  void range_box(Kdop<K>& b, int first, int last, const std::vector<Vec3>& x0,
+                 const std::vector<Vec3>& x1, double w) const {
+    bool started = false;
+    const auto add = [&](const Vec3& p) {
+      if (started) {
+        add_point(b, p, w);
+      } else {
+        set_point(b, p, w);
+        started = true;
+      }
+    };
+    for (int i = first; i < last; ++i) {
+      const Tri& t = tris_[prims_[i]];
+      for (int c = 0; c < 3; ++c) {
+        if ((c > 0 && t[c] == t[c - 1]) || (c == 2 && t[2] == t[0])) continue;  // points, edges
+        add(x0[t[c]]);
+        if (!x1.empty()) add(x1[t[c]]);
+      }
+    }
   }
 
   int build(int first, int last, const std::vector<Kdop<K>>& boxes, const std::vector<Vec3>& x0,
@@ -122,9 +150,15 @@ class Bvh {
 
 // TraverseTree(A, B) of §3: every pair (a, b) of primitives of A and B whose leaf k-DOPs
 // overlap, in (A, B) order, appended to `out`. The printed pseudo-code recurses as
-// TraverseTree(Cb, A), swapping its arguments; what it means, and what this does, is: descend
-// A while A's node is internal, then descend B, and keep each pair's roles. With
-// first_slab >= 0 every box test checks that slab first (§3.1's early-out).
+// TraverseTree(Cb, A), swapping its arguments so that both trees are descended in turn; this
+// descends the node with the larger box (by its x, y and z widths), so a small cloth patch
+// is not tested against every level of a large obstacle one leaf at a time, and keeps each
+// pair's roles. With first_slab >= 0 every box test checks that slab first (§3.1's early-out).
+template <int K>
+double size(const Kdop<K>& b) {  // slabs 0-2 are the axes for every k
+  return (b.hi[0] - b.lo[0]) + (b.hi[1] - b.lo[1]) + (b.hi[2] - b.lo[2]);
+}
+
 template <int K>
 void traverse(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, int>>& out,
               int first_slab = -1) {
@@ -139,7 +173,7 @@ void traverse(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, int>>
     const auto& na = a.nodes()[i];
     const auto& nb = b.nodes()[j];
     if (!overlaps(na.box, nb.box)) continue;
-    if (!na.leaf()) {
+    if (!na.leaf() && (nb.leaf() || size(na.box) >= size(nb.box))) {
       stack.push_back({na.right, j});
       stack.push_back({na.left, j});
     } else if (!nb.leaf()) {

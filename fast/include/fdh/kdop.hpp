@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "fdh/vec3.hpp"
 
@@ -91,6 +92,48 @@ struct Kdop {
   }
 };
 
+// All 13 projections of p, in kDirections' order, each rounded exactly as project() rounds it
+// ((x ± y) ± z; a zero term adds nothing), sharing the common sums. The hot loop of every
+// refit.
+inline std::array<double, 13> projections(const Vec3& p) {
+  const double xpy = p.x + p.y, xmy = p.x - p.y;
+  return {p.x,     p.y,       p.z,       xpy + p.z, xpy - p.z, xmy + p.z, xmy - p.z,
+          xpy,     xmy,       p.x + p.z, p.x - p.z, p.y + p.z, p.y - p.z};
+}
+
+// Grows b to hold p's projections, the diagonal slabs pushed out by w (axis slabs are exact).
+// min(v) - w and min(v - w) round alike (rounding is monotonic), so widening each point equals
+// widening the box once, and keeps every slab in registers: the hot loop of every refit.
+// Unrolled over the slabs at compile time.
+template <int K, std::size_t... S>
+inline void add_point_slabs(Kdop<K>& b, const std::array<double, 13>& v, double w,
+                            std::index_sequence<S...>) {
+  ((b.lo[S] = std::min(b.lo[S], Kdop<K>::is_exact_slab(S) ? v[Kdop<K>::kDirIndex[S]]
+                                                           : v[Kdop<K>::kDirIndex[S]] - w),
+    b.hi[S] = std::max(b.hi[S], Kdop<K>::is_exact_slab(S) ? v[Kdop<K>::kDirIndex[S]]
+                                                           : v[Kdop<K>::kDirIndex[S]] + w)),
+   ...);
+}
+
+template <int K>
+inline void add_point(Kdop<K>& b, const Vec3& p, double w) {
+  add_point_slabs(b, projections(p), w, std::make_index_sequence<Kdop<K>::kSlabs>{});
+}
+
+// Sets b to the box of the single point p, pushed out likewise.
+template <int K, std::size_t... S>
+inline void set_point_slabs(Kdop<K>& b, const std::array<double, 13>& v, double w,
+                            std::index_sequence<S...>) {
+  ((b.lo[S] = Kdop<K>::is_exact_slab(S) ? v[Kdop<K>::kDirIndex[S]] : v[Kdop<K>::kDirIndex[S]] - w,
+    b.hi[S] = Kdop<K>::is_exact_slab(S) ? v[Kdop<K>::kDirIndex[S]] : v[Kdop<K>::kDirIndex[S]] + w),
+   ...);
+}
+
+template <int K>
+inline void set_point(Kdop<K>& b, const Vec3& p, double w) {
+  set_point_slabs(b, projections(p), w, std::make_index_sequence<Kdop<K>::kSlabs>{});
+}
+
 // Accumulates points, then widens the diagonal slabs once (not once per point).
 // Precondition: every coordinate is finite with magnitude <= 2^1020.
 template <int K>
@@ -98,11 +141,7 @@ class KdopBuilder {
  public:
   void add(const Vec3& p) {
     mag_ = std::max(mag_, max_abs(p));
-    for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
-      const double v = project(Kdop<K>::direction(s), p);
-      box_.lo[s] = std::min(box_.lo[s], v);
-      box_.hi[s] = std::max(box_.hi[s], v);
-    }
+    add_point(box_, p, 0.0);
   }
   Kdop<K> finish() const {
     Kdop<K> b = box_;
