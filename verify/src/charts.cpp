@@ -90,4 +90,35 @@ void draw_charts(const std::string& dir) {
   if (status != 0) throw std::runtime_error("gnuplot failed (is Debian's gnuplot-nox installed?)");
 }
 
+namespace {
+
+const char* const kTable1Script = R"GP(
+set datafile separator ','
+set grid
+set terminal %TERM% size 900,600
+set output 'table1.%EXT%'
+set title "Table 1: ms per frame, cloth on a table (fdhcert table1)\nthe paper's rows on a 2.8 GHz Pentium IV; ours on this machine"
+set xlabel 'particles'
+set ylabel 'ms per frame (log)'
+set logscale y
+set key outside right top
+series = "linear-system~k=18 paper-intended~k=18 robust~k=6 robust~k=14 robust~k=18 robust~k=26 paper:~traditional paper:~this~paper"
+name(s) = system(sprintf("echo '%s' | tr '~' ' '", s))
+plot for [s in series] 'data/table1.csv' skip 1 using (strcol(1) eq name(s) ? $4 : NaN):5 with linespoints lw 2 pt 7 title name(s)
+)GP";
+
+}  // namespace
+
+void draw_table1_chart(const std::string& dir) {
+  std::string script = "cd '" + dir + "'\n";
+  for (const auto& [term, ext] :
+       {std::pair<std::string, std::string>{"pngcairo", "png"}, {"svg dynamic", "svg"}})
+    script += substitute(substitute(kTable1Script, "%TERM%", term), "%EXT%", ext);
+  std::FILE* gp = ::popen("gnuplot 2>&1", "w");
+  if (!gp) throw std::runtime_error("cannot run gnuplot (Debian package gnuplot-nox)");
+  std::fputs(script.c_str(), gp);
+  const int status = ::pclose(gp);
+  if (status != 0) throw std::runtime_error("gnuplot failed (is Debian's gnuplot-nox installed?)");
+}
+
 }  // namespace fdh::verify

@@ -45,7 +45,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (cmd == "certify") return certify_command(rest, out, err);
     if (cmd == "report") return report_command(rest, out, err);
     if (cmd == "simulate") return simulate_command(rest, out, err);
-    // TABLE1
+    if (cmd == "table1") return table1_command(rest, out, err);
     throw UsageError("unknown command '" + cmd + "' (see fdhcert --help)");
   } catch (const UsageError& e) {
     err << "fdhcert: " << e.what() << "\n";

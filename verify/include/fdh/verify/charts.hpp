@@ -9,4 +9,7 @@ namespace fdh::verify {
 // Throws std::runtime_error when gnuplot is missing or fails.
 void draw_charts(const std::string& dir);
 
+// <dir>/table1.png and .svg from <dir>/data/table1.csv (fdhcert table1 --out).
+void draw_table1_chart(const std::string& dir);
+
 }  // namespace fdh::verify
