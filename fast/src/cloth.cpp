@@ -55,7 +55,8 @@ void Cloth::add_spring(int i, int j, double k) {
 void Cloth::integrate(double dt, std::vector<Vec3>& x_next) {
   const int n = this->n();
   // Gravity and air: F = m·g - c·m·(v - wind).
-  for (int i = 0; i < n; ++i) f_[i] = m_ * spec_.gravity - (spec_.damping * m_) * (v_[i] - spec_.wind);
+  for (int i = 0; i < n; ++i)
+    f_[i] = m_ * spec_.gravity - (spec_.damping * m_) * (v_[i] - spec_.wind);
   for (const Spring& s : springs_) {  // Hooke: k·(|d| - rest)·d/|d|
     const Vec3 d = x_[s.j] - x_[s.i];
     const double len = norm(d);

@@ -29,9 +29,9 @@ TriMesh box_mesh(const Vec3& lo, const Vec3& hi) {
 
 TriMesh sphere_mesh(const Vec3& centre, double r, int level) {
   const double g = (1 + std::sqrt(5.0)) / 2;  // the golden ratio: icosahedron corners
-  std::vector<Vec3> unit = {{-1, g, 0}, {1, g, 0},  {-1, -g, 0}, {1, -g, 0},
-                            {0, -1, g}, {0, 1, g},  {0, -1, -g}, {0, 1, -g},
-                            {g, 0, -1}, {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+  std::vector<Vec3> unit = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0},
+                            {0, -1, g}, {0, 1, g}, {0, -1, -g}, {0, 1, -g},
+                            {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
   const auto normalize = [](const Vec3& p) { return (1 / norm(p)) * p; };
   for (Vec3& p : unit) p = normalize(p);
   std::vector<Tri> tris = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},

@@ -79,8 +79,10 @@ AuditCounts Audit::count(const std::vector<Vec3>& x,
     hits.clear();
     impl_->tree.all_intersected_primitives(s, std::back_inserter(hits));
     for (const auto& t : hits) {
-      const CGAL::Orientation a = CGAL::orientation(t->vertex(0), t->vertex(1), t->vertex(2), s.source());
-      const CGAL::Orientation b = CGAL::orientation(t->vertex(0), t->vertex(1), t->vertex(2), s.target());
+      const CGAL::Orientation a =
+          CGAL::orientation(t->vertex(0), t->vertex(1), t->vertex(2), s.source());
+      const CGAL::Orientation b =
+          CGAL::orientation(t->vertex(0), t->vertex(1), t->vertex(2), s.target());
       if (a != CGAL::COPLANAR && b != CGAL::COPLANAR && a != b) {  // met, ends strictly apart
         ++c.crossing;
         break;

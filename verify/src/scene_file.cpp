@@ -52,8 +52,8 @@ class Line {
   long integer(std::size_t i, long lo, long hi) const {
     const double v = number(i);
     if (v != std::floor(v) || v < lo || v > hi)
-      fail(key_ + " must be a whole number in [" + std::to_string(lo) + ", " +
-           std::to_string(hi) + "], not " + words_[i]);
+      fail(key_ + " must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+           "], not " + words_[i]);
     return long(v);
   }
   Vec3 vec(std::size_t i) const { return {number(i), number(i + 1), number(i + 2)}; }
@@ -76,10 +76,13 @@ using Reader = std::function<void(const Line&, Scene&)>;
 const std::map<std::string, Reader>& readers() {
   static const std::map<std::string, Reader> r = {
       {"name", [](const Line& l, Scene& s) { l.expect(1, 1), s.name = l.word(0); }},
-      {"grid", [](const Line& l, Scene& s) { l.expect(1, 1), s.cloth.grid = int(l.integer(0, 2, 4000)); }},
-      {"size", [](const Line& l, Scene& s) { l.expect(1, 1), s.cloth.size = l.at_least(0, 0, true); }},
+      {"grid",
+       [](const Line& l, Scene& s) { l.expect(1, 1), s.cloth.grid = int(l.integer(0, 2, 4000)); }},
+      {"size",
+       [](const Line& l, Scene& s) { l.expect(1, 1), s.cloth.size = l.at_least(0, 0, true); }},
       {"centre", [](const Line& l, Scene& s) { l.expect(3, 3), s.cloth.centre = l.vec(0); }},
-      {"mass", [](const Line& l, Scene& s) { l.expect(1, 1), s.cloth.mass = l.at_least(0, 0, true); }},
+      {"mass",
+       [](const Line& l, Scene& s) { l.expect(1, 1), s.cloth.mass = l.at_least(0, 0, true); }},
       {"stiffness",
        [](const Line& l, Scene& s) {
          l.expect(3, 3);
@@ -87,7 +90,8 @@ const std::map<std::string, Reader>& readers() {
          s.cloth.k_shear = l.at_least(1, 0, false);
          s.cloth.k_bend = l.at_least(2, 0, false);
        }},
-      {"damping", [](const Line& l, Scene& s) { l.expect(1, 1), s.cloth.damping = l.at_least(0, 0, false); }},
+      {"damping",
+       [](const Line& l, Scene& s) { l.expect(1, 1), s.cloth.damping = l.at_least(0, 0, false); }},
       {"gravity", [](const Line& l, Scene& s) { l.expect(3, 3), s.cloth.gravity = l.vec(0); }},
       {"wind", [](const Line& l, Scene& s) { l.expect(3, 3), s.cloth.wind = l.vec(0); }},
       {"pin",
@@ -115,9 +119,12 @@ const std::map<std::string, Reader>& readers() {
          s.obstacles.push_back(o);
        }},
       {"dt", [](const Line& l, Scene& s) { l.expect(1, 1), s.dt = l.at_least(0, 0, true); }},
-      {"frames", [](const Line& l, Scene& s) { l.expect(1, 1), s.frames = int(l.integer(0, 0, 100000000)); }},
-      {"restitution", [](const Line& l, Scene& s) { l.expect(1, 1), s.response.restitution = l.within(0, 0, 1); }},
-      {"friction", [](const Line& l, Scene& s) { l.expect(1, 1), s.response.friction = l.at_least(0, 0, false); }},
+      {"frames",
+       [](const Line& l, Scene& s) { l.expect(1, 1), s.frames = int(l.integer(0, 0, 100000000)); }},
+      {"restitution",
+       [](const Line& l, Scene& s) { l.expect(1, 1), s.response.restitution = l.within(0, 0, 1); }},
+      {"friction", [](const Line& l,
+                      Scene& s) { l.expect(1, 1), s.response.friction = l.at_least(0, 0, false); }},
       {"thickness",
        [](const Line& l, Scene& s) {
          l.expect(1, 1);

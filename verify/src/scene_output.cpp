@@ -77,7 +77,8 @@ void write_png(const std::string& path, const std::vector<SceneMesh>& meshes, in
   for (int y = 0; y < height; ++y)  // a soft vertical gradient behind everything
     for (int x = 0; x < width; ++x) {
       const double s = 0.75 + 0.2 * y / height;
-      for (int k = 0; k < 3; ++k) rgb[(std::size_t(y) * width + x) * 3 + k] = (unsigned char)(255 * s);
+      for (int k = 0; k < 3; ++k)
+        rgb[(std::size_t(y) * width + x) * 3 + k] = (unsigned char)(255 * s);
     }
   const Vec3 light = unit(Vec3{0.3, 1.0, 0.6});
   for (const SceneMesh& m : meshes)
@@ -94,7 +95,8 @@ void write_png(const std::string& path, const std::vector<SceneMesh>& meshes, in
       const int x1 = std::min(width - 1, int(std::ceil(std::max({p[0].x, p[1].x, p[2].x}))));
       const int y0 = std::max(0, int(std::floor(std::min({p[0].y, p[1].y, p[2].y}))));
       const int y1 = std::min(height - 1, int(std::ceil(std::max({p[0].y, p[1].y, p[2].y}))));
-      const double area = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
+      const double area =
+          (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
       if (area == 0) continue;
       for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
@@ -109,7 +111,8 @@ void write_png(const std::string& path, const std::vector<SceneMesh>& meshes, in
           if (z >= depth[i]) continue;
           depth[i] = z;
           for (int k = 0; k < 3; ++k)
-            rgb[i * 3 + k] = (unsigned char)std::lround(255 * std::clamp(shade * m.colour[k], 0.0, 1.0));
+            rgb[i * 3 + k] =
+                (unsigned char)std::lround(255 * std::clamp(shade * m.colour[k], 0.0, 1.0));
         }
     }
   png_image image{};

@@ -17,10 +17,8 @@ bool robust_with_exact(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3
 
 const std::vector<std::pair<std::string, cloth::NarrowPhase>>& table() {
   static const std::vector<std::pair<std::string, cloth::NarrowPhase>> t = {
-      {"robust", &robust_with_exact},
-      {"exact", &exact::point_triangle_hit},
-      {"paper-intended", &paper_intended},
-      {"paper-literal", &paper_literal},
+      {"robust", &robust_with_exact},      {"exact", &exact::point_triangle_hit},
+      {"paper-intended", &paper_intended}, {"paper-literal", &paper_literal},
       {"linear-system", &linear_system},
   };
   return t;

@@ -125,13 +125,15 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
 
   std::unique_ptr<AtomicFile> recording;
   if (!record.empty()) recording = std::make_unique<AtomicFile>(record);
-  if (recording) recording->stream() << "# fdhcert simulate " << scene_path << ": every narrow-phase query\n";
+  if (recording)
+    recording->stream() << "# fdhcert simulate " << scene_path << ": every narrow-phase query\n";
   opt.on_frame = [&](const cloth::Simulation& sim, int frame) {
     if (!obj_dir.empty()) {
       char name[32];
       std::snprintf(name, sizeof name, "/frame_%05d.obj", frame);
-      write_obj(obj_dir + name, {{"cloth", &sim.cloth().x(), &sim.cloth().triangles(), cloth_colour},
-                                 {"obstacles", &all_obstacles.x, &all_obstacles.tris, obstacle_colour}});
+      write_obj(obj_dir + name,
+                {{"cloth", &sim.cloth().x(), &sim.cloth().triangles(), cloth_colour},
+                 {"obstacles", &all_obstacles.x, &all_obstacles.tris, obstacle_colour}});
     }
     if (recording) {
       const auto& m = sim.collision_mesh();
@@ -163,12 +165,14 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
         << ", \"narrow\": " << json_string(opt.narrow) << ", \"k\": " << opt.k
         << ", \"dt\": " << general(r.dt) << ", \"stable_dt\": " << general(r.stable_dt)
         << ", \"dt_reduced\": " << (r.dt_reduced ? "true" : "false")
-        << ", \"skin\": " << general(r.skin) << ", \"ms_per_frame\": {\"springs\": "
-        << general(per * t.springs) << ", \"refit\": " << general(per * t.refit)
-        << ", \"traversal\": " << general(per * t.traversal) << ", \"narrow\": "
-        << general(per * t.narrow) << ", \"response\": " << general(per * t.response)
-        << ", \"collision\": " << general(per * t.collision()) << ", \"total\": "
-        << general(per * t.total()) << "}, \"candidates\": " << r.candidates
+        << ", \"skin\": " << general(r.skin)
+        << ", \"ms_per_frame\": {\"springs\": " << general(per * t.springs)
+        << ", \"refit\": " << general(per * t.refit)
+        << ", \"traversal\": " << general(per * t.traversal)
+        << ", \"narrow\": " << general(per * t.narrow)
+        << ", \"response\": " << general(per * t.response)
+        << ", \"collision\": " << general(per * t.collision())
+        << ", \"total\": " << general(per * t.total()) << "}, \"candidates\": " << r.candidates
         << ", \"collisions\": " << r.collisions;
     if (checked)
       out << ", \"fp\": " << r.fp << ", \"fn\": " << r.fn << ", \"inside\": " << r.audit.inside
@@ -184,12 +188,11 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
       << (scene.obstacles.size() == 1 ? "" : "s") << " (" << all_obstacles.tris.size()
       << " triangles), skin " << general(r.skin) << " m\n";
   out << "narrow phase " << opt.narrow << ", k = " << opt.k << ", " << r.frames
-      << " frames of dt = " << general(r.dt) << " s (stable up to " << general(r.stable_dt)
-      << " s" << (r.dt_reduced ? "; the scene's " + general(scene.dt) + " s is above it" : "")
-      << ")\n\n";
+      << " frames of dt = " << general(r.dt) << " s (stable up to " << general(r.stable_dt) << " s"
+      << (r.dt_reduced ? "; the scene's " + general(scene.dt) + " s is above it" : "") << ")\n\n";
   out << "ms per frame   springs+integration " << fixed(per * t.springs, 4) << "   refit "
-      << fixed(per * t.refit, 4) << "   traversal " << fixed(per * t.traversal, 4)
-      << "   narrow " << fixed(per * t.narrow, 4) << "   response " << fixed(per * t.response, 4)
+      << fixed(per * t.refit, 4) << "   traversal " << fixed(per * t.traversal, 4) << "   narrow "
+      << fixed(per * t.narrow, 4) << "   response " << fixed(per * t.response, 4)
       << "\n               collision " << fixed(per * t.collision(), 4) << "   total "
       << fixed(per * t.total(), 4) << "\n";
   out << "counts         " << r.candidates << " candidate pairs, " << r.collisions
@@ -199,8 +202,8 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
     out << "accuracy       " << r.fp << " false positives, " << r.fn
         << " false negatives against the exact test\n";
     out << "audit (exact)  " << r.audit.inside << " particles inside, " << r.audit.crossing
-        << " crossing edges, summed over the frames (last frame: " << r.audit_last_inside
-        << " and " << r.audit_last_crossing << ")\n";
+        << " crossing edges, summed over the frames (last frame: " << r.audit_last_inside << " and "
+        << r.audit_last_crossing << ")\n";
   }
   if (!png.empty()) out << "picture        " << png << "\n";
   if (!record.empty()) out << "queries        " << record << "\n";

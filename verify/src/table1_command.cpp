@@ -143,8 +143,8 @@ std::string csv_of(const std::vector<Cell>& cells) {
     os << "paper: traditional,0," << kGrids[g] << "," << kGrids[g] * kGrids[g] << ","
        << kPaperTraditional[g] << ",,,,\n";
   for (int g = 0; g < 4; ++g)
-    os << "paper: this paper,0," << kGrids[g] << "," << kGrids[g] * kGrids[g] << ","
-       << kPaperOwn[g] << ",,,,\n";
+    os << "paper: this paper,0," << kGrids[g] << "," << kGrids[g] * kGrids[g] << "," << kPaperOwn[g]
+       << ",,,,\n";
   return os.str();
 }
 
@@ -183,7 +183,9 @@ int table1_command(const Args& args, std::ostream& out, std::ostream& err) {
       opt.narrow = row.method;
       opt.k = row.k;
       opt.frames = frames;
-      if (progress) err << "table1: " << row.method << " k=" << row.k << " " << g << "x" << g << "\r" << std::flush;
+      if (progress)
+        err << "table1: " << row.method << " k=" << row.k << " " << g << "x" << g << "\r"
+            << std::flush;
       cells.push_back({row, g, run_scene(s, opt)});
     }
   if (progress) err << std::string(40, ' ') << "\r";

@@ -42,7 +42,8 @@ class Bvh {
     // Each primitive's box once; a node's box is the exact merge of its primitives' boxes.
     std::vector<Kdop<K>> boxes(tris_.size());
     const double w = widening(x0, x1);
-    for (std::size_t i = 0; i < tris_.size(); ++i) range_box(boxes[prims_[i]], int(i), int(i) + 1, x0, x1, w);
+    for (std::size_t i = 0; i < tris_.size(); ++i)
+      range_box(boxes[prims_[i]], int(i), int(i) + 1, x0, x1, w);
     if (!tris_.empty()) build(0, int(tris_.size()), boxes, x0, x1);
   }
 

@@ -97,8 +97,8 @@ struct Kdop {
 // refit.
 inline std::array<double, 13> projections(const Vec3& p) {
   const double xpy = p.x + p.y, xmy = p.x - p.y;
-  return {p.x,     p.y,       p.z,       xpy + p.z, xpy - p.z, xmy + p.z, xmy - p.z,
-          xpy,     xmy,       p.x + p.z, p.x - p.z, p.y + p.z, p.y - p.z};
+  return {p.x, p.y, p.z,       xpy + p.z, xpy - p.z, xmy + p.z, xmy - p.z,
+          xpy, xmy, p.x + p.z, p.x - p.z, p.y + p.z, p.y - p.z};
 }
 
 // Grows b to hold p's projections, the diagonal slabs pushed out by w (axis slabs are exact).
@@ -109,9 +109,9 @@ template <int K, std::size_t... S>
 inline void add_point_slabs(Kdop<K>& b, const std::array<double, 13>& v, double w,
                             std::index_sequence<S...>) {
   ((b.lo[S] = std::min(b.lo[S], Kdop<K>::is_exact_slab(S) ? v[Kdop<K>::kDirIndex[S]]
-                                                           : v[Kdop<K>::kDirIndex[S]] - w),
+                                                          : v[Kdop<K>::kDirIndex[S]] - w),
     b.hi[S] = std::max(b.hi[S], Kdop<K>::is_exact_slab(S) ? v[Kdop<K>::kDirIndex[S]]
-                                                           : v[Kdop<K>::kDirIndex[S]] + w)),
+                                                          : v[Kdop<K>::kDirIndex[S]] + w)),
    ...);
 }
 

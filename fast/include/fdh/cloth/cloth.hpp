@@ -15,16 +15,16 @@
 namespace fdh::cloth {
 
 struct ClothSpec {
-  int grid = 25;               // particles per side
-  double size = 1.6;           // side length at rest, m; the cloth starts flat and level
-  Vec3 centre = {0, 1, 0};     // of the cloth at rest; it lies in the x–z plane
-  double mass = 0.5;           // of the whole cloth, kg, shared equally by the particles
-  double k_structural = 200;   // N/m
-  double k_shear = 200;        // N/m
-  double k_bend = 20;          // N/m
-  double damping = 0.02;       // air: a force -damping·m·v, so a rate in 1/s
+  int grid = 25;              // particles per side
+  double size = 1.6;          // side length at rest, m; the cloth starts flat and level
+  Vec3 centre = {0, 1, 0};    // of the cloth at rest; it lies in the x–z plane
+  double mass = 0.5;          // of the whole cloth, kg, shared equally by the particles
+  double k_structural = 200;  // N/m
+  double k_shear = 200;       // N/m
+  double k_bend = 20;         // N/m
+  double damping = 0.02;      // air: a force -damping·m·v, so a rate in 1/s
   Vec3 gravity = {0, -9.81, 0};
-  Vec3 wind = {0, 0, 0};       // air velocity, m/s: the damping pulls v towards it
+  Vec3 wind = {0, 0, 0};                    // air velocity, m/s: the damping pulls v towards it
   std::vector<std::array<double, 2>> pins;  // (u, v) in [0,1]²: the nearest particle is fixed
 };
 

@@ -15,8 +15,8 @@ namespace fdh::cloth {
 // A closed obstacle. A table is a top and four legs, each a box.
 struct Obstacle {
   enum class Kind { Box, Sphere } kind = Kind::Box;
-  Vec3 lo, hi;    // a box
-  Vec3 centre;    // a sphere
+  Vec3 lo, hi;  // a box
+  Vec3 centre;  // a sphere
   double r = 0;
   int level = 3;  // a sphere's subdivision (20·4^level triangles)
 };

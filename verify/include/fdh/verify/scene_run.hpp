@@ -21,7 +21,7 @@ cloth::NarrowPhase narrow_phase_named(const std::string& name);
 struct SceneRunOptions {
   std::string narrow = "robust";
   int k = 18;
-  int frames = -1;  // < 0: the scene's
+  int frames = -1;    // < 0: the scene's
   bool check = true;  // FP/FN and the audit (untimed)
   // Called after every frame (1-based), e.g. to write an OBJ or record the queries.
   std::function<void(const cloth::Simulation&, int frame)> on_frame;

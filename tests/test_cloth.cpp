@@ -1,0 +1,289 @@
+// The cloth of issue 3: the response formulas by hand, the meshes and the audit on cases with
+// a known answer, the shipped scenes (stable step, audit 0 with robust), a cloth resting on a
+// table for 1,000 frames, and the energy of a swinging pinned cloth.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "fdh/cloth/response.hpp"
+#include "fdh/cloth/simulation.hpp"
+#include "fdh/exact/audit.hpp"
+#include "fdh/verify/cli.hpp"
+#include "fdh/verify/input_error.hpp"
+#include "fdh/verify/query_io.hpp"
+#include "fdh/verify/scene_file.hpp"
+#include "fdh/verify/scene_run.hpp"
+#include "temp_dir.hpp"
+
+namespace fdh::cloth {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kScenes = FDH_SOURCE_DIR "/corpus/scenes/";
+
+void expect_vec(const Vec3& got, const Vec3& want) {
+  EXPECT_DOUBLE_EQ(got.x, want.x);
+  EXPECT_DOUBLE_EQ(got.y, want.y);
+  EXPECT_DOUBLE_EQ(got.z, want.z);
+}
+
+// --- Response, eqs. (4)-(5), computed by hand ---
+
+TEST(Response, RestitutionReversesTheNormalPartOnly) {
+  // v = (1, -2, 0) on the floor n = +y: v_n = (0, -2, 0), v_t = (1, 0, 0).
+  // Eq. (4) with restitution 0.5: v' = v_t - 0.5 v_n = (1, 1, 0).
+  expect_vec(respond({1, -2, 0}, {0, 1, 0}, {0.5, 0}), {1, 1, 0});
+  // Restitution 0: the normal part is gone, v' = v_t.
+  expect_vec(respond({1, -2, 0}, {0, 1, 0}, {0, 0}), {1, 0, 0});
+  // Restitution 1: an elastic bounce.
+  expect_vec(respond({3, -4, 5}, {0, 1, 0}, {1, 0}), {3, 4, 5});
+}
+
+TEST(Response, FrictionShortensByFrictionTimesNormalSpeed) {
+  // v = (3, -1, 0), n = +y, restitution 0: v' = (3, 0, 0), |v_n| = 1.
+  // Eq. (5) with friction 0.5: v'' = v' - 0.5·1·v'/|v'| = (2.5, 0, 0).
+  expect_vec(respond({3, -1, 0}, {0, 1, 0}, {0, 0.5}), {2.5, 0, 0});
+  // v = (3, -4, 4) on n = +y, restitution 0.25: v' = (3, 1, 4), |v'| = sqrt(26), |v_n| = 4.
+  // friction 0.25: v'' = (1 - 1/sqrt(26))·(3, 1, 4).
+  const double s = 1 - 1 / std::sqrt(26.0);
+  const Vec3 got = respond({3, -4, 4}, {0, 1, 0}, {0.25, 0.25});
+  EXPECT_NEAR(got.x, 3 * s, 1e-15);
+  EXPECT_NEAR(got.y, 1 * s, 1e-15);
+  EXPECT_NEAR(got.z, 4 * s, 1e-15);
+}
+
+TEST(Response, FrictionStopsRatherThanReverses) {
+  // friction·|v_n| = 2·1 >= |v'| = 1: the particle stops.
+  expect_vec(respond({1, -1, 0}, {0, 1, 0}, {0, 2}), {0, 0, 0});
+}
+
+TEST(Response, LeavingParticlesKeepTheirVelocity) {
+  expect_vec(respond({1, 2, 3}, {0, 1, 0}, {0.5, 0.5}), {1, 2, 3});
+  expect_vec(respond({1, 0, 3}, {0, 1, 0}, {0.5, 0.5}), {1, 0, 3});
+}
+
+TEST(Response, TiltedNormal) {
+  // n = (0.6, 0.8, 0), v = (0, -5, 0): v·n = -4, v_n = (-2.4, -3.2, 0), v_t = (2.4, -1.8, 0).
+  // restitution 0.5: v' = v_t + 0.5·(2.4, 3.2, 0) = (3.6, -0.2, 0).
+  const Vec3 got = respond({0, -5, 0}, {0.6, 0.8, 0}, {0.5, 0});
+  EXPECT_NEAR(got.x, 3.6, 1e-15);
+  EXPECT_NEAR(got.y, -0.2, 1e-15);
+  EXPECT_EQ(got.z, 0);
+}
+
+// --- Meshes and the exact audit ---
+
+double signed_volume(const TriMesh& m) {
+  double v = 0;
+  for (const Tri& t : m.tris) v += dot(m.x[t[0]], cross(m.x[t[1]], m.x[t[2]])) / 6;
+  return v;
+}
+
+TEST(Mesh, BoxAndSphereAreClosedAndWoundOutward) {
+  const TriMesh box = box_mesh({0, 0, 0}, {1, 2, 3});
+  EXPECT_EQ(box.tris.size(), 12u);
+  EXPECT_NEAR(signed_volume(box), 6, 1e-12);
+  const TriMesh ball = sphere_mesh({1, 2, 3}, 0.5, 3);
+  EXPECT_EQ(ball.tris.size(), 1280u);
+  const double ball_volume = 4.0 / 3 * M_PI * 0.125;
+  EXPECT_GT(signed_volume(ball), 0.98 * ball_volume);  // inscribed: a little less
+  EXPECT_LT(signed_volume(ball), ball_volume);
+  for (int t = 0; t < int(ball.tris.size()); ++t)  // outward: away from the centre
+    EXPECT_GT(dot(unit_normal(ball, t), ball.x[ball.tris[t][0]] - Vec3{1, 2, 3}), 0);
+  EXPECT_NO_THROW(exact::Audit({box, ball}));
+}
+
+TEST(Audit, CountsInsideAndCrossingExactly) {
+  const exact::Audit audit({box_mesh({0, 0, 0}, {1, 1, 1})});
+  const std::vector<Vec3> x = {{0.5, 0.5, 0.5},  // inside
+                               {1, 0.5, 0.5},    // on a face: not inside
+                               {2, 0.5, 0.5},    // outside
+                               {0.5, 1, 0.5},    // on the top face
+                               {0.5, 2, 0.5}};
+  const std::vector<std::array<int, 2>> edges = {{0, 2},   // from inside out: crosses
+                                                 {1, 2},   // touches the face only
+                                                 {3, 4},   // touches the top only
+                                                 {2, 4}};  // outside
+  const exact::AuditCounts c = audit.count(x, edges);
+  EXPECT_EQ(c.inside, 1);
+  EXPECT_EQ(c.crossing, 1);
+  // An edge through the box with both ends outside crosses.
+  EXPECT_EQ(audit.count({{-1, 0.5, 0.5}, {2, 0.5, 0.5}}, {{0, 1}}).crossing, 1);
+  // A hair inside is inside: the audit is exact.
+  EXPECT_EQ(audit.count({{std::nextafter(1.0, 0.0), 0.5, 0.5}}, {}).inside, 1);
+}
+
+TEST(Audit, RejectsAnOpenMesh) {
+  TriMesh open = box_mesh({0, 0, 0}, {1, 1, 1});
+  open.tris.pop_back();
+  EXPECT_THROW(exact::Audit({open}), std::invalid_argument);
+}
+
+// --- Scenes ---
+
+std::vector<fs::path> shipped_scenes() {
+  std::vector<fs::path> s;
+  for (const auto& e : fs::directory_iterator(kScenes))
+    if (e.path().extension() == ".scene") s.push_back(e.path());
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
+TEST(Scenes, ShipAtLeastTheFourOfThePaperAndAStableStep) {
+  const auto scenes = shipped_scenes();
+  ASSERT_GE(scenes.size(), 4u);
+  for (const auto& p : scenes) {
+    const Scene s = verify::read_scene(p.string());
+    EXPECT_LE(s.dt, Cloth(s.cloth).stable_dt()) << p << ": a shipped scene must be stable";
+  }
+}
+
+TEST(Scenes, BadInputNamesTheFileAndLine) {
+  const fs::path dir = fresh_temp_dir("bad_scene");
+  const auto error_of = [&](const std::string& text) {
+    const std::string path = (dir / "bad.scene").string();
+    std::ofstream(path) << text;
+    try {
+      verify::read_scene(path);
+    } catch (const verify::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error_of("grid 10\nwobble 3\n").find("bad.scene:2: unknown keyword 'wobble'"),
+            std::string::npos);
+  EXPECT_NE(error_of("grid 1\n").find("bad.scene:1: grid must be"), std::string::npos);
+  EXPECT_NE(error_of("# c\nsphere 0 0 0\n").find("bad.scene:2: 'sphere' takes 4 to 5"),
+            std::string::npos);
+  EXPECT_NE(error_of("box 0 0 0 1 -1 1\n").find("bad.scene:1: box"), std::string::npos);
+  EXPECT_NE(error_of("dt nan\n").find("bad.scene:1: dt: 'nan' is not a finite number"),
+            std::string::npos);
+  EXPECT_NE(error_of("dt 1\ndt 2\n").find("bad.scene:2: 'dt' given twice"), std::string::npos);
+  // Through the CLI: exit status 2 and the same message.
+  std::ostringstream out, err;
+  EXPECT_EQ(verify::run_cli({"simulate", (dir / "bad.scene").string()}, out, err), 2);
+  EXPECT_NE(err.str().find("bad.scene:2"), std::string::npos);
+}
+
+// With robust, every shipped scene ends with nothing inside and no edge crossing, in every
+// frame, and the narrow phase agrees with the exact test on every query.
+TEST(Scenes, RobustKeepsTheAuditAtZeroOnEveryShippedScene) {
+  for (const auto& p : shipped_scenes()) {
+    const Scene s = verify::read_scene(p.string());
+    verify::SceneRunOptions opt;
+    opt.narrow = "robust";
+    const verify::SceneRun r = verify::run_scene(s, opt);
+    EXPECT_FALSE(r.dt_reduced) << p;
+    EXPECT_EQ(r.audit.inside, 0) << p;
+    EXPECT_EQ(r.audit.crossing, 0) << p;
+    EXPECT_EQ(r.fp, 0) << p;
+    EXPECT_EQ(r.fn, 0) << p;
+    if (!s.obstacles.empty()) {
+      EXPECT_GT(r.collisions, 0) << p << ": the cloth never arrived";
+    }
+  }
+}
+
+// Without the skin, a point-only test lets cloth edges cut the table's corners: the audit can
+// fail, and does.
+TEST(Scenes, WithoutTheSkinEdgesCutTheTableCorners) {
+  Scene s = verify::read_scene(kScenes + "table.scene");
+  s.thickness = 0;
+  const verify::SceneRun r = verify::run_scene(s, {});
+  EXPECT_EQ(r.audit.inside, 0);
+  EXPECT_GT(r.audit.crossing, 0);
+}
+
+// A cloth laid on the table top, just above its skin, stays above the table for 1,000 frames.
+TEST(Cloth, RestingOnTheTableStaysAboveItFor1000Frames) {
+  Scene s = verify::read_scene(kScenes + "table.scene");
+  s.cloth.grid = 15;
+  s.cloth.size = 0.8;  // smaller than the 1 m top: all of it rests on the table
+  const double top = 0.75;
+  s.cloth.centre = {0, top + s.skin() + 1e-3, 0};
+  std::vector<TriMesh> obstacles;
+  for (const auto& o : s.obstacles) obstacles.push_back(obstacle_mesh(o));
+  const exact::Audit audit(obstacles);
+  Simulation sim(s, verify::narrow_phase_named("robust"));
+  for (int f = 1; f <= 1000; ++f) {
+    sim.step();
+    double lowest = INFINITY;
+    for (const Vec3& p : sim.cloth().x()) lowest = std::min(lowest, p.y);
+    ASSERT_GT(lowest, top) << "frame " << f;
+    const exact::AuditCounts c = audit.count(sim.cloth().x(), sim.cloth().edges());
+    ASSERT_EQ(c.inside, 0) << "frame " << f;
+    ASSERT_EQ(c.crossing, 0) << "frame " << f;
+  }
+  // It came to rest on the skin rather than hovering: every particle is within 1 mm of it.
+  for (const Vec3& p : sim.cloth().x()) EXPECT_LT(p.y, top + s.skin() + 1e-3);
+}
+
+// Energy of the pinned swinging cloth (no collisions) at a step: the highest total energy
+// reached relative to the start, over two seconds.
+double energy_growth(const Scene& s, double dt) {
+  Simulation sim(s, verify::narrow_phase_named("robust"), 18, dt);
+  const double e0 = sim.cloth().energy();
+  double worst = 0;
+  for (int f = 0; f < int(2.0 / dt); ++f) {
+    sim.step();
+    const double e = sim.cloth().energy();
+    if (!std::isfinite(e)) return INFINITY;
+    worst = std::max(worst, (e - e0) / std::fabs(e0));
+  }
+  return worst;
+}
+
+TEST(Cloth, SwingingPinnedClothGainsNoEnergyUpToTheStableStep) {
+  const Scene s = verify::read_scene(kScenes + "pinned-swing.scene");
+  ASSERT_TRUE(s.obstacles.empty());
+  const double bound = Cloth(s.cloth).stable_dt();
+  EXPECT_LE(energy_growth(s, s.dt), 1e-9);      // the shipped step
+  EXPECT_LE(energy_growth(s, bound), 1e-9);     // the documented bound itself
+  EXPECT_GT(energy_growth(s, 1.5 * bound), 1);  // and the test can fail: beyond it, it explodes
+}
+
+// --- The commands ---
+
+TEST(Simulate, RecordsQueriesThatClassifyReplays) {
+  const fs::path dir = fresh_temp_dir("simulate");
+  const std::string rec = (dir / "run.vf").string(), png = (dir / "last.png").string();
+  std::ostringstream out, err;
+  ASSERT_EQ(
+      verify::run_cli({"simulate", kScenes + "table.scene", "--grid", "10", "--frames", "600",
+                       "--record", rec, "--png", png, "--obj", (dir / "obj").string(), "--json"},
+                      out, err),
+      0)
+      << err.str();
+  for (const char* key : {"\"springs\"", "\"refit\"", "\"traversal\"", "\"narrow\"", "\"response\"",
+                          "\"candidates\"", "\"inside\": 0", "\"crossing\": 0"})
+    EXPECT_NE(out.str().find(key), std::string::npos) << key << " in " << out.str();
+  EXPECT_TRUE(fs::exists(dir / "obj" / "frame_00600.obj"));
+  EXPECT_GT(fs::file_size(png), 1000u);
+  const auto queries = verify::read_query_file(rec);
+  ASSERT_FALSE(queries.empty());
+  std::ostringstream cout_, cerr_;
+  EXPECT_EQ(
+      verify::run_cli({"classify", rec, "--methods", "exact,robust", "--check"}, cout_, cerr_), 0)
+      << cerr_.str();
+}
+
+TEST(Table1, JsonHasOneRowPerMethodKAndGrid) {
+  std::ostringstream out, err;
+  ASSERT_EQ(
+      verify::run_cli({"table1", "--scene", kScenes + "table.scene", "--frames", "3", "--json"},
+                      out, err),
+      0)
+      << err.str();
+  const std::string j = out.str();
+  std::size_t rows = 0;
+  for (std::size_t p = 0; (p = j.find("\"method\"", p)) != std::string::npos; ++p) ++rows;
+  EXPECT_EQ(rows, 24u);  // 6 rows × 4 grids
+  EXPECT_NE(j.find("\"paper\": {\"grids\": [15, 25, 30, 50]"), std::string::npos);
+  EXPECT_NE(j.find("15.27"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fdh::cloth
