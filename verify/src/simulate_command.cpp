@@ -17,7 +17,8 @@ namespace {
 
 const char* const kSimulateHelp =
     R"(usage: fdhcert simulate SCENE [--grid N] [--frames F] [--narrow METHOD] [--k K]
-                         [--obj DIR] [--png FILE] [--record FILE] [--json] [--no-check]
+                         [--thickness T] [--obj DIR] [--png FILE] [--record FILE]
+                         [--json] [--no-check]
 
 Runs the cloth of SCENE (a .scene file, docs/formats.md; shipped ones are in
 corpus/scenes/) among its obstacles, one step of dt per frame: springs and
@@ -39,6 +40,8 @@ options:
   --narrow METHOD   robust (default), exact, paper-intended, paper-literal or
                     linear-system
   --k K             the FDH's k: 6, 14, 18 (default) or 26
+  --thickness T     the collision skin in m (default: the scene's; 0 collides
+                    with the obstacles' own surfaces, see docs/cloth.md)
   --obj DIR         write DIR/frame_NNNNN.obj for every frame (cloth and
                     obstacles), for Blender or ParaView
   --png FILE        render the last frame to FILE
@@ -70,6 +73,7 @@ std::string general(double v) {
 int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
   std::string scene_path, obj_dir, png, record;
   int grid = 0;
+  double thickness = -2;  // not given
   bool json = false;
   SceneRunOptions opt;
   for (ArgReader a(args); a.next();) {
@@ -90,6 +94,12 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
     } else if (a.is("--k")) {
       opt.k = int(a.integer(6, 26));
       if (!is_valid_k(opt.k)) throw UsageError("--k takes 6, 14, 18 or 26");
+    } else if (a.is("--thickness")) {
+      const std::string& v = a.value();
+      std::string why;
+      const auto t = parse_double(v, why);
+      if (!t || *t < 0) throw UsageError("--thickness takes a length >= 0 in m, not '" + v + "'");
+      thickness = *t;
     } else if (a.is("--obj")) {
       obj_dir = a.value();
     } else if (a.is("--png")) {
@@ -111,6 +121,7 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
   if (scene_path.empty()) throw UsageError("simulate needs a scene file (see corpus/scenes/)");
   cloth::Scene scene = read_scene(scene_path);
   if (grid) scene.cloth.grid = grid;
+  if (thickness >= 0) scene.thickness = thickness;
   if (!obj_dir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(obj_dir, ec);
