@@ -16,6 +16,7 @@ commands:
   fuzz               search a generator family for cases where a method is wrong,
                      shrink them and store them
   replay PATH...     re-run stored cases: which methods still fail where
+  generate FAMILY    write queries of a generator family to a file
   certify            certify the fast library against the exact reference
   report             certificate, measurements and charts in one folder
   simulate SCENE     run a cloth scene: time per frame, accuracy and exact audit
@@ -42,6 +43,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (cmd == "classify") return classify_command(rest, out, err);
     if (cmd == "fuzz") return fuzz_command(rest, out, err);
     if (cmd == "replay") return replay_command(rest, out, err);
+    if (cmd == "generate") return generate_command(rest, out, err);
     if (cmd == "certify") return certify_command(rest, out, err);
     if (cmd == "report") return report_command(rest, out, err);
     if (cmd == "simulate") return simulate_command(rest, out, err);

@@ -25,6 +25,7 @@ int certify_command(const Args& args, std::ostream& out, std::ostream& err);
 int report_command(const Args& args, std::ostream& out, std::ostream& err);
 int simulate_command(const Args& args, std::ostream& out, std::ostream& err);
 int table1_command(const Args& args, std::ostream& out, std::ostream& err);
+int generate_command(const Args& args, std::ostream& out, std::ostream& err);
 
 // Walks the arguments: options with values, flags, and positional words.
 class ArgReader {

@@ -1,6 +1,7 @@
 #include "fdh/verify/moving_families.hpp"
 
 #include <cmath>
+#include <cstdint>
 
 namespace fdh::verify {
 namespace {
@@ -50,6 +51,20 @@ GeneratedMoving gen_base(MovingFamily f) {
     case MovingFamily::RandomLinear: {
       std::array<Vec3, 8> x;
       for (Vec3& v : x) v = point(8);
+      return make(f, any_kind(), x, -1);
+    }
+    case MovingFamily::Generic: {
+      // Every coordinate a random multiple of 2^-52 in [-1, 1], each vertex moving by up to
+      // 1/2 per axis: 53-bit mantissas, so exact ties have probability 0.
+      const auto r = [] {
+        return std::ldexp(double(*rc::gen::inRange<std::int64_t>(-(1LL << 52), (1LL << 52) + 1)),
+                          -52);
+      };
+      std::array<Vec3, 8> x;
+      for (int i = 0; i < 4; ++i) {
+        x[i] = {r(), r(), r()};
+        x[i + 4] = x[i] + 0.5 * Vec3{r(), r(), r()};
+      }
       return make(f, any_kind(), x, -1);
     }
     case MovingFamily::Rotating: {
@@ -143,9 +158,9 @@ GeneratedMoving gen_base(MovingFamily f) {
 
 const std::vector<MovingFamily>& all_moving_families() {
   static const std::vector<MovingFamily> all = {
-      MovingFamily::RandomLinear,  MovingFamily::Rotating,      MovingFamily::Hourglass,
-      MovingFamily::TwoCrossings,  MovingFamily::Coplanar,      MovingFamily::SlidingOnEdge,
-      MovingFamily::ParallelEdges, MovingFamily::DegenerateEdge};
+      MovingFamily::RandomLinear,  MovingFamily::Generic,       MovingFamily::Rotating,
+      MovingFamily::Hourglass,     MovingFamily::TwoCrossings,  MovingFamily::Coplanar,
+      MovingFamily::SlidingOnEdge, MovingFamily::ParallelEdges, MovingFamily::DegenerateEdge};
   return all;
 }
 
@@ -153,6 +168,8 @@ std::string moving_family_name(MovingFamily f) {
   switch (f) {
     case MovingFamily::RandomLinear:
       return "random-linear";
+    case MovingFamily::Generic:
+      return "generic-moving";
     case MovingFamily::Rotating:
       return "rotating";
     case MovingFamily::Hourglass:

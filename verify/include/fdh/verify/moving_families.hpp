@@ -15,6 +15,8 @@ namespace fdh::verify {
 
 enum class MovingFamily {
   RandomLinear,   // vf or ee, every vertex anywhere in a small box at t = 0 and t = 1
+  Generic,        // vf or ee, full-precision random coordinates: no exact coincidence, the
+                  // speed case of a simulator's typical query
   Rotating,       // a triangle or edge turned about an axis, the turn replaced by straight lines
   Hourglass,      // Brochu et al. 2012: the triangle shrinks through a point and turns inside out
   TwoCrossings,   // the point meets the tilting plane twice; one meeting is inside, one is not
