@@ -20,22 +20,44 @@ double det(const Vec3& u, const Vec3& v, const Vec3& w) {
 // P = Mx My Mz the product of the largest |coordinates| over all six vectors (as in
 // orient3d_filter.hpp); a sum of three is off by at most 3 x 48 eps P plus two roundings of at
 // most 18 (1 + eps) P eps each: below 192 eps P.
-int bernstein_sign(const Vec3 u[2], const Vec3 v[2], const Vec3 w[2]) {
+struct Bernstein {
+  double b[4];
+  double err;   // |computed - exact| for every coefficient
+  double bmax;  // >= |every exact coefficient|, so >= |f| on [0, 1]
+  bool valid;   // false outside the filter's range: nothing is certain
+};
+
+Bernstein bernstein(const Vec3 u[2], const Vec3 v[2], const Vec3 w[2]) {
   double mx = 0, my = 0, mz = 0;
   for (const Vec3* s : {u, v, w})
     for (int i = 0; i < 2; ++i) {
       const double ax = std::fabs(s[i].x), ay = std::fabs(s[i].y), az = std::fabs(s[i].z);
       mx = ax > mx ? ax : mx, my = ay > my ? ay : my, mz = az > mz ? az : mz;
     }
-  if (!(in_filter_range(mx) && in_filter_range(my) && in_filter_range(mz))) return 0;
+  Bernstein r{};
+  r.valid = in_filter_range(mx) && in_filter_range(my) && in_filter_range(mz);
+  if (!r.valid) return r;
   const double p = mx * my * mz;
-  const double b[4] = {
-      det(u[0], v[0], w[0]), det(u[1], v[0], w[0]) + det(u[0], v[1], w[0]) + det(u[0], v[0], w[1]),
-      det(u[1], v[1], w[0]) + det(u[1], v[0], w[1]) + det(u[0], v[1], w[1]), det(u[1], v[1], w[1])};
-  const double bound[4] = {48 * kEps * p, 192 * kEps * p, 192 * kEps * p, 48 * kEps * p};
+  r.b[0] = det(u[0], v[0], w[0]);
+  r.b[1] = (det(u[1], v[0], w[0]) + det(u[0], v[1], w[0]) + det(u[0], v[0], w[1])) / 3;
+  r.b[2] = (det(u[1], v[1], w[0]) + det(u[1], v[0], w[1]) + det(u[0], v[1], w[1])) / 3;
+  r.b[3] = det(u[1], v[1], w[1]);
+  // A sum of three is off by < 192 eps P, so its third by 64 eps P, plus the division's
+  // rounding (eps |b| <= 6 eps P: |det| <= 6 P).
+  r.err = 72 * kEps * p;
+  r.bmax = 6 * p + r.err;
+  return r;
+}
+
+int sign_of(double x, double err) {
+  return x > err ? 1 : (-x > err ? -1 : 0);
+}
+
+int bernstein_sign(const Bernstein& f) {
+  if (!f.valid) return 0;
   int sign = 0;
   for (int i = 0; i < 4; ++i) {
-    const int s = b[i] > bound[i] ? 1 : (-b[i] > bound[i] ? -1 : 0);
+    const int s = sign_of(f.b[i], f.err);
     if (s == 0 || (sign != 0 && s != sign)) return 0;
     sign = s;
   }
@@ -90,32 +112,131 @@ Conditions edge_edge(const Query& q, const Interval& t) {
   return {dot(ea, cross(w, b1 - a0)), {s, mm - s, u, mm - u}, 4};
 }
 
-Filtered bisect(const Query& q) {
+// f on a piece of [0, 1], as its Bernstein coefficients there, found by de Casteljau
+// subdivision from stage 1's. The piece's true ends are dyadic but may need more bits than a
+// double has; lo and hi are them rounded, within `slack` (the sum of the roundings).
+struct Piece {
+  double lo, hi, slack;
+  double b[4];
+  int depth;
+};
+
+// Splits p at lo + s (hi - lo) by de Casteljau. Each new coefficient is a convex combination of
+// the old, so the error of the exact ones carries over unchanged, plus the roundings of three
+// levels of (1 - s) x + s y: at most 9 eps times the largest |coefficient| per split; bound()
+// allows 16. s = 7/16 and 1 - s = 9/16 are exact.
+void split(const Piece& p, double s, Piece& left, Piece& right) {
+  const double r = 1 - s;
+  const double a0 = r * p.b[0] + s * p.b[1], a1 = r * p.b[1] + s * p.b[2],
+               a2 = r * p.b[2] + s * p.b[3];
+  const double c0 = r * a0 + s * a1, c1 = r * a1 + s * a2;
+  const double m = r * c0 + s * c1;
+  const double t = p.lo + s * (p.hi - p.lo);
+  const double slack = p.slack + 0x1p-51;  // t's two roundings, in [0, 1]: < 2^-52
+  left = {p.lo, t, slack, {p.b[0], a0, c0, m}, p.depth + 1};
+  right = {t, p.hi, slack, {m, c1, a2, p.b[3]}, p.depth + 1};
+}
+
+// The error of a piece's coefficients at its depth (the + 2^-1070 covers underflow).
+double bound(const Bernstein& f, int depth) {
+  return f.err + depth * (16 * kEps * f.bmax + 0x1p-1070);
+}
+
+// Sign variations of the certain signs; -1 if some sign is uncertain.
+int variations(const Piece& p, double err) {
+  int prev = 0, v = 0;
+  for (const double c : p.b) {
+    const int s = sign_of(c, err);
+    if (s == 0) return -1;
+    if (prev != 0 && s != prev) ++v;
+    prev = s;
+  }
+  return v;
+}
+
+// The conditions g_i over a piece: its rounded ends pushed out by twice its slack.
+Conditions conditions(const Query& q, const Piece& p) {
   const auto eval = q.kind == QueryKind::VertexFace ? &vertex_face : &edge_edge;
-  constexpr int kMaxPieces = 16;   // evaluations before giving up
-  Interval stack[kMaxPieces + 1];  // each piece pops one and pushes at most two
-  int top = 0;
-  stack[top++] = {0, 1};
-  for (int pieces = 0; top > 0; ++pieces) {
-    if (pieces == kMaxPieces) return Filtered::Uncertain;
-    const Interval t = stack[--top];
-    const Conditions c = eval(q, t);
-    if (c.f.excludes_zero()) continue;
+  return eval(q, Interval{p.lo - 2 * p.slack, p.hi + 2 * p.slack});
+}
+
+// The root of f isolated in `p` (one sign variation, f(lo) f(hi) < 0): narrowed by halving
+// until the conditions g_i over the piece are certain, or the halving point's sign is not.
+Filtered contact_at_root(const Query& q, const Bernstein& f, Piece p) {
+  // The conditions over the whole piece: certain signs there settle this root wherever it is.
+  const auto decide = [&q](const Piece& piece) {
+    const Conditions c = conditions(q, piece);
     bool outside = false, inside = true;
     for (int i = 0; i < c.n; ++i) outside |= c.g[i].negative(), inside &= c.g[i].positive();
-    if (outside) continue;
-    if (inside) {
-      const Interval f0 = eval(q, Interval::point(t.lo)).f, f1 = eval(q, Interval::point(t.hi)).f;
-      if ((f0.positive() && f1.negative()) || (f0.negative() && f1.positive()))
-        return Filtered::Yes;
+    return outside ? Filtered::No : (inside ? Filtered::Yes : Filtered::Uncertain);
+  };
+  for (int round = 0;; ++round) {
+    if (round > 0 || p.hi - p.lo <= 0x1p-20) {
+      const Filtered r = decide(p);
+      if (r != Filtered::Uncertain || p.hi - p.lo <= 0x1p-40) return r;
     }
-    // Not the midpoint: handcrafted contacts sit at t = 1/2, 1/4, ..., and a piece that ends on
-    // a root can never show f changing sign.
-    const double mid = t.lo + 0.4914 * (t.hi - t.lo);
-    stack[top++] = {mid, t.hi};
-    stack[top++] = {t.lo, mid};
+    // Halve down to 2^-20 wide (first round), then 2^-20 times narrower.
+    const double target = round == 0 ? 0x1p-20 : (p.hi - p.lo) * 0x1p-20;
+    while (p.hi - p.lo > target) {
+      // At the middle, or at 7/16 when the root sits (nearly) on the middle: handcrafted
+      // contacts sit at dyadic times.
+      bool moved = false;
+      for (const double s : {0.5, 7.0 / 16}) {
+        Piece left, right;
+        split(p, s, left, right);
+        const double err = bound(f, left.depth);
+        const int s0 = sign_of(left.b[0], err), sm = sign_of(left.b[3], err);
+        if (s0 == 0 || sm == 0) continue;
+        p = s0 != sm ? left : right;
+        moved = true;
+        break;
+      }
+      // f too flat here to narrow further (nearly coplanar for a while): decide on this piece.
+      if (!moved) return decide(p);
+    }
   }
-  return Filtered::No;
+}
+
+// Stage 2: isolate the roots of f in [0, 1] by Bernstein subdivision (a piece whose
+// coefficients are certain and of one sign holds no root; one sign variation with
+// f(lo) f(hi) < 0 holds exactly one simple root), then decide the contact at each root.
+Filtered subdivide(const Query& q, const Bernstein& f) {
+  constexpr int kMaxPieces = 24, kMaxDepth = 10;
+  Piece stack[kMaxDepth + 2];
+  int top = 0, pieces = 0;
+  stack[top++] = {0, 1, 0, {f.b[0], f.b[1], f.b[2], f.b[3]}, 0};
+  bool uncertain = false;
+  while (top > 0) {
+    const Piece p = stack[--top];
+    const double err = bound(f, p.depth);
+    const int v = variations(p, err);
+    if (v == 0) continue;  // one certain sign: no root here
+    if (v < 0) {
+      // f's sign is uncertain somewhere here (f may even vanish throughout, as for a cube
+      // sliding on a plane): a condition certainly < 0 over the whole piece still excludes it.
+      const Conditions c = conditions(q, p);
+      bool outside = false;
+      for (int i = 0; i < c.n; ++i) outside |= c.g[i].negative();
+      if (outside) continue;
+    }
+    if (v == 1 && sign_of(p.b[0], err) != sign_of(p.b[3], err)) {
+      const Filtered r = contact_at_root(q, f, p);
+      if (r == Filtered::Yes) return r;
+      uncertain |= r == Filtered::Uncertain;
+      continue;
+    }
+    if (p.depth == kMaxDepth || ++pieces > kMaxPieces) {
+      uncertain = true;
+      continue;
+    }
+    // Not the middle: handcrafted contacts sit at t = 1/2, 1/4, ..., and a piece that ends on
+    // a root never shows a certain sign there.
+    Piece left, right;
+    split(p, 7.0 / 16, left, right);
+    stack[top++] = right;
+    stack[top++] = left;
+  }
+  return uncertain ? Filtered::Uncertain : Filtered::No;
 }
 
 }  // namespace
@@ -129,8 +250,10 @@ Filtered robust_ccd_filter(const Query& q) {
   const auto& x = q.x;
   const Vec3 u[2] = {x[1] - x[0], x[5] - x[4]}, v[2] = {x[2] - x[0], x[6] - x[4]},
              w[2] = {x[3] - x[0], x[7] - x[4]};
-  if (bernstein_sign(u, v, w) != 0) return Filtered::No;
-  return bisect(q);
+  const Bernstein f = bernstein(u, v, w);
+  if (!f.valid) return Filtered::Uncertain;
+  if (bernstein_sign(f) != 0) return Filtered::No;
+  return subdivide(q, f);
 }
 
 }  // namespace fdh
