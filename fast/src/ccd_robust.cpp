@@ -201,7 +201,7 @@ Filtered contact_at_root(const Query& q, const Bernstein& f, Piece p) {
 // coefficients are certain and of one sign holds no root; one sign variation with
 // f(lo) f(hi) < 0 holds exactly one simple root), then decide the contact at each root.
 Filtered subdivide(const Query& q, const Bernstein& f) {
-  constexpr int kMaxPieces = 24, kMaxDepth = 10;
+  constexpr int kMaxPieces = 12, kMaxDepth = 8;
   Piece stack[kMaxDepth + 2];
   int top = 0, pieces = 0;
   stack[top++] = {0, 1, 0, {f.b[0], f.b[1], f.b[2], f.b[3]}, 0};
