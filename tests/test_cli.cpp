@@ -118,5 +118,25 @@ TEST(Cli, CheckPassesOnHandMadeTruth) {
   EXPECT_EQ(fdhcert({"classify", kData + "static.vf", "--check"}).status, 0);
 }
 
+// generate writes the same file for the same seed, and classify checks robust = exact on it.
+TEST(Cli, GenerateIsDeterministicAndClassifiable) {
+  const std::string a = ::testing::TempDir() + "gen_a.vf", b = ::testing::TempDir() + "gen_b.vf";
+  for (const std::string& f : {a, b})
+    ASSERT_EQ(
+        fdhcert({"generate", "generic-moving", "--count", "300", "--seed", "7", "--out", f}).status,
+        0);
+  std::ifstream fa(a), fb(b);
+  std::stringstream sa, sb;
+  sa << fa.rdbuf();
+  sb << fb.rdbuf();
+  EXPECT_EQ(sa.str(), sb.str());
+  const CliRun r = fdhcert({"classify", a, "--methods", "exact,robust,float-cubic", "--check"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("moving vertex-face"), std::string::npos) << r.out;
+  EXPECT_EQ(fdhcert({"generate", "no-such-family", "--out", a}).status, 2);
+  EXPECT_EQ(fdhcert({"generate", "generic-moving"}).status, 2);                       // no --out
+  EXPECT_EQ(fdhcert({"generate", "angled", "--count", "20", "--out", b}).status, 0);  // static
+}
+
 }  // namespace
 }  // namespace fdh::verify

@@ -19,7 +19,7 @@ Writes N queries (default 10000) of a generator family to FILE in the native
 format, with the truth where the construction knows it. Case i comes from the
 seed (S, i), as in fuzz: the same seed gives the same file.
 
-FAMILY is a static vertex-face family (the 15 of fuzz --help, e.g. generic) or
+FAMILY is a static vertex-face family (the 15 of fuzz --help, e.g. angled) or
 a moving one: random-linear, generic-moving, rotating, hourglass, two-crossings, coplanar,
 sliding-on-edge, parallel-edges, degenerate-edge. generic-moving is the
 generic case (full-precision random coordinates, no exact coincidence);
