@@ -10,7 +10,7 @@ namespace fdh::cloth {
 
 FrameTimes& FrameTimes::operator+=(const FrameTimes& o) {
   springs += o.springs, refit += o.refit, traversal += o.traversal;
-  narrow += o.narrow, response += o.response;
+  narrow += o.narrow, response += o.response, self += o.self;
   return *this;
 }
 
@@ -51,7 +51,7 @@ double seconds_since(Clock::time_point& t) {
 
 }  // namespace
 
-Simulation::Simulation(const Scene& scene, NarrowPhase narrow, int k, double dt)
+Simulation::Simulation(const Scene& scene, NarrowPhase narrow, int k, double dt, CcdTest self_exact)
     : scene_(scene), cloth_(scene.cloth), narrow_(narrow), dt_(dt > 0 ? dt : scene.dt) {
   if (!narrow_) throw std::invalid_argument("no narrow-phase test");
   for (const Obstacle& o : scene.obstacles) mesh_.append(obstacle_mesh(o, scene.skin()));
@@ -72,6 +72,7 @@ Simulation::Simulation(const Scene& scene, NarrowPhase narrow, int k, double dt)
     default:
       throw std::invalid_argument("k must be 6, 14, 18 or 26, not " + std::to_string(k));
   }
+  if (scene.self_collision) self_pass_ = std::make_unique<SelfCollision>(cloth_, k, self_exact);
 }
 
 Simulation::~Simulation() = default;
@@ -113,6 +114,9 @@ void Simulation::step() {
     v[q.particle] = respond(v[q.particle], n, scene_.response);
   }
   times_.response = seconds_since(clock);
+
+  if (self_pass_) self_ = self_pass_->resolve(cloth_, x0_, x, v);
+  times_.self = seconds_since(clock);
 }
 
 }  // namespace fdh::cloth

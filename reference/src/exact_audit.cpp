@@ -75,7 +75,7 @@ AuditCounts Audit::count(const std::vector<Vec3>& x,
   std::vector<Primitive::Id> hits;
   for (const auto& [i, j] : edges) {
     const K::Segment_3 s(point(x[i]), point(x[j]));
-    if (!CGAL::do_overlap(s.bbox(), impl_->box)) continue;
+    if (s.is_degenerate() || !CGAL::do_overlap(s.bbox(), impl_->box)) continue;
     hits.clear();
     impl_->tree.all_intersected_primitives(s, std::back_inserter(hits));
     for (const auto& t : hits) {
@@ -90,6 +90,50 @@ AuditCounts Audit::count(const std::vector<Vec3>& x,
     }
   }
   return c;
+}
+
+long self_crossings(const std::vector<Vec3>& x, const std::vector<std::array<int, 2>>& edges,
+                    const std::vector<Tri>& tris) {
+  Triangles triangles;
+  std::vector<int> index;  // triangles[i] is tris[index[i]]
+  for (int t = 0; t < int(tris.size()); ++t) {
+    const Point a = point(x[tris[t][0]]), b = point(x[tris[t][1]]), c = point(x[tris[t][2]]);
+    if (CGAL::collinear(a, b, c)) continue;
+    triangles.emplace_back(a, b, c);
+    index.push_back(t);
+  }
+  if (triangles.empty()) return 0;
+  const Tree tree(triangles.begin(), triangles.end());
+  long crossing = 0;
+  std::vector<Primitive::Id> near;
+  for (const auto& [i, j] : edges) {
+    const Point p = point(x[i]), q = point(x[j]);
+    if (p == q) continue;
+    // Boxes first (a cloth edge's box meets its own neighbours' triangles): only triangles
+    // sharing no particle with the edge get the exact tests.
+    near.clear();
+    tree.all_intersected_primitives(K::Segment_3(p, q).bbox(), std::back_inserter(near));
+    for (const auto& h : near) {
+      const Tri& t = tris[index[h - triangles.begin()]];
+      if (t[0] == i || t[1] == i || t[2] == i || t[0] == j || t[1] == j || t[2] == j) continue;
+      const Point &a = h->vertex(0), &b = h->vertex(1), &c = h->vertex(2);
+      const CGAL::Orientation sp = CGAL::orientation(a, b, c, p),
+                              sq = CGAL::orientation(a, b, c, q);
+      if (sp == CGAL::COPLANAR || sq == CGAL::COPLANAR || sp == sq) continue;
+      // Ends strictly apart: the segment meets the closed triangle iff it passes on the same
+      // side of (or on) its three edge lines.
+      const CGAL::Orientation e0 = CGAL::orientation(p, q, a, b),
+                              e1 = CGAL::orientation(p, q, b, c),
+                              e2 = CGAL::orientation(p, q, c, a);
+      const bool no_negative = e0 != CGAL::NEGATIVE && e1 != CGAL::NEGATIVE && e2 != CGAL::NEGATIVE;
+      const bool no_positive = e0 != CGAL::POSITIVE && e1 != CGAL::POSITIVE && e2 != CGAL::POSITIVE;
+      if (no_negative || no_positive) {
+        ++crossing;
+        break;
+      }
+    }
+  }
+  return crossing;
 }
 
 }  // namespace fdh::exact

@@ -125,6 +125,13 @@ const std::map<std::string, Reader>& readers() {
        [](const Line& l, Scene& s) { l.expect(1, 1), s.response.restitution = l.within(0, 0, 1); }},
       {"friction", [](const Line& l,
                       Scene& s) { l.expect(1, 1), s.response.friction = l.at_least(0, 0, false); }},
+      {"self_collision",
+       [](const Line& l, Scene& s) {
+         l.expect(1, 1);
+         if (l.word(0) != "on" && l.word(0) != "off")
+           l.fail("self_collision takes on or off, not '" + l.word(0) + "'");
+         s.self_collision = l.word(0) == "on";
+       }},
       {"thickness",
        [](const Line& l, Scene& s) {
          l.expect(1, 1);

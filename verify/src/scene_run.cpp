@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "fdh/exact/ccd.hpp"
 #include "fdh/exact/point_triangle.hpp"
 #include "fdh/point_triangle/linear_system.hpp"
 #include "fdh/point_triangle/paper.hpp"
@@ -54,7 +55,8 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
   r.skin = scene.skin();
   r.frames = opt.frames >= 0 ? opt.frames : scene.frames;
 
-  cloth::Simulation sim(scene, narrow_phase_named(opt.narrow), opt.k, r.dt);
+  cloth::Simulation sim(scene, narrow_phase_named(opt.narrow), opt.k, r.dt, &exact::ccd_hit);
+  r.self_audited = opt.check && (opt.audit_self || scene.self_collision);
   std::vector<cloth::TriMesh> obstacles;
   for (const auto& o : scene.obstacles) obstacles.push_back(cloth::obstacle_mesh(o));
   const exact::Audit audit(obstacles);
@@ -65,6 +67,9 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
     r.time += sim.times();
     r.candidates += long(sim.queries().size());
     r.collisions += sim.collisions();
+    r.self_queries += sim.self().queries;
+    r.self_hits += sim.self().hits;
+    r.self_stops += sim.self().stopped_all;
     if (opt.check) {
       for (const auto& q : sim.queries()) {
         const Tri& t = mesh.tris[q.triangle];
@@ -74,7 +79,10 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
         r.fp += q.hit && !truth;
         r.fn += !q.hit && truth;
       }
-      const exact::AuditCounts c = audit.count(sim.cloth().x(), sim.cloth().edges());
+      exact::AuditCounts c = audit.count(sim.cloth().x(), sim.cloth().edges());
+      if (r.self_audited)
+        c.self_crossing =
+            exact::self_crossings(sim.cloth().x(), sim.cloth().edges(), sim.cloth().triangles());
       r.audit += c;
       r.audit_last_inside = c.inside, r.audit_last_crossing = c.crossing;
     }

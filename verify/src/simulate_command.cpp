@@ -17,8 +17,8 @@ namespace {
 
 const char* const kSimulateHelp =
     R"(usage: fdhcert simulate SCENE [--grid N] [--frames F] [--narrow METHOD] [--k K]
-                         [--thickness T] [--obj DIR] [--png FILE] [--record FILE]
-                         [--json] [--no-check]
+                         [--thickness T] [--self on|off] [--audit-self] [--obj DIR]
+                         [--png FILE] [--record FILE] [--json] [--no-check]
 
 Runs the cloth of SCENE (a .scene file, docs/formats.md; shipped ones are in
 corpus/scenes/) among its obstacles, one step of dt per frame: springs and
@@ -42,6 +42,11 @@ options:
   --k K             the FDH's k: 6, 14, 18 (default) or 26
   --thickness T     the collision skin in m (default: the scene's; 0 collides
                     with the obstacles' own surfaces, see docs/cloth.md)
+  --self on|off     the cloth against itself: moving vertex-face and edge-edge
+                    tests with robust CCD among primitives sharing no particle
+                    (default: the scene's self_collision, else off)
+  --audit-self      count self-crossings (cloth edges through the cloth's own
+                    triangles) even without the self-collision pass
   --obj DIR         write DIR/frame_NNNNN.obj for every frame (cloth and
                     obstacles), for Blender or ParaView
   --png FILE        render the last frame to FILE
@@ -74,6 +79,7 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
   std::string scene_path, obj_dir, png, record;
   int grid = 0;
   double thickness = -2;  // not given
+  int self = -1;          // not given
   bool json = false;
   SceneRunOptions opt;
   for (ArgReader a(args); a.next();) {
@@ -100,6 +106,12 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
       const auto t = parse_double(v, why);
       if (!t || *t < 0) throw UsageError("--thickness takes a length >= 0 in m, not '" + v + "'");
       thickness = *t;
+    } else if (a.is("--self")) {
+      const std::string& v = a.value();
+      if (v != "on" && v != "off") throw UsageError("--self takes on or off, not '" + v + "'");
+      self = v == "on";
+    } else if (a.is("--audit-self")) {
+      opt.audit_self = true;
     } else if (a.is("--obj")) {
       obj_dir = a.value();
     } else if (a.is("--png")) {
@@ -122,6 +134,7 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
   cloth::Scene scene = read_scene(scene_path);
   if (grid) scene.cloth.grid = grid;
   if (thickness >= 0) scene.thickness = thickness;
+  if (self >= 0) scene.self_collision = self == 1;
   if (!obj_dir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(obj_dir, ec);
@@ -182,6 +195,7 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
         << ", \"traversal\": " << general(per * t.traversal)
         << ", \"narrow\": " << general(per * t.narrow)
         << ", \"response\": " << general(per * t.response)
+        << ", \"self\": " << general(per * t.self)
         << ", \"collision\": " << general(per * t.collision())
         << ", \"total\": " << general(per * t.total()) << "}, \"candidates\": " << r.candidates
         << ", \"collisions\": " << r.collisions;
@@ -190,6 +204,13 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
           << ", \"crossing\": " << r.audit.crossing;
     else
       out << ", \"fp\": null, \"fn\": null, \"inside\": null, \"crossing\": null";
+    out << ", \"self_collision\": " << (scene.self_collision ? "true" : "false")
+        << ", \"self_queries\": " << r.self_queries << ", \"self_hits\": " << r.self_hits
+        << ", \"self_stops\": " << r.self_stops << ", \"self_crossing\": ";
+    if (r.self_audited)
+      out << r.audit.self_crossing;
+    else
+      out << "null";
     out << ", \"energy_start\": " << general(r.energy_start)
         << ", \"energy_end\": " << general(r.energy_end) << "}\n";
     return 0;
@@ -204,6 +225,7 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
   out << "ms per frame   springs+integration " << fixed(per * t.springs, 4) << "   refit "
       << fixed(per * t.refit, 4) << "   traversal " << fixed(per * t.traversal, 4) << "   narrow "
       << fixed(per * t.narrow, 4) << "   response " << fixed(per * t.response, 4)
+      << (scene.self_collision ? "   self " + fixed(per * t.self, 4) : std::string())
       << "\n               collision " << fixed(per * t.collision(), 4) << "   total "
       << fixed(per * t.total(), 4) << "\n";
   out << "counts         " << r.candidates << " candidate pairs, " << r.collisions
@@ -216,6 +238,12 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
         << " crossing edges, summed over the frames (last frame: " << r.audit_last_inside << " and "
         << r.audit_last_crossing << ")\n";
   }
+  if (scene.self_collision)
+    out << "self-collision " << r.self_queries << " CCD queries, " << r.self_hits << " contacts, "
+        << r.self_stops << " frames stopped whole\n";
+  if (r.self_audited)
+    out << "self (exact)   " << r.audit.self_crossing
+        << " cloth edges through the cloth's own triangles, summed over the frames\n";
   if (!png.empty()) out << "picture        " << png << "\n";
   if (!record.empty()) out << "queries        " << record << "\n";
   if (!obj_dir.empty()) out << "frames         " << obj_dir << "/frame_*.obj\n";

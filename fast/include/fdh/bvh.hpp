@@ -160,14 +160,11 @@ double size(const Kdop<K>& b) {  // slabs 0-2 are the axes for every k
   return (b.hi[0] - b.lo[0]) + (b.hi[1] - b.lo[1]) + (b.hi[2] - b.lo[2]);
 }
 
-template <int K>
-void traverse(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, int>>& out,
-              int first_slab = -1) {
-  if (a.empty() || b.empty()) return;
-  const auto overlaps = [first_slab](const Kdop<K>& x, const Kdop<K>& y) {
-    return first_slab >= 0 ? overlap(x, y, first_slab) : overlap(x, y);
-  };
-  std::vector<std::pair<int, int>> stack = {{0, 0}};
+// Every pair of primitives under the node pairs on `stack`, one from each side, whose leaf
+// boxes overlap: the loop of traverse() and traverse_self().
+template <int K, class Overlaps>
+void descend_pairs(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, int>>& stack,
+                   std::vector<std::pair<int, int>>& out, const Overlaps& overlaps) {
   while (!stack.empty()) {
     const auto [i, j] = stack.back();
     stack.pop_back();
@@ -185,6 +182,45 @@ void traverse(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, int>>
         for (int q = nb.first; q < nb.first + nb.count; ++q)
           out.push_back({a.prims()[p], b.prims()[q]});
     }
+  }
+}
+
+template <int K>
+void traverse(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, int>>& out,
+              int first_slab = -1) {
+  if (a.empty() || b.empty()) return;
+  std::vector<std::pair<int, int>> stack = {{0, 0}};
+  if (first_slab >= 0)
+    descend_pairs(a, b, stack, out, [first_slab](const Kdop<K>& x, const Kdop<K>& y) {
+      return overlap(x, y, first_slab);
+    });
+  else
+    descend_pairs(a, b, stack, out,
+                  [](const Kdop<K>& x, const Kdop<K>& y) { return overlap(x, y); });
+}
+
+// A tree against itself (self-collision): every unordered pair of distinct primitives whose
+// leaf boxes overlap, once, as (a, b) in some order. Each node's two children are traversed
+// against each other, and each child against itself: no node pair is visited twice, and no
+// primitive is paired with itself (traverse(t, t) would do both).
+template <int K>
+void traverse_self(const Bvh<K>& t, std::vector<std::pair<int, int>>& out) {
+  if (t.empty()) return;
+  std::vector<std::pair<int, int>> stack;
+  const auto overlaps = [](const Kdop<K>& x, const Kdop<K>& y) { return overlap(x, y); };
+  std::vector<int> pending = {0};
+  while (!pending.empty()) {
+    const auto& n = t.nodes()[pending.back()];
+    pending.pop_back();
+    if (n.leaf()) {
+      for (int p = n.first; p < n.first + n.count; ++p)
+        for (int q = p + 1; q < n.first + n.count; ++q) out.push_back({t.prims()[p], t.prims()[q]});
+      continue;
+    }
+    pending.push_back(n.left);
+    pending.push_back(n.right);
+    stack.push_back({n.left, n.right});
+    descend_pairs(t, t, stack, out, overlaps);
   }
 }
 

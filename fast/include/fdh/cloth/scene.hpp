@@ -36,6 +36,8 @@ struct Scene {
   // Negative = automatic, 0.6 × the particle spacing (docs/methods.md, "Cloth": why a point-only
   // test needs it).
   double thickness = -1;
+  // The cloth against itself (fdh/cloth/self_collision.hpp), after the obstacle response.
+  bool self_collision = false;
 
   double skin() const;  // the thickness in use, m
 };

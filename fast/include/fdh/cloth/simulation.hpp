@@ -4,7 +4,8 @@
 //   3. traversal: the cloth tree against the obstacles' tree (§3, y slab first as in §3.1);
 //   4. narrow phase: the chosen point–triangle test on every candidate pair (§3.2);
 //   5. response: for each hit, eqs. (4)–(5) on the velocity, and the particle put back on the
-//      surface it crossed (a hair outside it, so that the next step starts outside).
+//      surface it crossed (a hair outside it, so that the next step starts outside);
+//   6. self-collision, if the scene asks for it (fdh/cloth/self_collision.hpp).
 // The obstacles collide through a skin: each is grown by the scene's thickness.
 #pragma once
 
@@ -13,6 +14,7 @@
 
 #include "fdh/cloth/cloth.hpp"
 #include "fdh/cloth/scene.hpp"
+#include "fdh/cloth/self_collision.hpp"
 #include "fdh/vec3.hpp"
 
 namespace fdh::cloth {
@@ -26,8 +28,8 @@ using NarrowPhase = bool (*)(const Vec3& b0, const Vec3& b1, const Vec3& d, cons
 inline constexpr double kSurfaceGap = 9.313225746154785e-10;
 
 struct FrameTimes {  // seconds
-  double springs = 0, refit = 0, traversal = 0, narrow = 0, response = 0;
-  double collision() const { return refit + traversal + narrow + response; }
+  double springs = 0, refit = 0, traversal = 0, narrow = 0, response = 0, self = 0;
+  double collision() const { return refit + traversal + narrow + response + self; }
   double total() const { return springs + collision(); }
   FrameTimes& operator+=(const FrameTimes& o);
 };
@@ -39,8 +41,10 @@ struct NarrowQuery {
 
 class Simulation {
  public:
-  // k: the FDH's k (6, 14, 18 or 26). dt <= 0 takes the scene's.
-  Simulation(const Scene& scene, NarrowPhase narrow, int k = 18, double dt = 0);
+  // k: the FDH's k (6, 14, 18 or 26). dt <= 0 takes the scene's. self_exact: the exact CCD
+  // behind the self-collision pass's robust test; required if the scene asks for the pass.
+  Simulation(const Scene& scene, NarrowPhase narrow, int k = 18, double dt = 0,
+             CcdTest self_exact = nullptr);
   ~Simulation();
 
   void step();
@@ -56,6 +60,7 @@ class Simulation {
   const FrameTimes& times() const { return times_; }
   const std::vector<NarrowQuery>& queries() const { return queries_; }
   int collisions() const { return collisions_; }
+  const SelfCollision::Result& self() const { return self_; }
   const std::vector<Vec3>& step_start() const { return x0_; }
   const std::vector<Vec3>& step_end() const { return x1_; }
 
@@ -71,6 +76,8 @@ class Simulation {
   TriMesh mesh_;
   std::vector<Vec3> normals_;
   std::unique_ptr<BroadPhase> broad_;
+  std::unique_ptr<SelfCollision> self_pass_;
+  SelfCollision::Result self_;
   std::vector<Vec3> x0_, x1_;
   std::vector<std::pair<int, int>> pairs_;
   std::vector<NarrowQuery> queries_;

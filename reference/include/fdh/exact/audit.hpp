@@ -18,11 +18,18 @@ namespace fdh::exact {
 
 struct AuditCounts {
   long inside = 0, crossing = 0;
+  long self_crossing = 0;  // filled by self_crossings(), when asked for
   AuditCounts& operator+=(const AuditCounts& o) {
-    inside += o.inside, crossing += o.crossing;
+    inside += o.inside, crossing += o.crossing, self_crossing += o.self_crossing;
     return *this;
   }
 };
+
+// The cloth against itself: its edges that pass through one of its triangles sharing no
+// particle with the edge, the edge's ends strictly on opposite sides of the triangle's plane.
+// Zero-area triangles are skipped (nothing passes through them).
+long self_crossings(const std::vector<Vec3>& x, const std::vector<std::array<int, 2>>& edges,
+                    const std::vector<Tri>& tris);
 
 class Audit {
  public:

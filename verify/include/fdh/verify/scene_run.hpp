@@ -23,6 +23,9 @@ struct SceneRunOptions {
   int k = 18;
   int frames = -1;    // < 0: the scene's
   bool check = true;  // FP/FN and the audit (untimed)
+  // Audit the cloth against itself too (exact::self_crossings, every frame). On by default
+  // when the scene runs the self-collision pass.
+  bool audit_self = false;
   // Called after every frame (1-based), e.g. to write an OBJ or record the queries.
   std::function<void(const cloth::Simulation&, int frame)> on_frame;
 };
@@ -35,6 +38,8 @@ struct SceneRun {
   long candidates = 0, collisions = 0, fp = 0, fn = 0;
   exact::AuditCounts audit;  // summed over the frames
   long audit_last_inside = 0, audit_last_crossing = 0;
+  bool self_audited = false;
+  long self_queries = 0, self_hits = 0, self_stops = 0;  // the self-collision pass
   double energy_start = 0, energy_end = 0;
   std::vector<Vec3> final_x;  // the cloth's particles after the last frame
 
