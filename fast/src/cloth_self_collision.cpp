@@ -17,9 +17,6 @@ struct SelfCollision::Trees {
 
 template <int K>
 struct SelfCollision::TreesK : SelfCollision::Trees {
-  // Leaves of several primitives: a cloth's neighbouring boxes always touch, so a tree against
-  // itself visits node pairs all the way down; fewer, fuller leaves visit fewer of them.
-  static constexpr int kLeaf = 8;
   Bvh<K> points, triangles, edges;
   TreesK(const Cloth& c)
       : points(as_points(c.n()), c.x()),
