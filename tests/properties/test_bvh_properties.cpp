@@ -78,5 +78,34 @@ TEST(BvhProperties, RefitEqualsRebuild) {
   }));
 }
 
+// traverse_self (the cloth against itself) reports each unordered pair of distinct primitives
+// that traverse(t, t) reports, once, and nothing else; so it too contains the brute force.
+template <int K>
+void check_self(const Soup& a, int leaf_size) {
+  const Bvh<K> t(a.tris, a.x0, a.x1, leaf_size);
+  std::vector<std::pair<int, int>> self, both;
+  traverse_self(t, self);
+  traverse(t, t, both);
+  std::set<std::pair<int, int>> got;
+  for (const auto& [p, q] : self) {
+    RC_ASSERT(p != q);
+    RC_ASSERT(got.insert(std::minmax(p, q)).second);  // once
+  }
+  std::set<std::pair<int, int>> want;
+  for (const auto& [p, q] : both)
+    if (p != q) want.insert(std::minmax(p, q));
+  RC_ASSERT(got == want);
+}
+
+TEST(BvhProperties, SelfTraversalEqualsTraversalAgainstItself) {
+  EXPECT_TRUE(rc::check("self-traversal", [] {
+    const Soup a = *gen_soup(24);
+    const int leaf_size = *rc::gen::element(1, 4);
+    check_self<6>(a, leaf_size);
+    check_self<18>(a, leaf_size);
+    check_self<26>(a, leaf_size);
+  }));
+}
+
 }  // namespace
 }  // namespace fdh
