@@ -47,22 +47,9 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
 
 SelfCollision::SelfCollision(const Cloth& cloth, int k, CcdTest exact) : exact_(exact) {
   if (!exact_) throw std::invalid_argument("self-collision needs an exact CCD fallback");
-  switch (k) {
-    case 6:
-      trees_ = std::make_unique<TreesK<6>>(cloth);
-      break;
-    case 14:
-      trees_ = std::make_unique<TreesK<14>>(cloth);
-      break;
-    case 18:
-      trees_ = std::make_unique<TreesK<18>>(cloth);
-      break;
-    case 26:
-      trees_ = std::make_unique<TreesK<26>>(cloth);
-      break;
-    default:
-      throw std::invalid_argument("k must be 6, 14, 18 or 26, not " + std::to_string(k));
-  }
+  trees_ = with_k(k, [&](auto kc) -> std::unique_ptr<Trees> {
+    return std::make_unique<TreesK<decltype(kc)::value>>(cloth);
+  });
 }
 
 SelfCollision::~SelfCollision() = default;

@@ -56,22 +56,9 @@ Simulation::Simulation(const Scene& scene, NarrowPhase narrow, int k, double dt,
   if (!narrow_) throw std::invalid_argument("no narrow-phase test");
   for (const Obstacle& o : scene.obstacles) mesh_.append(obstacle_mesh(o, scene.skin()));
   for (int t = 0; t < int(mesh_.tris.size()); ++t) normals_.push_back(unit_normal(mesh_, t));
-  switch (k) {
-    case 6:
-      broad_ = std::make_unique<BroadPhaseK<6>>(cloth_.x(), mesh_);
-      break;
-    case 14:
-      broad_ = std::make_unique<BroadPhaseK<14>>(cloth_.x(), mesh_);
-      break;
-    case 18:
-      broad_ = std::make_unique<BroadPhaseK<18>>(cloth_.x(), mesh_);
-      break;
-    case 26:
-      broad_ = std::make_unique<BroadPhaseK<26>>(cloth_.x(), mesh_);
-      break;
-    default:
-      throw std::invalid_argument("k must be 6, 14, 18 or 26, not " + std::to_string(k));
-  }
+  broad_ = with_k(k, [&](auto kc) -> std::unique_ptr<BroadPhase> {
+    return std::make_unique<BroadPhaseK<decltype(kc)::value>>(cloth_.x(), mesh_);
+  });
   if (scene.self_collision) self_pass_ = std::make_unique<SelfCollision>(cloth_, k, self_exact);
 }
 

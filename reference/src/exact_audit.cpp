@@ -28,6 +28,21 @@ Point point(const Vec3& p) {
   return Point(p.x, p.y, p.z);
 }
 
+// Does segment pq pass through the closed triangle abc with p and q strictly on opposite sides
+// of its plane? Then the segment meets the triangle iff it passes on the same side of (or on)
+// the three lines of its edges.
+bool passes_through(const Point& p, const Point& q, const Point& a, const Point& b,
+                    const Point& c) {
+  const CGAL::Orientation sp = CGAL::orientation(a, b, c, p), sq = CGAL::orientation(a, b, c, q);
+  if (sp == CGAL::COPLANAR || sq == CGAL::COPLANAR || sp == sq) return false;
+  const CGAL::Orientation e[3] = {CGAL::orientation(p, q, a, b), CGAL::orientation(p, q, b, c),
+                                  CGAL::orientation(p, q, c, a)};
+  bool negative = false, positive = false;
+  for (const CGAL::Orientation o : e)
+    negative |= o == CGAL::NEGATIVE, positive |= o == CGAL::POSITIVE;
+  return !(negative && positive);
+}
+
 }  // namespace
 
 struct Audit::Impl {
@@ -72,22 +87,19 @@ AuditCounts Audit::count(const std::vector<Vec3>& x,
         break;
       }
   }
-  std::vector<Primitive::Id> hits;
+  std::vector<Primitive::Id> near;
   for (const auto& [i, j] : edges) {
-    const K::Segment_3 s(point(x[i]), point(x[j]));
-    if (s.is_degenerate() || !CGAL::do_overlap(s.bbox(), impl_->box)) continue;
-    hits.clear();
-    impl_->tree.all_intersected_primitives(s, std::back_inserter(hits));
-    for (const auto& t : hits) {
-      const CGAL::Orientation a =
-          CGAL::orientation(t->vertex(0), t->vertex(1), t->vertex(2), s.source());
-      const CGAL::Orientation b =
-          CGAL::orientation(t->vertex(0), t->vertex(1), t->vertex(2), s.target());
-      if (a != CGAL::COPLANAR && b != CGAL::COPLANAR && a != b) {  // met, ends strictly apart
+    const Point p = point(x[i]), q = point(x[j]);
+    if (p == q) continue;
+    const CGAL::Bbox_3 box = K::Segment_3(p, q).bbox();
+    if (!CGAL::do_overlap(box, impl_->box)) continue;
+    near.clear();
+    impl_->tree.all_intersected_primitives(box, std::back_inserter(near));
+    for (const auto& t : near)
+      if (passes_through(p, q, t->vertex(0), t->vertex(1), t->vertex(2))) {
         ++c.crossing;
         break;
       }
-    }
   }
   return c;
 }
@@ -116,18 +128,7 @@ long self_crossings(const std::vector<Vec3>& x, const std::vector<std::array<int
     for (const auto& h : near) {
       const Tri& t = tris[index[h - triangles.begin()]];
       if (t[0] == i || t[1] == i || t[2] == i || t[0] == j || t[1] == j || t[2] == j) continue;
-      const Point &a = h->vertex(0), &b = h->vertex(1), &c = h->vertex(2);
-      const CGAL::Orientation sp = CGAL::orientation(a, b, c, p),
-                              sq = CGAL::orientation(a, b, c, q);
-      if (sp == CGAL::COPLANAR || sq == CGAL::COPLANAR || sp == sq) continue;
-      // Ends strictly apart: the segment meets the closed triangle iff it passes on the same
-      // side of (or on) its three edge lines.
-      const CGAL::Orientation e0 = CGAL::orientation(p, q, a, b),
-                              e1 = CGAL::orientation(p, q, b, c),
-                              e2 = CGAL::orientation(p, q, c, a);
-      const bool no_negative = e0 != CGAL::NEGATIVE && e1 != CGAL::NEGATIVE && e2 != CGAL::NEGATIVE;
-      const bool no_positive = e0 != CGAL::POSITIVE && e1 != CGAL::POSITIVE && e2 != CGAL::POSITIVE;
-      if (no_negative || no_positive) {
+      if (passes_through(p, q, h->vertex(0), h->vertex(1), h->vertex(2))) {
         ++crossing;
         break;
       }
