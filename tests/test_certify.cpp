@@ -20,6 +20,8 @@ CertifyOptions small(const fs::path& corpus, const fs::path& out) {
   o.out_dir = out.string();
   o.per_family = 20;
   o.soups = 3;
+  o.scene_frames = 500;
+  o.scene_stride = 100;
   return o;
 }
 
@@ -28,13 +30,18 @@ TEST(Certify, CertifiesTheCommittedCorpusAndCountsEveryCheck) {
   const Certificate c = certify(small(FDH_SOURCE_DIR "/corpus", out));
   EXPECT_TRUE(c.certified()) << c.first_violation;
   EXPECT_GT(c.corpus_queries, 50);
-  EXPECT_EQ(c.fuzzed_queries, 20 * long(c.families.size()));
+  EXPECT_EQ(c.fuzzed_queries, 20 * long(c.families.size() + c.moving_families.size()));
+  EXPECT_EQ(c.moving_families.size(), 9u);
+  EXPECT_GT(c.moving_queries, 20 * 9 - 1);
+  EXPECT_GE(c.scenes, 7);
+  EXPECT_GT(c.scene_queries, 0);
   EXPECT_EQ(c.soup_pairs[0], 3);
   EXPECT_GT(c.boxes[3], c.corpus_queries);
   EXPECT_GT(c.truths, 50);
   const std::string json = certificate_json(c);
   EXPECT_NE(json.find("\"certified\": true"), std::string::npos);
   EXPECT_NE(json.find("\"cgal\": \"5."), std::string::npos);
+  EXPECT_NE(json.find("\"robust_ccd_equals_exact_ccd\""), std::string::npos);
   EXPECT_NE(certificate_markdown(c).find("**Certified**"), std::string::npos);
 }
 
@@ -54,6 +61,22 @@ TEST(Certify, AWrongStoredTruthIsAViolationSavedAsACorpusFile) {
     saved += e.path().filename().string().rfind("violation-", 0) == 0;
   EXPECT_EQ(saved, 1);
   EXPECT_TRUE(fs::exists(out / "certificate.json"));
+}
+
+// A moving query goes through CCD: a wrong stored truth there is a violation too.
+TEST(Certify, AWrongTruthOnAMovingQueryIsAViolation) {
+  const fs::path corpus = fresh_temp_dir("certify_moving_corpus"),
+                 out = fresh_temp_dir("certify_moving_out");
+  // The triangle rises through the still point at t = 1/2: a hit, stored as 0.
+  std::ofstream(corpus / "rising.vf") << "vf rising  0.25 0.25 0  0 0 -1  1 0 -1  0 1 -1  "
+                                         "0.25 0.25 0  0 0 1  1 0 1  0 1 1  0\n";
+  CertifyOptions o = small(corpus, out);
+  o.per_family = 2;
+  const Certificate c = certify(o);
+  EXPECT_FALSE(c.certified());
+  EXPECT_EQ(c.truth_violations, 1);
+  EXPECT_EQ(c.moving_violations, 0);
+  EXPECT_NE(c.first_violation.find("rising.vf:1"), std::string::npos) << c.first_violation;
 }
 
 }  // namespace

@@ -1,11 +1,15 @@
 #include "fdh/verify/certify.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <set>
 #include <sstream>
 
 #include "fdh/bvh.hpp"
+#include "fdh/ccd/robust.hpp"
+#include "fdh/cloth/simulation.hpp"
+#include "fdh/exact/ccd.hpp"
 #include "fdh/exact/kdop.hpp"
 #include "fdh/exact/point_triangle.hpp"
 #include "fdh/exact/versions.hpp"
@@ -15,7 +19,10 @@
 #include "fdh/verify/families.hpp"
 #include "fdh/verify/fuzz.hpp"
 #include "fdh/verify/json.hpp"
+#include "fdh/verify/moving_families.hpp"
 #include "fdh/verify/query_io.hpp"
+#include "fdh/verify/scene_file.hpp"
+#include "fdh/verify/scene_run.hpp"
 
 namespace fdh::verify {
 namespace fs = std::filesystem;
@@ -39,21 +46,14 @@ class Certifier {
   void check_query(const Query& q) {
     const std::vector<Vec3> all(q.x.begin(), q.x.end());
     check_boxes(q, all);
-    if (!q.is_static_vf()) return;
+    if (!q.is_static_vf()) return check_moving(q);
     check_boxes(q, {q.b0(), q.b1()});
     check_boxes(q, {q.d(), q.e(), q.f()});
     ++c_.static_queries;
     const Filtered f = robust_point_triangle_filter(q.b0(), q.b1(), q.d(), q.e(), q.f());
     c_.filter_decided += f != Filtered::Uncertain;
     const bool exact = exact::point_triangle_hit(q.b0(), q.b1(), q.d(), q.e(), q.f());
-    if (q.has_truth()) {
-      ++c_.truths;
-      if (exact != bool(q.truth)) {
-        ++c_.truth_violations;
-        violation(q, "exact says " + std::string(exact ? "hit" : "no") +
-                         ", the stored truth says " + (q.truth ? "hit" : "no"));
-      }
-    }
+    check_truth(q, exact);
     const bool robust =
         robust_point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f(), &exact::point_triangle_hit);
     if (robust != exact) {
@@ -62,6 +62,32 @@ class Certifier {
       saved.truth = exact;
       violation(saved, "robust says " + std::string(robust ? "hit" : "no") + ", exact says " +
                            (exact ? "hit" : "no"));
+    }
+  }
+
+  // A moving query: robust CCD against exact CCD, and exact against a stored truth.
+  void check_moving(const Query& q) {
+    ++c_.moving_queries;
+    c_.moving_filter_decided += robust_ccd_filter(q) != Filtered::Uncertain;
+    const bool exact = exact::ccd_hit(q);
+    check_truth(q, exact);
+    const bool robust = robust_ccd(q, &exact::ccd_hit);
+    if (robust != exact) {
+      ++c_.moving_violations;
+      Query saved = q;
+      saved.truth = exact;
+      violation(saved, "robust CCD says " + std::string(robust ? "hit" : "no") +
+                           ", exact CCD says " + (exact ? "hit" : "no"));
+    }
+  }
+
+  void check_truth(const Query& q, bool exact) {
+    if (!q.has_truth()) return;
+    ++c_.truths;
+    if (exact != bool(q.truth)) {
+      ++c_.truth_violations;
+      violation(q, "exact says " + std::string(exact ? "hit" : "no") + ", the stored truth says " +
+                       (q.truth ? "hit" : "no"));
     }
   }
 
@@ -146,6 +172,42 @@ class Certifier {
   Certificate& c_;
 };
 
+// Every shipped scene runs with robust as its narrow phase (and its self-collision pass, if it
+// has one); the narrow-phase queries of every stride-th frame are certified like any other.
+void check_scenes(Certificate& c, Certifier& cert) {
+  const fs::path dir = fs::path(c.options.corpus_dir) / "scenes";
+  if (!fs::is_directory(dir)) return;
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".scene") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  const int stride = c.options.scene_stride;
+  for (const fs::path& file : files) {
+    const cloth::Scene scene = read_scene(file.string());
+    const cloth::Cloth probe(scene.cloth);
+    cloth::Simulation sim(scene, narrow_phase_named("robust"), 18,
+                          std::min(scene.dt, 0.9 * probe.stable_dt()), &exact::ccd_hit);
+    const int frames = int(std::min<long>(scene.frames, c.options.scene_frames));
+    ++c.scenes;
+    for (int f = 1; f <= frames; ++f) {
+      sim.step();
+      if (f % stride) continue;
+      const auto& m = sim.collision_mesh();
+      for (const auto& nq : sim.queries()) {
+        Query q;
+        q.id = scene.name + "/f" + std::to_string(f) + "p" + std::to_string(nq.particle) + "t" +
+               std::to_string(nq.triangle);
+        const Tri& t = m.tris[nq.triangle];
+        q.x = {sim.step_start()[nq.particle], m.x[t[0]], m.x[t[1]], m.x[t[2]],
+               sim.step_end()[nq.particle],   m.x[t[0]], m.x[t[1]], m.x[t[2]]};
+        q.file = file.string();
+        ++c.scene_queries;
+        cert.check_query(q);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 Certificate certify(const CertifyOptions& options) {
@@ -153,6 +215,8 @@ Certificate certify(const CertifyOptions& options) {
   c.options = options;
   if (c.options.per_family < 0) c.options.per_family = options.quick ? 200 : 3000;
   if (c.options.soups < 0) c.options.soups = options.quick ? 30 : 300;
+  if (c.options.scene_frames < 0) c.options.scene_frames = options.quick ? 600 : 100000000;
+  if (c.options.scene_stride < 1) c.options.scene_stride = options.quick ? 50 : 10;
   c.commit = git_commit();
   c.cgal = exact::cgal_library_version();
   c.gmp = exact::gmp_library_version();
@@ -173,6 +237,14 @@ Certificate certify(const CertifyOptions& options) {
       cert.check_query(
           gen_family(f)(rc::Random(case_seed(c.options.seed * 1000 + stream, i))).value().query);
   }
+  for (const MovingFamily f : all_moving_families()) {
+    c.moving_families.push_back(moving_family_name(f));
+    ++stream;
+    for (long i = 0; i < c.options.per_family; ++i, ++c.fuzzed_queries)
+      cert.check_query(
+          gen_moving(f)(rc::Random(case_seed(c.options.seed * 1000 + stream, i))).value().query);
+  }
+  check_scenes(c, cert);
   for (long i = 0; i < c.options.soups; ++i) {
     const std::uint64_t s = c.options.seed * 1000 + 999;
     cert.check_soups(gen_soup(24)(rc::Random(case_seed(s, 2 * i))).value(),
@@ -212,7 +284,9 @@ std::string certificate_json(const Certificate& c) {
      << ", \"fuzzed_per_family\": " << c.options.per_family
      << ", \"families\": " << c.families.size() << ", \"fuzzed_queries\": " << c.fuzzed_queries
      << ", \"soup_pairs\": " << c.options.soups
-     << ", \"scene_queries\": 0, \"extra_files\": " << c.options.extra_files.size()
+     << ", \"moving_families\": " << c.moving_families.size() << ", \"scenes\": " << c.scenes
+     << ", \"scene_queries\": " << c.scene_queries
+     << ", \"extra_files\": " << c.options.extra_files.size()
      << ", \"extra_queries\": " << c.extra_queries << "},\n \"kdop_contains_exact\": ";
   per_k("boxes", c.boxes, nullptr, c.boxes, "violations", c.box_violations);
   os << ",\n \"tree_no_false_cull\": ";
@@ -221,6 +295,9 @@ std::string certificate_json(const Certificate& c) {
   os << ",\n \"robust_equals_exact\": {\"static_queries\": " << c.static_queries
      << ", \"decided_by_filter\": " << c.filter_decided
      << ", \"violations\": " << c.robust_violations
+     << "},\n \"robust_ccd_equals_exact_ccd\": {\"moving_queries\": " << c.moving_queries
+     << ", \"decided_by_filter\": " << c.moving_filter_decided
+     << ", \"violations\": " << c.moving_violations
      << "},\n \"exact_equals_stored_truth\": {\"queries\": " << c.truths
      << ", \"violations\": " << c.truth_violations
      << "},\n \"first_violation\": " << json_string(c.first_violation) << "}\n";
@@ -239,9 +316,12 @@ std::string certificate_markdown(const Certificate& c) {
      << "| corpus (`" << c.options.corpus_dir << "`, " << c.corpus_files << " files) | "
      << c.corpus_queries << " |\n"
      << "| fuzzed: " << c.options.per_family << " per family, " << c.families.size()
-     << " families | " << c.fuzzed_queries << " |\n"
+     << " static and " << c.moving_families.size() << " moving families | " << c.fuzzed_queries
+     << " |\n"
      << "| extra files (" << c.options.extra_files.size() << ") | " << c.extra_queries << " |\n"
-     << "| queries recorded from scenes | none: no simulator in this version |\n"
+     << "| narrow-phase queries recorded from the shipped scenes (" << c.scenes
+     << " scenes, robust, every " << c.options.scene_stride << "th frame) | " << c.scene_queries
+     << " |\n"
      << "| random triangle-soup pairs (tree) | " << c.options.soups << " |\n\n"
      << "## Properties\n\n| property | k | checked | violations |\n|---|---|---|---|\n";
   for (std::size_t i = 0; i < kCertifiedK.size(); ++i)
@@ -254,6 +334,9 @@ std::string certificate_markdown(const Certificate& c) {
   os << "| `robust` = `exact`, static vertex-face | – | " << c.static_queries << " queries ("
      << c.filter_decided << " decided by the float filter alone) | " << c.robust_violations
      << " |\n"
+     << "| `robust` = `exact`, moving vertex-face and edge-edge (CCD) | – | " << c.moving_queries
+     << " queries (" << c.moving_filter_decided << " decided by the float filter alone) | "
+     << c.moving_violations << " |\n"
      << "| `exact` = the known truth (corpus and benchmark files; fuzzed queries whose "
         "construction fixes it) | – | "
      << c.truths << " queries | " << c.truth_violations << " |\n";

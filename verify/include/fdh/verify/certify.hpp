@@ -1,6 +1,6 @@
 // fdhcert certify: checks the fast library against the exact reference on the corpus, fuzzed
-// cases of every family, random triangle soups and any extra query files, and counts each
-// certified property.
+// cases of every family (static and moving), queries recorded from the shipped cloth scenes,
+// random triangle soups and any extra query files, and counts each certified property.
 #pragma once
 
 #include <array>
@@ -17,6 +17,10 @@ struct CertifyOptions {
   std::uint64_t seed = 1;
   long per_family = -1;  // fuzzed queries per family; -1: 200 quick, 3000 full
   long soups = -1;       // soup pairs for the tree; -1: 30 quick, 300 full
+  // The shipped scenes: frames run per scene (-1: 600 quick, the scene's own full) and the
+  // stride between certified frames (-1: 50 quick, 10 full).
+  long scene_frames = -1;
+  int scene_stride = -1;
   std::vector<std::string> extra_files;
 };
 
@@ -31,6 +35,11 @@ struct Certificate {
   std::array<long, 4> boxes{}, box_violations{};
   std::array<long, 4> soup_pairs{}, exact_pairs{}, cull_violations{};
   long static_queries = 0, filter_decided = 0, robust_violations = 0;
+  // Moving vertex-face and edge-edge queries: robust CCD = exact CCD.
+  long moving_queries = 0, moving_filter_decided = 0, moving_violations = 0;
+  std::vector<std::string> moving_families;
+  // Narrow-phase queries recorded from the shipped scenes (<corpus>/scenes/*.scene).
+  long scenes = 0, scene_queries = 0;
   long truths = 0, truth_violations = 0;  // static queries with a stored truth: exact = truth
   std::string first_violation;            // what went wrong first, and the file it was saved to
 
