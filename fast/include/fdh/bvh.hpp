@@ -54,7 +54,13 @@ class Bvh {
     for (int i = int(nodes_.size()) - 1; i >= 0; --i) {
       Node& n = nodes_[i];
       if (n.leaf()) {
-        range_box(n.box, n.first, n.first + n.count, x0, x1, w);
+        const Tri& t = tris_[prims_[n.first]];
+        if (n.count == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: the cloth's leaves
+          set_point(n.box, x0[t[0]], w);
+          if (!x1.empty()) add_point(n.box, x1[t[0]], w);
+        } else {
+          range_box(n.box, n.first, n.first + n.count, x0, x1, w);
+        }
         continue;
       }
       // In place: a Kdop returned by value costs more in copies than the merge itself.
