@@ -4,13 +4,16 @@
 // exact one: no false negatives and no false positives.
 //
 // The filter, in two stages (docs/methods.md):
-// 1. The coplanarity cubic f(t) in Bernstein form on [0, 1]. Its four coefficients are sums of
-//    3x3 determinants of vertex differences at t = 0 and t = 1, each with a static error bound
-//    (Shewchuk's orient3d analysis). All four certainly of one sign: f has no root, so no.
-// 2. Bisection of [0, 1] with interval arithmetic (fdh/interval.hpp) on f and on the inside
-//    conditions g_i (>= 0 at a coplanar time iff contact). A piece where f != 0, or where some
-//    g_i < 0, holds no contact. A piece where f certainly changes sign and every g_i > 0 holds
-//    one. Every piece excluded: no. One piece certified: yes. Otherwise: uncertain.
+// 1. The coplanarity cubic f(t) in Bernstein form on [0, 1]. Its four coefficients are
+//    determinants of vertex differences at t = 0 and t = 1 (and means of three), each with a
+//    static error bound (Shewchuk's orient3d analysis). All four certainly of one sign: f has
+//    no root, so no.
+// 2. Root isolation by de Casteljau subdivision of that Bernstein form, the error bound carried
+//    along: a piece of one certain sign holds no root; one certain sign variation with opposite
+//    ends holds exactly one. Each root is narrowed by halving, then the inside conditions g_i
+//    (>= 0 at a coplanar time iff contact) are bounded over its piece by interval arithmetic
+//    (fdh/interval.hpp): all > 0, contact; one < 0, none there. A piece where f is uncertain is
+//    still excluded when some g_i < 0 over it. Otherwise: uncertain.
 #pragma once
 
 #include "fdh/filtered.hpp"
