@@ -64,7 +64,7 @@ int bernstein_sign(const Bernstein& f) {
   return sign;
 }
 
-// ---- Stage 2: interval bisection on f and the inside conditions.
+// ---- Stage 2: the inside conditions by intervals, and root isolation by subdivision of f.
 
 struct IVec {
   Interval x, y, z;
