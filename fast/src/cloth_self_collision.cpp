@@ -19,14 +19,9 @@ template <int K>
 struct SelfCollision::TreesK : SelfCollision::Trees {
   Bvh<K> points, triangles, edges;
   TreesK(const Cloth& c)
-      : points(as_points(c.n()), c.x()),
+      : points(point_prims(c.n()), c.x()),
         triangles(c.triangles(), c.x()),
         edges(as_edges(c.edges()), c.x()) {}
-  static std::vector<Tri> as_points(int n) {
-    std::vector<Tri> t(n);
-    for (int i = 0; i < n; ++i) t[i] = {i, i, i};
-    return t;
-  }
   static std::vector<Tri> as_edges(const std::vector<std::array<int, 2>>& e) {
     std::vector<Tri> t;
     for (const auto& [i, j] : e) t.push_back({i, j, j});

@@ -25,12 +25,7 @@ template <int K>
 struct Simulation::BroadPhaseK : Simulation::BroadPhase {
   Bvh<K> cloth, obstacles;
   BroadPhaseK(const std::vector<Vec3>& x, const TriMesh& mesh)
-      : cloth(points(int(x.size())), x), obstacles(mesh.tris, mesh.x) {}
-  static std::vector<Tri> points(int n) {
-    std::vector<Tri> t(n);
-    for (int i = 0; i < n; ++i) t[i] = {i, i, i};
-    return t;
-  }
+      : cloth(point_prims(int(x.size())), x), obstacles(mesh.tris, mesh.x) {}
   void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) override {
     cloth.refit(x0, x1);
   }
@@ -64,10 +59,18 @@ Simulation::Simulation(const Scene& scene, NarrowPhase narrow, int k, double dt,
 
 Simulation::~Simulation() = default;
 
+Query Simulation::query(const NarrowQuery& q) const {
+  const Tri& t = mesh_.tris[q.triangle];
+  Query r;
+  r.x = {x0_[q.particle], mesh_.x[t[0]], mesh_.x[t[1]], mesh_.x[t[2]],
+         x1_[q.particle], mesh_.x[t[0]], mesh_.x[t[1]], mesh_.x[t[2]]};
+  return r;
+}
+
 void Simulation::step() {
   auto clock = Clock::now();
-  x0_ = cloth_.x();
   cloth_.integrate(dt_, x1_);
+  x0_.swap(cloth_.x());  // the step's start, without a copy; x() gets the end below
   times_.springs = seconds_since(clock);
 
   broad_->refit(x0_, x1_);

@@ -75,19 +75,23 @@ std::string substitute(std::string s, const std::string& key, const std::string&
   return s;
 }
 
+// Runs `script` in `dir` twice, as PNG and as SVG (%TERM% and %EXT% filled in).
+void run_gnuplot(const std::string& dir, const std::string& script) {
+  std::string all = "cd '" + dir + "'\n";
+  for (const auto& [term, ext] :
+       {std::pair<std::string, std::string>{"pngcairo", "png"}, {"svg dynamic", "svg"}})
+    all += substitute(substitute(script, "%TERM%", term), "%EXT%", ext);
+  std::FILE* gp = ::popen("gnuplot 2>&1", "w");
+  if (!gp) throw std::runtime_error("cannot run gnuplot (Debian package gnuplot-nox)");
+  std::fputs(all.c_str(), gp);
+  const int status = ::pclose(gp);
+  if (status != 0) throw std::runtime_error("gnuplot failed (is Debian's gnuplot-nox installed?)");
+}
+
 }  // namespace
 
 void draw_charts(const std::string& dir) {
-  std::string script = "cd '" + dir + "'\n";
-  for (const auto& [term, ext] :
-       {std::pair<std::string, std::string>{"pngcairo", "png"}, {"svg dynamic", "svg"}})
-    script += substitute(substitute(substitute(kScript, "%TERM%", term), "%EXT%", ext), "%METHODS%",
-                         kMethods);
-  std::FILE* gp = ::popen("gnuplot 2>&1", "w");
-  if (!gp) throw std::runtime_error("cannot run gnuplot (Debian package gnuplot-nox)");
-  std::fputs(script.c_str(), gp);
-  const int status = ::pclose(gp);
-  if (status != 0) throw std::runtime_error("gnuplot failed (is Debian's gnuplot-nox installed?)");
+  run_gnuplot(dir, substitute(kScript, "%METHODS%", kMethods));
 }
 
 namespace {
@@ -110,15 +114,7 @@ plot for [s in series] 'data/table1.csv' skip 1 using (strcol(1) eq name(s) ? $4
 }  // namespace
 
 void draw_table1_chart(const std::string& dir) {
-  std::string script = "cd '" + dir + "'\n";
-  for (const auto& [term, ext] :
-       {std::pair<std::string, std::string>{"pngcairo", "png"}, {"svg dynamic", "svg"}})
-    script += substitute(substitute(kTable1Script, "%TERM%", term), "%EXT%", ext);
-  std::FILE* gp = ::popen("gnuplot 2>&1", "w");
-  if (!gp) throw std::runtime_error("cannot run gnuplot (Debian package gnuplot-nox)");
-  std::fputs(script.c_str(), gp);
-  const int status = ::pclose(gp);
-  if (status != 0) throw std::runtime_error("gnuplot failed (is Debian's gnuplot-nox installed?)");
+  run_gnuplot(dir, kTable1Script);
 }
 
 }  // namespace fdh::verify

@@ -14,7 +14,7 @@
 namespace fdh::verify {
 namespace {
 
-using Test = bool (*)(const Vec3&, const Vec3&, const Vec3&, const Vec3&, const Vec3&);
+using Test = PointTriangleTest;
 
 std::function<bool(const Query&)> on_query(Test t) {
   return [t](const Query& q) { return t(q.b0(), q.b1(), q.d(), q.e(), q.f()); };
@@ -56,12 +56,15 @@ std::vector<Method> all_methods(int gate_k) {
   const auto paper = [gate_k](Test t) { return gate_k ? gated(t, gate_k) : on_query(t); };
   return {
       {"exact", "CGAL/GMP exact tests (reference/): segment-triangle, CCD by Sturm sequences",
-       &exact_any, true},
-      {"robust", "floating-point filters with error bounds, exact fallback", &robust_any, true},
+       &exact_any, true, &exact::point_triangle_hit},
+      {"robust", "floating-point filters with error bounds, exact fallback", &robust_any, true,
+       &robust_static},
       {"float-cubic", "Provot/Bridson: float cubic roots, then inside tests", &float_cubic, true},
-      {"paper-literal", "Han & Jia 3.2 as printed", paper(&paper_literal)},
-      {"paper-intended", "Han & Jia 3.2 as Figs. 3-4 read", paper(&paper_intended)},
-      {"linear-system", "3x3 solve for (t, u, v), singular = no", on_query(&linear_system)},
+      {"paper-literal", "Han & Jia 3.2 as printed", paper(&paper_literal), false, &paper_literal},
+      {"paper-intended", "Han & Jia 3.2 as Figs. 3-4 read", paper(&paper_intended), false,
+       &paper_intended},
+      {"linear-system", "3x3 solve for (t, u, v), singular = no", on_query(&linear_system), false,
+       &linear_system},
   };
 }
 

@@ -4,41 +4,23 @@
 
 #include "fdh/exact/ccd.hpp"
 #include "fdh/exact/point_triangle.hpp"
-#include "fdh/point_triangle/linear_system.hpp"
-#include "fdh/point_triangle/paper.hpp"
-#include "fdh/point_triangle/robust.hpp"
+#include "fdh/verify/methods.hpp"
 
 namespace fdh::verify {
-namespace {
-
-bool robust_with_exact(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
-                       const Vec3& f) {
-  return robust_point_triangle(b0, b1, d, e, f, &exact::point_triangle_hit);
-}
-
-const std::vector<std::pair<std::string, cloth::NarrowPhase>>& table() {
-  static const std::vector<std::pair<std::string, cloth::NarrowPhase>> t = {
-      {"robust", &robust_with_exact},      {"exact", &exact::point_triangle_hit},
-      {"paper-intended", &paper_intended}, {"paper-literal", &paper_literal},
-      {"linear-system", &linear_system},
-  };
-  return t;
-}
-
-}  // namespace
 
 const std::vector<std::string>& narrow_phase_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n;
-    for (const auto& [name, f] : table()) n.push_back(name);
+    for (const Method& m : all_methods())
+      if (m.point_triangle) n.push_back(m.name);
     return n;
   }();
   return names;
 }
 
 cloth::NarrowPhase narrow_phase_named(const std::string& name) {
-  for (const auto& [n, f] : table())
-    if (n == name) return f;
+  for (const Method& m : all_methods())
+    if (m.name == name && m.point_triangle) return m.point_triangle;
   std::string all;
   for (const auto& n : narrow_phase_names()) all += (all.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown narrow phase '" + name + "' (one of: " + all + ")");
@@ -60,7 +42,6 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
   std::vector<cloth::TriMesh> obstacles;
   for (const auto& o : scene.obstacles) obstacles.push_back(cloth::obstacle_mesh(o));
   const exact::Audit audit(obstacles);
-  const auto& mesh = sim.collision_mesh();
   r.energy_start = sim.cloth().energy();
   for (int f = 1; f <= r.frames; ++f) {
     sim.step();
@@ -71,13 +52,11 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
     r.self_hits += sim.self().hits;
     r.self_stops += sim.self().stopped_all;
     if (opt.check) {
-      for (const auto& q : sim.queries()) {
-        const Tri& t = mesh.tris[q.triangle];
-        const bool truth =
-            exact::point_triangle_hit(sim.step_start()[q.particle], sim.step_end()[q.particle],
-                                      mesh.x[t[0]], mesh.x[t[1]], mesh.x[t[2]]);
-        r.fp += q.hit && !truth;
-        r.fn += !q.hit && truth;
+      for (const auto& nq : sim.queries()) {
+        const Query q = sim.query(nq);
+        const bool truth = exact::point_triangle_hit(q.b0(), q.b1(), q.d(), q.e(), q.f());
+        r.fp += nq.hit && !truth;
+        r.fn += !nq.hit && truth;
       }
       exact::AuditCounts c = audit.count(sim.cloth().x(), sim.cloth().edges());
       if (r.self_audited)

@@ -160,14 +160,10 @@ int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
                  {"obstacles", &all_obstacles.x, &all_obstacles.tris, obstacle_colour}});
     }
     if (recording) {
-      const auto& m = sim.collision_mesh();
       for (const auto& q : sim.queries()) {
-        Query r;
+        Query r = sim.query(q);
         r.id = "f" + std::to_string(frame) + "p" + std::to_string(q.particle) + "t" +
                std::to_string(q.triangle);
-        const Tri& t = m.tris[q.triangle];
-        r.x = {sim.step_start()[q.particle], m.x[t[0]], m.x[t[1]], m.x[t[2]],
-               sim.step_end()[q.particle],   m.x[t[0]], m.x[t[1]], m.x[t[2]]};
         write_native(recording->stream(), r);
       }
     }

@@ -23,6 +23,13 @@ namespace fdh {
 // A primitive: three vertex indices. A point is {i, i, i}, an edge {i, j, j}.
 using Tri = std::array<int, 3>;
 
+// Points 0 .. n-1 as primitives, for a tree over particles.
+inline std::vector<Tri> point_prims(int n) {
+  std::vector<Tri> t(n);
+  for (int i = 0; i < n; ++i) t[i] = {i, i, i};
+  return t;
+}
+
 template <int K>
 class Bvh {
  public:

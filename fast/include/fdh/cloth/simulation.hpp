@@ -15,6 +15,7 @@
 #include "fdh/cloth/cloth.hpp"
 #include "fdh/cloth/scene.hpp"
 #include "fdh/cloth/self_collision.hpp"
+#include "fdh/query.hpp"
 #include "fdh/vec3.hpp"
 
 namespace fdh::cloth {
@@ -63,6 +64,8 @@ class Simulation {
   const SelfCollision::Result& self() const { return self_; }
   const std::vector<Vec3>& step_start() const { return x0_; }
   const std::vector<Vec3>& step_end() const { return x1_; }
+  // Query q as a static vertex-face query: the particle's path against the still triangle.
+  Query query(const NarrowQuery& q) const;
 
  private:
   struct BroadPhase;

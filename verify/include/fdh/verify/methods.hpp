@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "fdh/point_triangle/robust.hpp"
 #include "fdh/query.hpp"
 
 namespace fdh::verify {
@@ -17,6 +18,9 @@ struct Method {
   // triangles and edge-edge queries too when `moving` is set; elsewhere the method is "n/a".
   std::function<bool(const Query&)> hit;
   bool moving = false;
+  // The static vertex-face test as a plain function (never gated), for the cloth simulator's
+  // narrow phase; null for methods that are not one (float-cubic).
+  PointTriangleTest point_triangle = nullptr;
   bool applies_to(const Query& q) const { return moving || q.is_static_vf(); }
 };
 
