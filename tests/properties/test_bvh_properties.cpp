@@ -107,5 +107,24 @@ TEST(BvhProperties, SelfTraversalEqualsTraversalAgainstItself) {
   }));
 }
 
+// The cloth's tree: one swept point per leaf (refit's one-point path). After a refit to new
+// positions, every leaf contains the exact FDH of its point at both ends of the step.
+TEST(BvhProperties, PointTreeRefitContainsTheExactSweep) {
+  EXPECT_TRUE(rc::check("point-tree-refit", [] {
+    const Soup a = *gen_soup(24), moved = *gen_soup(24);
+    if (moved.x0.size() < a.x0.size()) return;
+    const std::vector<Vec3> y0(moved.x0.begin(), moved.x0.begin() + a.x0.size()),
+        y1(moved.x1.begin(), moved.x1.begin() + a.x0.size());
+    Bvh<26> t(point_prims(int(a.x0.size())), a.x0, a.x1);
+    t.refit(y0, y1);
+    for (const auto& n : t.nodes()) {
+      if (!n.leaf()) continue;
+      const int i = t.tris()[t.prims()[n.first]][0];
+      const Vec3 pts[2] = {y0[i], y1[i]};
+      RC_ASSERT(exact::first_uncontained_slab(26, pts, 2, n.box.lo.data(), n.box.hi.data()) == -1);
+    }
+  }));
+}
+
 }  // namespace
 }  // namespace fdh
