@@ -1,11 +1,11 @@
-#include "fdh/verify/certify.hpp"
+#include "fdh/suite/certify.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
-#include "fdh/verify/cli.hpp"
+#include "fdh/cli/cli.hpp"
 
 #include "temp_dir.hpp"
 

@@ -1,4 +1,4 @@
-#include "fdh/verify/cli.hpp"
+#include "fdh/cli/cli.hpp"
 
 #include <gtest/gtest.h>
 

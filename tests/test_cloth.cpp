@@ -13,11 +13,11 @@
 #include "fdh/cloth/simulation.hpp"
 #include "fdh/exact/audit.hpp"
 #include "fdh/exact/ccd.hpp"
-#include "fdh/verify/cli.hpp"
-#include "fdh/verify/input_error.hpp"
-#include "fdh/verify/query_io.hpp"
-#include "fdh/verify/scene_file.hpp"
-#include "fdh/verify/scene_run.hpp"
+#include "fdh/cli/cli.hpp"
+#include "fdh/io/input_error.hpp"
+#include "fdh/io/query_io.hpp"
+#include "fdh/io/scene_file.hpp"
+#include "fdh/suite/scene_run.hpp"
 #include "temp_dir.hpp"
 
 namespace fdh::cloth {

@@ -4,9 +4,9 @@
 
 #include <filesystem>
 
-#include "fdh/verify/families.hpp"
-#include "fdh/verify/methods.hpp"
-#include "fdh/verify/query_io.hpp"
+#include "fdh/gen/static_families.hpp"
+#include "fdh/check/registry.hpp"
+#include "fdh/io/query_io.hpp"
 
 namespace fdh::verify {
 namespace {

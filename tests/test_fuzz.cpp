@@ -1,5 +1,5 @@
 // fdhcert fuzz: the same cases whatever the workers or shards, and a SIGKILL loses nothing.
-#include "fdh/verify/fuzz.hpp"
+#include "fdh/suite/fuzz.hpp"
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -16,7 +16,7 @@
 #include <sstream>
 #include <thread>
 
-#include "fdh/verify/query_io.hpp"
+#include "fdh/io/query_io.hpp"
 
 #include "temp_dir.hpp"
 

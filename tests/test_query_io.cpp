@@ -1,10 +1,10 @@
-#include "fdh/verify/query_io.hpp"
+#include "fdh/io/query_io.hpp"
 
 #include <gtest/gtest.h>
 
 #include <sstream>
 
-#include "fdh/verify/input_error.hpp"
+#include "fdh/io/input_error.hpp"
 
 namespace fdh::verify {
 namespace {

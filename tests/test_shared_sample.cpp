@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "fdh/verify/methods.hpp"
-#include "fdh/verify/query_io.hpp"
+#include "fdh/check/registry.hpp"
+#include "fdh/io/query_io.hpp"
 
 namespace fdh::verify {
 namespace {

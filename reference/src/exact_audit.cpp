@@ -53,9 +53,9 @@ struct Audit::Impl {
   CGAL::Bbox_3 box;
 };
 
-Audit::Audit(const std::vector<cloth::TriMesh>& obstacles) : impl_(std::make_unique<Impl>()) {
+Audit::Audit(const std::vector<TriMesh>& obstacles) : impl_(std::make_unique<Impl>()) {
   for (std::size_t o = 0; o < obstacles.size(); ++o) {
-    const cloth::TriMesh& m = obstacles[o];
+    const TriMesh& m = obstacles[o];
     Mesh& sm = impl_->meshes.emplace_back();
     std::vector<Mesh::Vertex_index> v;
     for (const Vec3& p : m.x) v.push_back(sm.add_vertex(point(p)));

@@ -11,8 +11,8 @@
 #include "fdh/ccd/robust.hpp"
 #include "fdh/exact/ccd.hpp"
 #include "fdh/exact/point_triangle.hpp"
-#include "fdh/verify/families.hpp"
-#include "fdh/verify/moving_families.hpp"
+#include "fdh/gen/static_families.hpp"
+#include "fdh/gen/moving_families.hpp"
 #include "test_name.hpp"
 
 namespace fdh::verify {

@@ -7,7 +7,7 @@
 
 #include "fdh/exact/kdop.hpp"
 #include "fdh/kdop.hpp"
-#include "fdh/verify/families.hpp"
+#include "fdh/gen/static_families.hpp"
 
 namespace fdh {
 namespace {

@@ -6,8 +6,8 @@
 #include <rapidcheck.h>
 
 #include "fdh/exact/point_triangle.hpp"
-#include "fdh/verify/families.hpp"
-#include "fdh/verify/methods.hpp"
+#include "fdh/gen/static_families.hpp"
+#include "fdh/check/registry.hpp"
 #include "test_name.hpp"
 
 namespace fdh::verify {

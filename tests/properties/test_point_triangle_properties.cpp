@@ -5,7 +5,7 @@
 
 #include "fdh/exact/point_triangle.hpp"
 #include "fdh/point_triangle/robust.hpp"
-#include "fdh/verify/families.hpp"
+#include "fdh/gen/static_families.hpp"
 #include "test_name.hpp"
 
 namespace fdh::verify {

@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-#include "fdh/cloth/mesh.hpp"
+#include "fdh/mesh.hpp"
 #include "fdh/vec3.hpp"
 
 namespace fdh::exact {
@@ -34,7 +34,7 @@ long self_crossings(const std::vector<Vec3>& x, const std::vector<std::array<int
 class Audit {
  public:
   // Each obstacle must be a closed mesh; otherwise std::invalid_argument.
-  explicit Audit(const std::vector<cloth::TriMesh>& obstacles);
+  explicit Audit(const std::vector<TriMesh>& obstacles);
   ~Audit();
   Audit(const Audit&) = delete;
   Audit& operator=(const Audit&) = delete;

@@ -1,0 +1,45 @@
+// A scene: one cloth, its still obstacles, the step and the collision coefficients. Read from
+// the text files in corpus/scenes/ (docs/formats.md); every field has a default, so a scene
+// states only what it uses.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fdh/cloth/cloth.hpp"
+#include "fdh/cloth/obstacle_mesh.hpp"
+#include "fdh/cloth/response.hpp"
+
+namespace fdh::cloth {
+
+// A closed obstacle. A table is a top and four legs, each a box.
+struct Obstacle {
+  enum class Kind { Box, Sphere } kind = Kind::Box;
+  Vec3 lo, hi;  // a box
+  Vec3 centre;  // a sphere
+  double r = 0;
+  int level = 3;  // a sphere's subdivision (20·4^level triangles)
+};
+
+// The obstacle as a closed triangle mesh, grown outward by `grow` (a box's faces move out, a
+// sphere's radius grows).
+TriMesh obstacle_mesh(const Obstacle& o, double grow = 0);
+
+struct Scene {
+  std::string name;
+  ClothSpec cloth;
+  std::vector<Obstacle> obstacles;
+  double dt = 1e-3;  // s per step; one step per frame
+  int frames = 1000;
+  ResponseCoefficients response;
+  // The collision skin, m: particles are kept outside the obstacles grown by this much.
+  // Negative = automatic, 0.6 × the particle spacing (docs/methods.md, "Cloth": why a point-only
+  // test needs it).
+  double thickness = -1;
+  // The cloth against itself (fdh/cloth/self_collision.hpp), after the obstacle response.
+  bool self_collision = false;
+
+  double skin() const;  // the thickness in use, m
+};
+
+}  // namespace fdh::cloth

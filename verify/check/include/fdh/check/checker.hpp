@@ -1,0 +1,68 @@
+// The one checker: every "fast equals exact" in the suite goes through here, as CGAL's
+// Kernel_checker runs two kernels side by side. A method's answer is compared with the exact
+// twin of its decision under the method's promise (registry.hpp); certify, `classify --check`,
+// the scene runs, fuzz and the tests all ask this file, and nothing else compares.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fdh/check/registry.hpp"
+#include "fdh/query.hpp"
+
+namespace fdh::verify {
+
+// Whether `said` keeps `promise` where the twin says `twin`.
+bool keeps_promise(Promise promise, bool said, bool twin);
+
+// What the checker found for one query.
+struct Verdicts {
+  bool said = false, twin = false;
+  bool kept = true;  // said keeps the method's promise
+  bool agree() const { return said == twin; }
+};
+
+// One method against the twin on one query it applies to.
+Verdicts check(const Method& m, const Query& q);
+// The same with the twin's verdict already known (several methods on one query).
+Verdicts check(const Method& m, const Query& q, bool twin);
+// A verdict the method already gave elsewhere (the simulator's narrow phase) against the twin.
+Verdicts check_given(const Method& m, const Query& q, bool said);
+
+// The twin against a stored truth: nullopt when the query has none, else whether they agree.
+std::optional<bool> twin_matches_truth(const Query& q, bool twin);
+
+// A count of checks and of broken promises, with the first few broken cases kept.
+struct CheckTally {
+  long checked = 0, broken = 0;
+  long filter_decided = 0;  // checked queries the method's float filter decided alone
+  std::vector<std::size_t> first_broken;  // indices into the caller's sequence, at most `keep`
+
+  void add(bool kept, std::size_t index, std::size_t keep = 16);
+};
+
+// One method against the twin over a sequence of queries, with the twin's verdicts given
+// (twin[i] for queries[i]); queries the method does not apply to are skipped.
+CheckTally check_all(const Method& m, const std::vector<Query>& queries,
+                     const std::vector<char>& twin);
+
+// A k-DOP method's box of `n` points: the first slab (in fdh::Kdop<k> order) where it fails to
+// contain the exact FDH, or -1. Conservative methods must return -1.
+int check_box(const BoxMethod& m, const Vec3* pts, std::size_t n);
+
+// A k-DOP method's overlap test on the boxes it builds of two point sets, against the exact
+// FDHs. Conservative methods must not say "no" where the exact FDHs overlap.
+Verdicts check_overlap(const BoxMethod& m, const std::vector<Vec3>& a,
+                       const std::vector<Vec3>& b);
+
+// A broad phase (tree traversal) against the exact overlapping pairs: the pairs it culled
+// although their exact boxes overlap (a conservative broad phase culls none).
+std::vector<std::pair<int, int>> culled_pairs(std::vector<std::pair<int, int>> found,
+                                              const std::vector<std::pair<int, int>>& exact);
+
+// "robust says hit, exact says no": the words of a broken check, for messages and case files.
+std::string describe(const Method& m, const Verdicts& v);
+
+}  // namespace fdh::verify

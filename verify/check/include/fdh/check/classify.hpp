@@ -1,0 +1,48 @@
+// Runs methods side by side on the same queries and tallies them against a truth.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "fdh/query.hpp"
+#include "fdh/check/registry.hpp"
+
+namespace fdh::verify {
+
+struct Tally {
+  long tp = 0, tn = 0, fp = 0, fn = 0;
+  long na = 0;              // queries the method does not apply to (counted in nothing else)
+  double ns_per_query = 0;  // mean over the queries it applies to
+  long errors() const { return fp + fn; }
+  long decided() const { return tp + tn + fp + fn; }
+};
+
+inline constexpr char kNotApplicable = -1;
+
+struct MethodResult {
+  std::string name;
+  Tally tally;
+  std::vector<char> verdict;  // per query: 1 = hit, 0 = no hit, kNotApplicable
+};
+
+struct Classification {
+  std::size_t queries = 0;
+  std::string truth;            // "file" (every query has one), "exact" (none has), or "mixed"
+  std::vector<char> reference;  // per query: the file's truth where given, else exact's verdict
+  std::vector<char> exact;      // per query: the exact twin's verdict (registry.hpp)
+  std::vector<MethodResult> methods;
+  std::vector<std::size_t> exact_vs_file;  // queries where exact disagrees with the file's truth
+  std::size_t static_vf = 0, moving_vf = 0, edge_edge = 0;  // the queries by kind
+};
+
+// Any queries; a method that does not apply to a query (Method::applies_to) gets
+// kNotApplicable there. Each method's time is the mean over enough passes to fill about 20 ms,
+// so that short files still give a stable ns per query.
+Classification classify(const std::vector<Query>& queries, const std::vector<Method>& methods);
+
+// The classifications of consecutive groups (files) joined into one: counts add up, times are
+// weighted by the queries each method applied to.
+Classification join(const std::vector<Classification>& parts);
+
+}  // namespace fdh::verify

@@ -1,0 +1,100 @@
+// The registry: every method the suite runs, what it decides, its function, and the exact twin
+// of that decision (reference/). The CLI, the checker, certify, the scene runs, the benchmarks
+// and the tests iterate over it; nobody looks a method up to compare against by its name.
+// Adding a method is one file (its function, in fast/ or a plug-in) and one entry in
+// registry.cpp.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "fdh/filtered.hpp"
+#include "fdh/point_triangle/robust.hpp"
+#include "fdh/query.hpp"
+#include "fdh/vec3.hpp"
+
+namespace fdh::verify {
+
+// What a method decides. Each decision has one exact twin.
+enum class Decision {
+  PointTriangle,  // static vertex-face: the segment BB' against the still triangle DEF
+  VertexFaceCcd,  // a moving point against a moving triangle over the step
+  EdgeEdgeCcd,    // two moving edges over the step
+  KdopBuild,      // the k-DOP of a point set: must contain the exact FDH of the points
+  KdopOverlap,    // do the k-DOPs of two point sets overlap: must not miss an exact overlap
+};
+inline constexpr std::array<Decision, 3> kQueryDecisions = {
+    Decision::PointTriangle, Decision::VertexFaceCcd, Decision::EdgeEdgeCcd};
+const char* to_string(Decision d);  // "point-triangle", "vertex-face-ccd", ...
+// The query decision a query asks for: PointTriangle when the triangle stands still.
+Decision decision_of(const Query& q);
+
+// What the checker holds a method to, against the exact twin of its decision.
+enum class Promise {
+  Exact,         // the twin's verdict on every input
+  Conservative,  // never "no" where the twin says "yes" (bounding volumes)
+  None,          // measured, not promised: known to fail (the paper's readings, float-cubic)
+};
+const char* to_string(Promise p);
+
+using QueryTest = std::function<bool(const Query&)>;
+using QueryFilter = std::function<Filtered(const Query&)>;
+
+// A method of the query decisions: a row of `classify`.
+struct Method {
+  std::string name, summary;
+  Promise promise = Promise::None;
+  // The verdict per query decision (indexed by Decision), empty where the method makes none
+  // (the query is "n/a" for it).
+  std::array<QueryTest, 3> test;
+  // Its floating-point filter per decision, where it has one: certify counts the queries the
+  // filter decided alone.
+  std::array<QueryFilter, 3> filter;
+  // The static test as a plain function (never gated), for the cloth's narrow phase; null for
+  // methods that are not one.
+  PointTriangleTest point_triangle = nullptr;
+  // True for the entry that is the exact twin itself (listed so that tables show it).
+  bool is_twin = false;
+
+  bool applies_to(const Query& q) const { return bool(test[std::size_t(decision_of(q))]); }
+  bool hit(const Query& q) const { return test[std::size_t(decision_of(q))](q); }
+};
+
+// The exact twin of a query decision: its verdict (reference/).
+bool twin_hit(const Query& q);
+
+// A k-DOP method of a fixed k: builds a box (lo, hi per slab, in fdh::Kdop<k> slab order) and
+// decides overlap of two boxes.
+struct BoxMethod {
+  std::string name, summary;
+  int k = 0;
+  Promise promise = Promise::Conservative;
+  std::function<void(const Vec3* pts, std::size_t n, double* lo, double* hi)> build;
+  std::function<bool(const double* lo_a, const double* hi_a, const double* lo_b,
+                     const double* hi_b)>
+      overlap;
+};
+
+// Every query method: the twin first, then robust, float-cubic, paper-literal,
+// paper-intended, linear-system. With gate_k > 0 the methods that test no bounding volume of
+// their own say "hit" only when the k-DOP of the particle's sweep overlaps the triangle's, as
+// they would inside the FDH tree. Throws std::invalid_argument for a bad gate_k.
+std::vector<Method> all_methods(int gate_k = 0);
+
+// The named subset, in the order given. Throws std::invalid_argument naming an unknown method
+// and listing the known ones.
+std::vector<Method> select_methods(const std::vector<std::string>& names, int gate_k = 0);
+
+// The methods that can run as the cloth's narrow phase (point_triangle set), and one by name
+// (std::invalid_argument listing the known ones when unknown).
+std::vector<std::string> narrow_phase_names();
+PointTriangleTest narrow_phase_named(const std::string& name);
+
+// The k-DOP methods for each certified k (6, 14, 18, 26).
+std::vector<BoxMethod> all_box_methods();
+inline constexpr std::array<int, 4> kCertifiedK = {6, 14, 18, 26};
+
+}  // namespace fdh::verify

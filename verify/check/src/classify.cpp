@@ -1,0 +1,115 @@
+#include "fdh/check/classify.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "fdh/check/checker.hpp"
+
+namespace fdh::verify {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::vector<char> run_and_time(const Method& m, const std::vector<Query>& qs,
+                               double& ns_per_query) {
+  std::vector<char> verdict(qs.size(), kNotApplicable);
+  std::vector<std::size_t> mine;
+  for (std::size_t i = 0; i < qs.size(); ++i)
+    if (m.applies_to(qs[i])) mine.push_back(i);
+  const auto pass = [&] {
+    for (const std::size_t i : mine) verdict[i] = m.hit(qs[i]);
+  };
+  const auto seconds = [](Clock::time_point a) {
+    return std::chrono::duration<double>(Clock::now() - a).count();
+  };
+  auto start = Clock::now();
+  pass();
+  double elapsed = seconds(start);
+  long passes = 1;
+  const double target = 0.02;
+  if (elapsed < target) {
+    passes = std::min(1000L, long(std::ceil(target / std::max(elapsed, 1e-7))));
+    start = Clock::now();
+    for (long p = 0; p < passes; ++p) pass();
+    elapsed = seconds(start);
+  }
+  ns_per_query = mine.empty() ? 0 : elapsed * 1e9 / (double(passes) * double(mine.size()));
+  return verdict;
+}
+
+}  // namespace
+
+Classification classify(const std::vector<Query>& queries, const std::vector<Method>& methods) {
+  Classification c;
+  c.queries = queries.size();
+
+  c.exact.resize(queries.size());
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const Query& q = queries[i];
+    c.exact[i] = twin_hit(q);
+    ++(q.is_static_vf()                  ? c.static_vf
+       : q.kind == QueryKind::VertexFace ? c.moving_vf
+                                         : c.edge_edge);
+  }
+
+  std::size_t with_truth = 0;
+  c.reference.resize(queries.size());
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const Query& q = queries[i];
+    if (const std::optional<bool> agrees = twin_matches_truth(q, c.exact[i])) {
+      ++with_truth;
+      c.reference[i] = char(q.truth);
+      if (!*agrees) c.exact_vs_file.push_back(i);
+    } else {
+      c.reference[i] = c.exact[i];
+    }
+  }
+  c.truth = with_truth == queries.size() ? "file" : (with_truth == 0 ? "exact" : "mixed");
+
+  for (const Method& m : methods) {
+    MethodResult r;
+    r.name = m.name;
+    r.verdict = run_and_time(m, queries, r.tally.ns_per_query);
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      if (r.verdict[i] == kNotApplicable) {
+        ++r.tally.na;
+        continue;
+      }
+      const bool v = r.verdict[i], t = c.reference[i];
+      (v ? (t ? r.tally.tp : r.tally.fp) : (t ? r.tally.fn : r.tally.tn))++;
+    }
+    c.methods.push_back(std::move(r));
+  }
+  return c;
+}
+
+Classification join(const std::vector<Classification>& parts) {
+  Classification all;
+  bool truth_set = false;
+  for (const Classification& c : parts) {
+    const std::size_t offset = all.queries;
+    all.queries += c.queries;
+    all.static_vf += c.static_vf, all.moving_vf += c.moving_vf, all.edge_edge += c.edge_edge;
+    all.truth = !truth_set || all.truth == c.truth ? c.truth : "mixed";
+    truth_set = true;
+    all.reference.insert(all.reference.end(), c.reference.begin(), c.reference.end());
+    all.exact.insert(all.exact.end(), c.exact.begin(), c.exact.end());
+    for (const std::size_t i : c.exact_vs_file) all.exact_vs_file.push_back(offset + i);
+    if (all.methods.empty())
+      for (const MethodResult& m : c.methods) all.methods.push_back({m.name, {}, {}});
+    for (std::size_t k = 0; k < c.methods.size(); ++k) {
+      Tally& t = all.methods[k].tally;
+      const Tally& u = c.methods[k].tally;
+      const double time =
+          t.ns_per_query * double(t.decided()) + u.ns_per_query * double(u.decided());
+      t.tp += u.tp, t.tn += u.tn, t.fp += u.fp, t.fn += u.fn, t.na += u.na;
+      t.ns_per_query = t.decided() ? time / double(t.decided()) : 0;
+      auto& v = all.methods[k].verdict;
+      v.insert(v.end(), c.methods[k].verdict.begin(), c.methods[k].verdict.end());
+    }
+  }
+  return all;
+}
+
+}  // namespace fdh::verify

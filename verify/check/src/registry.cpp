@@ -1,0 +1,183 @@
+#include "fdh/check/registry.hpp"
+
+#include <stdexcept>
+
+#include "fdh/ccd/float_cubic.hpp"
+#include "fdh/ccd/robust.hpp"
+#include "fdh/exact/ccd.hpp"
+#include "fdh/exact/point_triangle.hpp"
+#include "fdh/kdop.hpp"
+#include "fdh/point_triangle/linear_system.hpp"
+#include "fdh/point_triangle/paper.hpp"
+#include "fdh/point_triangle/robust.hpp"
+
+namespace fdh::verify {
+
+const char* to_string(Decision d) {
+  switch (d) {
+    case Decision::PointTriangle: return "point-triangle";
+    case Decision::VertexFaceCcd: return "vertex-face-ccd";
+    case Decision::EdgeEdgeCcd: return "edge-edge-ccd";
+    case Decision::KdopBuild: return "kdop-build";
+    case Decision::KdopOverlap: return "kdop-overlap";
+  }
+  return "?";
+}
+
+const char* to_string(Promise p) {
+  switch (p) {
+    case Promise::Exact: return "exact";
+    case Promise::Conservative: return "conservative";
+    case Promise::None: return "none";
+  }
+  return "?";
+}
+
+Decision decision_of(const Query& q) {
+  if (q.kind == QueryKind::EdgeEdge) return Decision::EdgeEdgeCcd;
+  return q.is_static_vf() ? Decision::PointTriangle : Decision::VertexFaceCcd;
+}
+
+bool twin_hit(const Query& q) {
+  return q.is_static_vf() ? exact::point_triangle_hit(q.b0(), q.b1(), q.d(), q.e(), q.f())
+                          : exact::ccd_hit(q);
+}
+
+namespace {
+
+using Test = PointTriangleTest;
+
+QueryTest on_query(Test t) {
+  return [t](const Query& q) { return t(q.b0(), q.b1(), q.d(), q.e(), q.f()); };
+}
+
+// A method without a bounding volume of its own behind the tree's box test (§3): a hit needs
+// overlapping k-DOPs too.
+QueryTest gated(Test t, int k) {
+  return [t, k](const Query& q) {
+    const bool boxes = with_k(k, [&](auto kc) {
+      constexpr int K = decltype(kc)::value;
+      const Vec3 sweep[2] = {q.b0(), q.b1()}, tri[3] = {q.d(), q.e(), q.f()};
+      return overlap(kdop_of<K>(sweep, 2), kdop_of<K>(tri, 3));
+    });
+    return boxes && t(q.b0(), q.b1(), q.d(), q.e(), q.f());
+  };
+}
+
+bool robust_static(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e, const Vec3& f) {
+  return robust_point_triangle(b0, b1, d, e, f, &exact::point_triangle_hit);
+}
+
+bool robust_moving(const Query& q) { return robust_ccd(q, &exact::ccd_hit); }
+
+Filtered robust_static_filter(const Query& q) {
+  return robust_point_triangle_filter(q.b0(), q.b1(), q.d(), q.e(), q.f());
+}
+
+// A method of all three query decisions, the static one as a plain function.
+Method all_kinds(std::string name, std::string summary, Promise promise, Test point_triangle,
+                 QueryTest moving) {
+  return {std::move(name), std::move(summary), promise,
+          {on_query(point_triangle), moving, moving}, {}, point_triangle};
+}
+
+}  // namespace
+
+std::vector<Method> all_methods(int gate_k) {
+  if (gate_k != 0 && !is_valid_k(gate_k))
+    throw std::invalid_argument("--gate takes 6, 14, 18 or 26, not " + std::to_string(gate_k));
+  const auto paper = [gate_k](Test t) { return gate_k ? gated(t, gate_k) : on_query(t); };
+  Method twin = all_kinds("exact",
+                          "CGAL/GMP exact tests (reference/): segment-triangle, CCD by Sturm "
+                          "sequences; the exact twin of every query decision",
+                          Promise::Exact, &exact::point_triangle_hit, &exact::ccd_hit);
+  twin.is_twin = true;
+  Method robust = all_kinds("robust", "floating-point filters with error bounds, exact fallback",
+                            Promise::Exact, &robust_static, &robust_moving);
+  robust.filter = {&robust_static_filter, &robust_ccd_filter, &robust_ccd_filter};
+  const Method float_cubic{"float-cubic",
+                           "Provot/Bridson: float cubic roots, then inside tests",
+                           Promise::None,
+                           {QueryTest(), &fdh::float_cubic, &fdh::float_cubic},
+                           {}};
+  return {
+      twin,
+      robust,
+      float_cubic,
+      {"paper-literal", "Han & Jia 3.2 as printed", Promise::None, {paper(&paper_literal)},
+       {}, &paper_literal},
+      {"paper-intended", "Han & Jia 3.2 as Figs. 3-4 read", Promise::None,
+       {paper(&paper_intended)}, {}, &paper_intended},
+      {"linear-system", "3x3 solve for (t, u, v), singular = no", Promise::None,
+       {on_query(&linear_system)}, {}, &linear_system},
+  };
+}
+
+namespace {
+
+template <class Names>
+std::string joined(const Names& names) {
+  std::string all;
+  for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+  return all;
+}
+
+}  // namespace
+
+std::vector<Method> select_methods(const std::vector<std::string>& names, int gate_k) {
+  const std::vector<Method> all = all_methods(gate_k);
+  std::vector<Method> out;
+  std::vector<std::string> known;
+  for (const Method& m : all) known.push_back(m.name);
+  for (const std::string& n : names) {
+    const auto it = std::find_if(all.begin(), all.end(), [&](const Method& m) { return m.name == n; });
+    if (it == all.end())
+      throw std::invalid_argument("unknown method '" + n + "' (known: " + joined(known) + ")");
+    out.push_back(*it);
+  }
+  return out;
+}
+
+std::vector<std::string> narrow_phase_names() {
+  std::vector<std::string> n;
+  for (const Method& m : all_methods())
+    if (m.point_triangle) n.push_back(m.name);
+  return n;
+}
+
+PointTriangleTest narrow_phase_named(const std::string& name) {
+  for (const Method& m : all_methods())
+    if (m.name == name && m.point_triangle) return m.point_triangle;
+  throw std::invalid_argument("unknown narrow phase '" + name +
+                              "' (one of: " + joined(narrow_phase_names()) + ")");
+}
+
+namespace {
+
+template <int K>
+BoxMethod fdh_box() {
+  BoxMethod m;
+  m.name = "fdh";
+  m.summary = "fast/'s k-DOP: one outward push per diagonal slab (kdop.hpp)";
+  m.k = K;
+  m.build = [](const Vec3* pts, std::size_t n, double* lo, double* hi) {
+    const Kdop<K> box = kdop_of<K>(pts, n);
+    std::copy(box.lo.begin(), box.lo.end(), lo);
+    std::copy(box.hi.begin(), box.hi.end(), hi);
+  };
+  m.overlap = [](const double* la, const double* ha, const double* lb, const double* hb) {
+    Kdop<K> a, b;
+    std::copy(la, la + K / 2, a.lo.begin()), std::copy(ha, ha + K / 2, a.hi.begin());
+    std::copy(lb, lb + K / 2, b.lo.begin()), std::copy(hb, hb + K / 2, b.hi.begin());
+    return overlap(a, b);
+  };
+  return m;
+}
+
+}  // namespace
+
+std::vector<BoxMethod> all_box_methods() {
+  return {fdh_box<6>(), fdh_box<14>(), fdh_box<18>(), fdh_box<26>()};
+}
+
+}  // namespace fdh::verify

@@ -1,0 +1,51 @@
+#include "fdh/io/case_files.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+
+#include "fdh/io/input_error.hpp"
+#include "fdh/io/query_io.hpp"
+
+namespace fdh::verify {
+
+std::string case_hash(const Query& q) {
+  std::uint64_t h = 1469598103934665603ull;
+  const auto mix = [&h](std::uint64_t v) {
+    for (int b = 0; b < 8; ++b) h = (h ^ ((v >> (8 * b)) & 0xff)) * 1099511628211ull;
+  };
+  mix(q.kind == QueryKind::VertexFace ? 1 : 2);
+  for (const Vec3& p : q.x)
+    for (int c = 0; c < 3; ++c) {
+      std::uint64_t bits;
+      const double v = p[c] == 0 ? 0.0 : p[c];  // -0 and +0 are the same case
+      std::memcpy(&bits, &v, sizeof bits);
+      mix(bits);
+    }
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+std::string case_file_text(const Query& q, const std::vector<std::string>& comments) {
+  std::ostringstream os;
+  for (const std::string& c : comments) os << "# " << c << '\n';
+  write_native(os, q);
+  return os.str();
+}
+
+std::vector<std::string> list_query_files(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_regular_file(path, ec)) return {path};
+  if (!fs::is_directory(path, ec)) throw InputError(path, 0, "no such file or folder");
+  std::vector<std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(path))
+    if (e.is_regular_file() && e.path().extension() == ".vf") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace fdh::verify

@@ -1,8 +1,0 @@
-#include <iostream>
-
-#include "fdh/verify/cli.hpp"
-
-int main(int argc, char** argv) {
-  return fdh::verify::run_cli(std::vector<std::string>(argv + 1, argv + argc), std::cout,
-                              std::cerr);
-}

@@ -1,0 +1,73 @@
+// fdhcert certify: checks the fast library against the exact reference on the corpus, fuzzed
+// cases of every family (static and moving), queries recorded from the shipped cloth scenes,
+// random triangle soups and any extra query files, and counts each certified property.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "fdh/check/registry.hpp"
+
+namespace fdh::verify {
+
+struct CertifyOptions {
+  bool quick = false;
+  std::string corpus_dir = "corpus";
+  std::string out_dir = "certificate";
+  std::uint64_t seed = 1;
+  long per_family = -1;  // fuzzed queries per family; -1: 200 quick, 3000 full
+  long soups = -1;       // soup pairs for the tree; -1: 30 quick, 300 full
+  // The shipped scenes: frames run per scene (-1: 600 quick, the scene's own full) and the
+  // stride between certified frames (-1: 50 quick, 10 full).
+  long scene_frames = -1;
+  int scene_stride = -1;
+  std::vector<std::string> extra_files;
+};
+
+// One method's promise on one decision, checked against the exact twin (check/checker.hpp).
+struct PromiseCheck {
+  std::string method;
+  Decision decision = Decision::PointTriangle;
+  Promise promise = Promise::Exact;
+  long checked = 0, filter_decided = 0, violations = 0;
+};
+
+// One k-DOP method (one k): its boxes contain the exact FDH; the tree built of its boxes culls
+// no exactly overlapping pair.
+struct BoxCheck {
+  std::string method;
+  int k = 0;
+  long boxes = 0, box_violations = 0;
+  long soup_pairs = 0, exact_pairs = 0, cull_violations = 0;
+};
+
+struct Certificate {
+  CertifyOptions options;
+  std::string commit, cgal, gmp;
+  long corpus_files = 0, corpus_queries = 0, fuzzed_queries = 0, extra_queries = 0;
+  std::vector<std::string> families, moving_families;
+  // Narrow-phase queries recorded from the shipped scenes (<corpus>/scenes/*.scene).
+  long scenes = 0, scene_queries = 0;
+  std::vector<PromiseCheck> promises;  // every (method, query decision) with a promise
+  std::vector<BoxCheck> boxes;         // every k-DOP method
+  long truths = 0, truth_violations = 0;  // queries with a stored truth: the twin = the truth
+  std::string first_violation;            // what went wrong first, and the file it was saved to
+
+  bool certified() const { return first_violation.empty(); }
+  long checks() const;      // every check counted above
+  long violations() const;  // every violation counted above
+};
+
+// Writes the first violating case (if any) into options.out_dir. Throws InputError for bad
+// inputs, std::runtime_error for I/O failures.
+Certificate certify(const CertifyOptions& options);
+
+std::string certificate_json(const Certificate& c);
+std::string certificate_markdown(const Certificate& c);
+
+// certificate.json and certificate.md, each written whole, into c.options.out_dir.
+void write_certificate(const Certificate& c);
+
+}  // namespace fdh::verify

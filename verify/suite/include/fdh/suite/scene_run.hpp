@@ -1,0 +1,47 @@
+// Runs a scene frame by frame with a chosen narrow phase and k, and checks it: every
+// narrow-phase query against the exact point–triangle test (FP, FN), and every frame against
+// the exact audit (particles inside, edges crossing). Shared by `simulate` and `table1`.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "fdh/cloth/simulation.hpp"
+#include "fdh/check/registry.hpp"
+#include "fdh/exact/audit.hpp"
+
+namespace fdh::verify {
+
+struct SceneRunOptions {
+  std::string narrow = "robust";
+  int k = 18;
+  int frames = -1;    // < 0: the scene's
+  bool check = true;  // FP/FN and the audit (untimed)
+  // Audit the cloth against itself too (exact::self_crossings, every frame). On by default
+  // when the scene runs the self-collision pass.
+  bool audit_self = false;
+  // Called after every frame (1-based), e.g. to write an OBJ or record the queries.
+  std::function<void(const cloth::Simulation&, int frame)> on_frame;
+};
+
+struct SceneRun {
+  int grid = 0, frames = 0, particles = 0;
+  double dt = 0, stable_dt = 0, skin = 0;
+  bool dt_reduced = false;  // the scene's Δt was above stable_dt, so 0.9·stable_dt was used
+  cloth::FrameTimes time;   // summed over the frames, s
+  long candidates = 0, collisions = 0, fp = 0, fn = 0;
+  long broken = 0;  // narrow-phase verdicts that break the method's promise (checker.hpp)
+  exact::AuditCounts audit;  // summed over the frames
+  long audit_last_inside = 0, audit_last_crossing = 0;
+  bool self_audited = false;
+  long self_queries = 0, self_hits = 0, self_stops = 0;  // the self-collision pass
+  double energy_start = 0, energy_end = 0;
+  std::vector<Vec3> final_x;  // the cloth's particles after the last frame
+
+  double ms_per_frame() const { return frames ? 1e3 * time.total() / frames : 0; }
+};
+
+SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt);
+
+}  // namespace fdh::verify

@@ -1,0 +1,250 @@
+#include "fdh/suite/certify.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include "fdh/bvh.hpp"
+#include "fdh/check/checker.hpp"
+#include "fdh/check/registry.hpp"
+#include "fdh/cloth/simulation.hpp"
+#include "fdh/exact/kdop.hpp"
+#include "fdh/exact/versions.hpp"
+#include "fdh/gen/moving_families.hpp"
+#include "fdh/gen/static_families.hpp"
+#include "fdh/io/atomic_file.hpp"
+#include "fdh/io/case_files.hpp"
+#include "fdh/io/query_io.hpp"
+#include "fdh/io/scene_file.hpp"
+#include "fdh/suite/fuzz.hpp"
+#include "fdh/suite/scene_run.hpp"
+
+namespace fdh::verify {
+namespace fs = std::filesystem;
+namespace {
+
+std::string git_commit() {
+  std::string out;
+  if (std::FILE* p = ::popen("git rev-parse --short=12 HEAD 2>/dev/null", "r")) {
+    char buf[64];
+    while (std::fgets(buf, sizeof buf, p)) out += buf;
+    ::pclose(p);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out.empty() ? "unknown" : out;
+}
+
+// Every method with a promise, on every query decision it makes and every box it builds, against
+// the exact twin through the checker (check/checker.hpp).
+class Certifier {
+ public:
+  explicit Certifier(Certificate& c) : c_(c) {
+    fs::create_directories(c.options.out_dir);
+    for (const Method& m : all_methods())
+      if (m.promise != Promise::None && !m.is_twin) methods_.push_back(m);
+    for (const Method& m : methods_)
+      for (const Decision d : kQueryDecisions)
+        if (m.test[std::size_t(d)]) c_.promises.push_back({m.name, d, m.promise});
+    for (const BoxMethod& b : boxes_) c_.boxes.push_back({b.name, b.k});
+  }
+
+  void check_query(const Query& q) {
+    check_boxes(q, std::vector<Vec3>(q.x.begin(), q.x.end()));
+    if (q.is_static_vf()) {
+      check_boxes(q, {q.b0(), q.b1()});
+      check_boxes(q, {q.d(), q.e(), q.f()});
+    }
+    const bool twin = twin_hit(q);
+    check_truth(q, twin);
+    const Decision d = decision_of(q);
+    for (PromiseCheck& p : c_.promises) {
+      if (p.decision != d) continue;
+      const Method& m = method(p.method);
+      const auto& filter = m.filter[std::size_t(d)];
+      p.filter_decided += filter && filter(q) != Filtered::Uncertain;
+      ++p.checked;
+      const Verdicts v = check(m, q, twin);
+      if (v.kept) continue;
+      ++p.violations;
+      Query saved = q;
+      saved.truth = twin;
+      violation(saved, describe(m, v) + " (" + to_string(d) + ")");
+    }
+  }
+
+  void check_truth(const Query& q, bool twin) {
+    const std::optional<bool> agrees = twin_matches_truth(q, twin);
+    if (!agrees) return;
+    ++c_.truths;
+    if (*agrees) return;
+    ++c_.truth_violations;
+    violation(q, "exact says " + std::string(twin ? "hit" : "no") + ", the stored truth says " +
+                     (q.truth ? "hit" : "no"));
+  }
+
+  // The FDH tree of each certified k culls no pair whose exact k-DOPs overlap.
+  void check_soups(const Soup& a, const Soup& b) {
+    for (BoxCheck& box : c_.boxes) {
+      if (!is_valid_k(box.k)) continue;
+      with_k(box.k, [&](auto kc) {
+        constexpr int K = decltype(kc)::value;
+        const Bvh<K> ta(a.tris, a.x0, a.x1), tb(b.tris, b.x0);
+        std::vector<std::pair<int, int>> found;
+        traverse(ta, tb, found);
+        const auto pairs = exact::overlapping_pairs(K, primitive_corners(a.tris, a.x0, a.x1),
+                                                    primitive_corners(b.tris, b.x0, {}));
+        ++box.soup_pairs;
+        box.exact_pairs += long(pairs.size());
+        const auto culled = culled_pairs(std::move(found), pairs);
+        if (culled.empty()) return;
+        ++box.cull_violations;
+        soup_violation(a, b, K, culled.front());
+      });
+    }
+  }
+
+ private:
+  const Method& method(const std::string& name) const {
+    return *std::find_if(methods_.begin(), methods_.end(),
+                         [&](const Method& m) { return m.name == name; });
+  }
+
+  void check_boxes(const Query& q, const std::vector<Vec3>& pts) {
+    for (std::size_t i = 0; i < boxes_.size(); ++i) {
+      BoxCheck& box = c_.boxes[i];
+      ++box.boxes;
+      const int s = check_box(boxes_[i], pts.data(), pts.size());
+      if (s < 0) continue;
+      ++box.box_violations;
+      violation(q, "the " + box.method + " " + std::to_string(box.k) + "-DOP of " +
+                       std::to_string(pts.size()) +
+                       " of its points misses the exact extent in slab " + std::to_string(s));
+    }
+  }
+
+  void violation(const Query& q, const std::string& what) {
+    if (!c_.first_violation.empty()) return;
+    const fs::path file = fs::path(c_.options.out_dir) / ("violation-" + case_hash(q) + ".vf");
+    write_file_atomically(file.string(), case_file_text(q, {"certify: " + what + "."}));
+    c_.first_violation = what + " (query " + q.id + " from " +
+                         (q.file.empty() ? "a generator" : q.file + ":" + std::to_string(q.line)) +
+                         "), saved to " + file.string();
+  }
+
+  // A missed pair is saved as an OBJ: A at t = 0, A at t = 1 (its swept leaves), and B.
+  void soup_violation(const Soup& a, const Soup& b, int k, std::pair<int, int> p) {
+    if (!c_.first_violation.empty()) return;
+    std::ostringstream os;
+    os << "# certify: the " << k << "-DOP tree missed the pair (" << p.first << ", " << p.second
+       << ") whose exact " << k << "-DOPs overlap\n";
+    int base = 1;
+    const auto object = [&](const char* name, const std::vector<Vec3>& x,
+                            const std::vector<Tri>& tris) {
+      char buf[128];
+      os << "o " << name << "\n";
+      for (const Vec3& v : x) {
+        std::snprintf(buf, sizeof buf, "v %a %a %a\n", v.x, v.y, v.z);
+        os << buf;
+      }
+      for (const Tri& t : tris)
+        os << "f " << t[0] + base << ' ' << t[1] + base << ' ' << t[2] + base << "\n";
+      base += int(x.size());
+    };
+    object("A_t0", a.x0, a.tris);
+    object("A_t1", a.x1, a.tris);
+    object("B", b.x0, b.tris);
+    const fs::path file = fs::path(c_.options.out_dir) / "violation-tree.obj";
+    write_file_atomically(file.string(), os.str());
+    c_.first_violation =
+        "the " + std::to_string(k) + "-DOP tree missed a pair, saved to " + file.string();
+  }
+
+  Certificate& c_;
+  std::vector<Method> methods_;
+  const std::vector<BoxMethod> boxes_ = all_box_methods();
+};
+
+// Every shipped scene runs with robust as its narrow phase (and its self-collision pass, if it
+// has one); the narrow-phase queries of every stride-th frame are certified like any other.
+void check_scenes(Certificate& c, Certifier& cert) {
+  const fs::path dir = fs::path(c.options.corpus_dir) / "scenes";
+  if (!fs::is_directory(dir)) return;
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".scene") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  const int stride = c.options.scene_stride;
+  for (const fs::path& file : files) {
+    const cloth::Scene scene = read_scene(file.string());
+    SceneRunOptions opt;  // robust, k = 18, the scene's step as `simulate` takes it
+    opt.frames = int(std::min<long>(scene.frames, c.options.scene_frames));
+    opt.check = false;  // certified here instead
+    opt.on_frame = [&](const cloth::Simulation& sim, int f) {
+      if (f % stride) return;
+      for (const auto& nq : sim.queries()) {
+        Query q = sim.query(nq);
+        q.id = scene.name + "/f" + std::to_string(f) + "p" + std::to_string(nq.particle) + "t" +
+               std::to_string(nq.triangle);
+        q.file = file.string();
+        ++c.scene_queries;
+        cert.check_query(q);
+      }
+    };
+    ++c.scenes;
+    run_scene(scene, opt);
+  }
+}
+
+}  // namespace
+
+Certificate certify(const CertifyOptions& options) {
+  Certificate c;
+  c.options = options;
+  if (c.options.per_family < 0) c.options.per_family = options.quick ? 200 : 3000;
+  if (c.options.soups < 0) c.options.soups = options.quick ? 30 : 300;
+  if (c.options.scene_frames < 0) c.options.scene_frames = options.quick ? 600 : 100000000;
+  if (c.options.scene_stride < 1) c.options.scene_stride = options.quick ? 50 : 10;
+  c.commit = git_commit();
+  c.cgal = exact::cgal_library_version();
+  c.gmp = exact::gmp_library_version();
+  Certifier cert(c);
+
+  for (const std::string& f : list_query_files(options.corpus_dir)) {
+    ++c.corpus_files;
+    for (const Query& q : read_native(f)) {
+      ++c.corpus_queries;
+      cert.check_query(q);
+    }
+  }
+  std::uint64_t stream = 0;
+  for (const Family f : all_families()) {
+    c.families.push_back(family_name(f));
+    ++stream;
+    for (long i = 0; i < c.options.per_family; ++i, ++c.fuzzed_queries)
+      cert.check_query(
+          gen_family(f)(rc::Random(case_seed(c.options.seed * 1000 + stream, i))).value().query);
+  }
+  for (const MovingFamily f : all_moving_families()) {
+    c.moving_families.push_back(moving_family_name(f));
+    ++stream;
+    for (long i = 0; i < c.options.per_family; ++i, ++c.fuzzed_queries)
+      cert.check_query(
+          gen_moving(f)(rc::Random(case_seed(c.options.seed * 1000 + stream, i))).value().query);
+  }
+  check_scenes(c, cert);
+  for (long i = 0; i < c.options.soups; ++i) {
+    const std::uint64_t s = c.options.seed * 1000 + 999;
+    cert.check_soups(gen_soup(24)(rc::Random(case_seed(s, 2 * i))).value(),
+                     gen_soup(24)(rc::Random(case_seed(s, 2 * i + 1))).value());
+  }
+  for (const std::string& f : options.extra_files)
+    for (const Query& q : read_query_file(f)) {
+      ++c.extra_queries;
+      cert.check_query(q);
+    }
+  return c;
+}
+
+}  // namespace fdh::verify

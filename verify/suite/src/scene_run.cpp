@@ -1,0 +1,57 @@
+#include "fdh/suite/scene_run.hpp"
+
+#include <stdexcept>
+
+#include "fdh/exact/ccd.hpp"
+#include "fdh/check/checker.hpp"
+
+namespace fdh::verify {
+
+SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
+  SceneRun r;
+  const cloth::Cloth probe(scene.cloth);
+  r.grid = scene.cloth.grid;
+  r.particles = probe.n();
+  r.stable_dt = probe.stable_dt();
+  r.dt = scene.dt;
+  if (r.dt > r.stable_dt) r.dt = 0.9 * r.stable_dt, r.dt_reduced = true;
+  r.skin = scene.skin();
+  r.frames = opt.frames >= 0 ? opt.frames : scene.frames;
+
+  const Method narrow = select_methods({opt.narrow}).front();
+  cloth::Simulation sim(scene, narrow_phase_named(opt.narrow), opt.k, r.dt, &exact::ccd_hit);
+  r.self_audited = opt.check && (opt.audit_self || scene.self_collision);
+  std::vector<TriMesh> obstacles;
+  for (const auto& o : scene.obstacles) obstacles.push_back(cloth::obstacle_mesh(o));
+  const exact::Audit audit(obstacles);
+  r.energy_start = sim.cloth().energy();
+  for (int f = 1; f <= r.frames; ++f) {
+    sim.step();
+    r.time += sim.times();
+    r.candidates += long(sim.queries().size());
+    r.collisions += sim.collisions();
+    r.self_queries += sim.self().queries;
+    r.self_hits += sim.self().hits;
+    r.self_stops += sim.self().stopped_all;
+    if (opt.check) {
+      for (const auto& nq : sim.queries()) {
+        const Verdicts v = check_given(narrow, sim.query(nq), nq.hit);
+        r.fp += v.said && !v.twin;
+        r.fn += !v.said && v.twin;
+        r.broken += !v.kept;
+      }
+      exact::AuditCounts c = audit.count(sim.cloth().x(), sim.cloth().edges());
+      if (r.self_audited)
+        c.self_crossing =
+            exact::self_crossings(sim.cloth().x(), sim.cloth().edges(), sim.cloth().triangles());
+      r.audit += c;
+      r.audit_last_inside = c.inside, r.audit_last_crossing = c.crossing;
+    }
+    if (opt.on_frame) opt.on_frame(sim, f);
+  }
+  r.energy_end = sim.cloth().energy();
+  r.final_x = sim.cloth().x();
+  return r;
+}
+
+}  // namespace fdh::verify

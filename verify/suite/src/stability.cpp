@@ -1,0 +1,130 @@
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <vector>
+
+#include "fdh/suite/measurements.hpp"
+#include "fdh/check/registry.hpp"
+
+namespace fdh::verify {
+namespace {
+
+// Plain doubles (rounding included): the rates are against exact on the doubles as they are.
+class Sampler {
+ public:
+  explicit Sampler(std::uint64_t seed) : rng_(seed) {}
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng_);
+  }
+  Vec3 point(double r) { return {uniform(-r, r), uniform(-r, r), uniform(-r, r)}; }
+  Vec3 unit() {
+    for (;;) {
+      const Vec3 v = point(1);
+      const double n = norm(v);
+      if (n > 0.1 && n <= 1) return (1 / n) * v;
+    }
+  }
+  bool coin() { return uniform(0, 1) < 0.5; }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+Vec3 unit(const Vec3& v) {
+  return (1 / norm(v)) * v;
+}
+
+struct Tri3 {
+  Vec3 d, e, f;
+  Vec3 n() const { return unit(cross(e - d, f - d)); }
+  Vec3 at(double a, double b) const { return d + a * (e - d) + b * (f - d); }
+};
+
+Tri3 triangle(Sampler& s) {
+  for (;;) {
+    const Tri3 t{s.point(1), s.point(1), s.point(1)};
+    if (norm(cross(t.e - t.d, t.f - t.d)) > 0.1) return t;
+  }
+}
+
+Query make(const Tri3& t, const Vec3& b0, const Vec3& b1) {
+  Query q;
+  q.x = {b0, t.d, t.e, t.f, b1, t.d, t.e, t.f};
+  return q;
+}
+
+// A path through X, from above the plane to below it.
+Query through(Sampler& s, const Tri3& t, const Vec3& x) {
+  const Vec3 dir = s.uniform(0.2, 1) * t.n() + s.uniform(-0.5, 0.5) * unit(t.e - t.d);
+  return make(t, x + dir, x - s.uniform(0.2, 1) * dir);
+}
+
+Query sample(const std::string& sweep, int p, Sampler& s) {
+  const double tiny = std::ldexp(1.0, -p);
+  if (sweep == "angle") {
+    const Tri3 t = triangle(s);
+    const Vec3 x = t.at(s.uniform(-0.25, 1.25), s.uniform(-0.25, 1.25));
+    const Vec3 along = unit(t.e - t.d);
+    const Vec3 dir = std::cos(tiny) * along - std::sin(tiny) * t.n();
+    return make(t, x - s.uniform(0.1, 1) * dir, x + s.uniform(0.1, 1) * dir);
+  }
+  if (sweep == "edge") {
+    const Tri3 t = triangle(s);
+    const Vec3 v[3] = {t.d, t.e, t.f};
+    const int i = int(s.uniform(0, 3)) % 3;
+    const Vec3 a = v[i], b = v[(i + 1) % 3];
+    const Vec3 out = unit(cross(b - a, t.n()));
+    const Vec3 x = a + s.uniform(0.05, 0.95) * (b - a) + (s.coin() ? tiny : -tiny) * out;
+    return through(s, t, x);
+  }
+  if (sweep == "magnitude") {
+    const Tri3 t0 = triangle(s);
+    const Query q = through(s, t0, t0.at(s.uniform(-0.25, 1.25), s.uniform(-0.25, 1.25)));
+    const Vec3 shift =
+        std::ldexp(1.0, p) * Vec3{s.uniform(0.5, 1), -s.uniform(0.5, 1), s.uniform(0.5, 1)};
+    Query moved = q;
+    for (Vec3& x : moved.x) x += shift;
+    return moved;
+  }
+  // aspect: F lies 2^-p |DE| off the line DE.
+  Tri3 t{s.point(1), s.point(1), {}};
+  const double len = norm(t.e - t.d);
+  const Vec3 off = unit(cross(t.e - t.d, s.unit()));
+  t.f = t.d + s.uniform(-0.25, 1.25) * (t.e - t.d) + (tiny * len) * off;
+  const Vec3 x = t.at(s.uniform(-0.25, 1.25), s.uniform(-0.25, 1.25));
+  const Vec3 up = cross(t.e - t.d, off);  // the plane's normal, computed without F
+  const Vec3 dir = s.uniform(0.2, 1) * unit(up) + s.uniform(-0.5, 0.5) * unit(t.e - t.d);
+  return make(t, x + dir, x - s.uniform(0.2, 1) * dir);
+}
+
+}  // namespace
+
+std::string stability_csv(long per_point, std::uint64_t seed) {
+  struct Sweep {
+    const char* name;
+    int last;
+  };
+  const Sweep sweeps[] = {{"angle", 60}, {"edge", 64}, {"magnitude", 40}, {"aspect", 60}};
+  const std::vector<Method> methods = all_methods();
+  std::ostringstream os;
+  os << "sweep,parameter,method,failure_rate\n";
+  for (const Sweep& sw : sweeps) {
+    // wrong[m][p]; printed method by method so that each curve's rows are contiguous.
+    std::vector<std::vector<long>> wrong(methods.size(), std::vector<long>(sw.last + 1));
+    for (int p = 0; p <= sw.last; ++p) {
+      Sampler s(seed * 7919 + std::uint64_t(p) * 131 + std::uint64_t(sw.name[0]));
+      for (long i = 0; i < per_point; ++i) {
+        const Query q = sample(sw.name, p, s);
+        const bool truth = methods[0].hit(q);  // exact
+        for (std::size_t m = 1; m < methods.size(); ++m) wrong[m][p] += methods[m].hit(q) != truth;
+      }
+    }
+    for (std::size_t m = 1; m < methods.size(); ++m)
+      for (int p = 0; p <= sw.last; ++p)
+        os << sw.name << ',' << p << ',' << methods[m].name << ','
+           << double(wrong[m][p]) / double(per_point) << '\n';
+  }
+  return os.str();
+}
+
+}  // namespace fdh::verify
