@@ -1,11 +1,12 @@
 // The CCD benchmark sample in ../shared (exact ground truth computed by its authors): exact
-// must agree with every truth, and robust with exact. Skipped when ../shared is absent.
+// twin must agree with every truth, and every method that promises the exact verdict with the
+// twin, through the checker. Skipped when ../shared is absent.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 
-#include "fdh/check/registry.hpp"
+#include "fdh/check/checker.hpp"
 #include "fdh/io/query_io.hpp"
 
 namespace fdh::verify {
@@ -28,16 +29,15 @@ std::vector<fs::path> sample_files(const std::string& kind_folder) {
 void check_kind(const std::string& folder, std::size_t at_least) {
   const std::vector<fs::path> files = sample_files(folder);
   if (files.empty()) GTEST_SKIP() << "no ../shared/ccd-sample here";
-  const Method exact = select_methods({"exact"}).front(),
-               robust = select_methods({"robust"}).front();
+  const std::vector<Method> promised = promised_methods();
   std::size_t checked = 0;
   for (const fs::path& f : files) {
     for (const Query& q : read_query_file(f.string())) {
       ASSERT_TRUE(q.has_truth());
       SCOPED_TRACE(q.file + ":" + std::to_string(q.line));
-      const bool e = exact.hit(q);
-      EXPECT_EQ(e, bool(q.truth));
-      EXPECT_EQ(robust.hit(q), e);
+      const bool twin = twin_hit(q);
+      EXPECT_EQ(twin_matches_truth(q, twin), true);
+      for (const Method& m : promised) EXPECT_TRUE(check(m, q, twin).kept) << m.name;
       ++checked;
     }
   }

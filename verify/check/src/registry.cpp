@@ -113,6 +113,13 @@ std::vector<Method> all_methods(int gate_k) {
   };
 }
 
+std::vector<Method> promised_methods(int gate_k) {
+  std::vector<Method> out;
+  for (Method& m : all_methods(gate_k))
+    if (m.promise != Promise::None && !m.is_twin) out.push_back(std::move(m));
+  return out;
+}
+
 namespace {
 
 template <class Names>

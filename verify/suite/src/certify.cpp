@@ -42,8 +42,6 @@ class Certifier {
  public:
   explicit Certifier(Certificate& c) : c_(c) {
     fs::create_directories(c.options.out_dir);
-    for (const Method& m : all_methods())
-      if (m.promise != Promise::None && !m.is_twin) methods_.push_back(m);
     for (const Method& m : methods_)
       for (const Decision d : kQueryDecisions)
         if (m.test[std::size_t(d)]) c_.promises.push_back({m.name, d, m.promise});
@@ -162,7 +160,7 @@ class Certifier {
   }
 
   Certificate& c_;
-  std::vector<Method> methods_;
+  const std::vector<Method> methods_ = promised_methods();
   const std::vector<BoxMethod> boxes_ = all_box_methods();
 };
 

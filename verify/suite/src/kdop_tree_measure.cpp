@@ -1,7 +1,10 @@
+// The FDH tree's k: build, refit and traversal time against the candidate pairs it leaves.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <sstream>
+#include <iterator>
 #include <vector>
 
 #include "fdh/bvh.hpp"
@@ -60,7 +63,7 @@ double ms_since(std::chrono::steady_clock::time_point t) {
 }
 
 template <int K>
-void measure(int grid, std::ostream& os) {
+KdopTreeRow measure(int grid) {
   const Mesh obstacle = sphere(24, 48);
   std::vector<Vec3> later;
   const Mesh c = cloth(grid, later);
@@ -86,20 +89,29 @@ void measure(int grid, std::ostream& os) {
     std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
     return v[v.size() / 2];
   };
-  os << K << ',' << grid << ',' << c.tris.size() << ',' << obstacle.tris.size() << ','
-     << median(build) << ',' << median(refit) << ',' << median(trav) << ',' << pairs << '\n';
+  return {K,           grid,          long(c.tris.size()), long(obstacle.tris.size()),
+          median(build), median(refit), median(trav),        long(pairs)};
 }
 
 }  // namespace
 
-std::string kdop_tree_csv(int grid) {
-  std::ostringstream os;
-  os << "k,grid,cloth_triangles,obstacle_triangles,build_ms,refit_ms,traverse_ms,candidate_pairs\n";
-  measure<6>(grid, os);
-  measure<14>(grid, os);
-  measure<18>(grid, os);
-  measure<26>(grid, os);
-  return os.str();
+std::vector<KdopTreeRow> kdop_tree(int grid) {
+  return {measure<6>(grid), measure<14>(grid), measure<18>(grid), measure<26>(grid)};
+}
+
+std::string kdop_tree_csv(const std::vector<KdopTreeRow>& rows) {
+  fmt::memory_buffer out;
+  const auto to = std::back_inserter(out);
+  fmt::format_to(to,
+                 "k,grid,cloth_triangles,obstacle_triangles,build_ms,refit_ms,traverse_ms,"
+                 "candidate_pairs\n");
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const KdopTreeRow& r = rows[i];
+    if (i > 0 && r.grid != rows[i - 1].grid) fmt::format_to(to, "\n");
+    fmt::format_to(to, "{},{},{},{},{:.6g},{:.6g},{:.6g},{}\n", r.k, r.grid, r.cloth_triangles,
+                   r.obstacle_triangles, r.build_ms, r.refit_ms, r.traverse_ms, r.candidate_pairs);
+  }
+  return fmt::to_string(out);
 }
 
 }  // namespace fdh::verify

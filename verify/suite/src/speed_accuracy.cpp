@@ -1,5 +1,8 @@
+// Speed against accuracy: every method on every static generator family, and its Pareto front.
+#include <fmt/format.h>
+
 #include <algorithm>
-#include <sstream>
+#include <iterator>
 #include <vector>
 
 #include "fdh/check/classify.hpp"
@@ -9,9 +12,8 @@
 
 namespace fdh::verify {
 
-std::string speed_accuracy_csv(long per_family, std::uint64_t seed) {
-  std::ostringstream os;
-  os << "method,family,queries,ns_per_query,fp_rate,fn_rate\n";
+std::vector<SpeedAccuracyRow> speed_accuracy(long per_family, std::uint64_t seed) {
+  std::vector<SpeedAccuracyRow> rows;
   const std::vector<Method> methods = all_methods();
   std::uint64_t stream = 0;
   for (const Family f : all_families()) {
@@ -19,53 +21,50 @@ std::string speed_accuracy_csv(long per_family, std::uint64_t seed) {
     std::vector<Query> qs;
     for (long i = 0; i < per_family; ++i) {
       Query q = gen_family(f)(rc::Random(case_seed(seed * 1000 + stream, i))).value().query;
-      q.truth = -1;  // count against exact
+      q.truth = -1;  // count against the twin
       qs.push_back(q);
     }
     const Classification c = classify(qs, methods);
+    const double n = double(qs.size());
     for (const MethodResult& m : c.methods)
-      os << m.name << ',' << family_name(f) << ',' << qs.size() << ',' << m.tally.ns_per_query
-         << ',' << double(m.tally.fp) / double(qs.size()) << ','
-         << double(m.tally.fn) / double(qs.size()) << '\n';
+      rows.push_back({m.name, family_name(f), long(qs.size()), m.tally.ns_per_query,
+                      double(m.tally.fp) / n, double(m.tally.fn) / n});
   }
-  return os.str();
+  return rows;
 }
 
-std::string pareto_csv(const std::string& speed_accuracy) {
-  struct Point {
-    std::string method, family;
-    double ns, err;
-  };
-  std::vector<Point> pts;
-  std::istringstream in(speed_accuracy);
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    Point p;
-    std::string n, ns, fp, fn;
-    std::getline(ls, p.method, ',');
-    std::getline(ls, p.family, ',');
-    std::getline(ls, n, ',');
-    std::getline(ls, ns, ',');
-    std::getline(ls, fp, ',');
-    std::getline(ls, fn, ',');
-    p.ns = std::stod(ns);
-    p.err = std::stod(fp) + std::stod(fn);
-    pts.push_back(p);
-  }
-  std::sort(pts.begin(), pts.end(), [](const Point& a, const Point& b) {
-    return a.ns < b.ns || (a.ns == b.ns && a.err < b.err);
+std::vector<SpeedAccuracyRow> pareto_front(const std::vector<SpeedAccuracyRow>& rows) {
+  std::vector<SpeedAccuracyRow> pts = rows;
+  std::sort(pts.begin(), pts.end(), [](const SpeedAccuracyRow& a, const SpeedAccuracyRow& b) {
+    return a.ns_per_query < b.ns_per_query ||
+           (a.ns_per_query == b.ns_per_query && a.error_rate() < b.error_rate());
   });
-  std::ostringstream os;
-  os << "method,family,ns_per_query,error_rate\n";
-  double best = 2;
-  for (const Point& p : pts)
-    if (p.err < best) {
-      best = p.err;
-      os << p.method << ',' << p.family << ',' << p.ns << ',' << p.err << '\n';
+  std::vector<SpeedAccuracyRow> front;
+  double best = 2;  // above any error rate
+  for (const SpeedAccuracyRow& p : pts)
+    if (p.error_rate() < best) {
+      best = p.error_rate();
+      front.push_back(p);
     }
-  return os.str();
+  return front;
+}
+
+std::string speed_accuracy_csv(const std::vector<SpeedAccuracyRow>& rows) {
+  fmt::memory_buffer out;
+  fmt::format_to(std::back_inserter(out), "method,family,queries,ns_per_query,fp_rate,fn_rate\n");
+  for (const SpeedAccuracyRow& r : rows)
+    fmt::format_to(std::back_inserter(out), "{},{},{},{:.6g},{:.6g},{:.6g}\n", r.method, r.family,
+                   r.queries, r.ns_per_query, r.fp_rate, r.fn_rate);
+  return fmt::to_string(out);
+}
+
+std::string pareto_csv(const std::vector<SpeedAccuracyRow>& front) {
+  fmt::memory_buffer out;
+  fmt::format_to(std::back_inserter(out), "method,family,ns_per_query,error_rate\n");
+  for (const SpeedAccuracyRow& r : front)
+    fmt::format_to(std::back_inserter(out), "{},{},{:.6g},{:.6g}\n", r.method, r.family,
+                   r.ns_per_query, r.error_rate());
+  return fmt::to_string(out);
 }
 
 }  // namespace fdh::verify

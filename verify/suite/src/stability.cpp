@@ -1,10 +1,16 @@
+// Where methods break: failure rates as one parameter of the query goes to its degenerate
+// limit.
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <random>
-#include <sstream>
 #include <vector>
 
-#include "fdh/suite/measurements.hpp"
+#include "fdh/check/checker.hpp"
 #include "fdh/check/registry.hpp"
+#include "fdh/suite/measurements.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -97,34 +103,59 @@ Query sample(const std::string& sweep, int p, Sampler& s) {
   return make(t, x + dir, x - s.uniform(0.2, 1) * dir);
 }
 
-}  // namespace
+struct Sweep {
+  const char* name;
+  int last;  // p runs 0..last
+};
 
-std::string stability_csv(long per_point, std::uint64_t seed) {
-  struct Sweep {
-    const char* name;
-    int last;
-  };
-  const Sweep sweeps[] = {{"angle", 60}, {"edge", 64}, {"magnitude", 40}, {"aspect", 60}};
-  const std::vector<Method> methods = all_methods();
-  std::ostringstream os;
-  os << "sweep,parameter,method,failure_rate\n";
-  for (const Sweep& sw : sweeps) {
-    // wrong[m][p]; printed method by method so that each curve's rows are contiguous.
-    std::vector<std::vector<long>> wrong(methods.size(), std::vector<long>(sw.last + 1));
-    for (int p = 0; p <= sw.last; ++p) {
-      Sampler s(seed * 7919 + std::uint64_t(p) * 131 + std::uint64_t(sw.name[0]));
-      for (long i = 0; i < per_point; ++i) {
-        const Query q = sample(sw.name, p, s);
-        const bool truth = methods[0].hit(q);  // exact
-        for (std::size_t m = 1; m < methods.size(); ++m) wrong[m][p] += methods[m].hit(q) != truth;
+// failure[m][p]: the share of `per_point` queries of each p that methods[m] gets wrong;
+// methods that do not apply to a static query are never counted.
+std::vector<std::vector<double>> sweep_rates(const Sweep& sw, const std::vector<Method>& methods,
+                                             long per_point, std::uint64_t seed) {
+  std::vector<std::vector<double>> failure(methods.size(), std::vector<double>(sw.last + 1));
+  for (int p = 0; p <= sw.last; ++p) {
+    Sampler s(seed * 7919 + std::uint64_t(p) * 131 + std::uint64_t(sw.name[0]));
+    std::vector<long> wrong(methods.size());
+    for (long i = 0; i < per_point; ++i) {
+      const Query q = sample(sw.name, p, s);
+      const bool twin = twin_hit(q);
+      for (std::size_t m = 0; m < methods.size(); ++m) {
+        if (!methods[m].applies_to(q)) continue;
+        const Verdicts v = check(methods[m], q, twin);
+        wrong[m] += v.said != v.twin;
       }
     }
-    for (std::size_t m = 1; m < methods.size(); ++m)
-      for (int p = 0; p <= sw.last; ++p)
-        os << sw.name << ',' << p << ',' << methods[m].name << ','
-           << double(wrong[m][p]) / double(per_point) << '\n';
+    for (std::size_t m = 0; m < methods.size(); ++m)
+      failure[m][p] = double(wrong[m]) / double(per_point);
   }
-  return os.str();
+  return failure;
+}
+
+}  // namespace
+
+std::vector<StabilityRow> stability(long per_point, std::uint64_t seed) {
+  const Sweep sweeps[] = {{"angle", 60}, {"edge", 64}, {"magnitude", 40}, {"aspect", 60}};
+  std::vector<Method> methods = all_methods();
+  methods.erase(std::remove_if(methods.begin(), methods.end(),
+                               [](const Method& m) { return m.is_twin; }),
+                methods.end());
+  std::vector<StabilityRow> rows;
+  for (const Sweep& sw : sweeps) {
+    const auto failure = sweep_rates(sw, methods, per_point, seed);
+    for (std::size_t m = 0; m < methods.size(); ++m)
+      for (int p = 0; p <= sw.last; ++p)
+        rows.push_back({sw.name, p, methods[m].name, failure[m][p]});
+  }
+  return rows;
+}
+
+std::string stability_csv(const std::vector<StabilityRow>& rows) {
+  fmt::memory_buffer out;
+  fmt::format_to(std::back_inserter(out), "sweep,parameter,method,failure_rate\n");
+  for (const StabilityRow& r : rows)
+    fmt::format_to(std::back_inserter(out), "{},{},{},{:.6g}\n", r.sweep, r.parameter, r.method,
+                   r.failure_rate);
+  return fmt::to_string(out);
 }
 
 }  // namespace fdh::verify

@@ -84,6 +84,9 @@ struct BoxMethod {
 // they would inside the FDH tree. Throws std::invalid_argument for a bad gate_k.
 std::vector<Method> all_methods(int gate_k = 0);
 
+// The methods the checker holds to a promise (Exact or Conservative), the twin itself left out.
+std::vector<Method> promised_methods(int gate_k = 0);
+
 // The named subset, in the order given. Throws std::invalid_argument naming an unknown method
 // and listing the known ones.
 std::vector<Method> select_methods(const std::vector<std::string>& names, int gate_k = 0);

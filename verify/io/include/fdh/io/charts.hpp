@@ -1,15 +1,28 @@
-// The report's charts, drawn by gnuplot (Debian's gnuplot-nox) from the CSVs in <dir>/data:
-// speed_accuracy, stability and kdop_k, each as .png (for people) and .svg (for the docs).
+// Charts drawn by gnuplot (Debian's gnuplot-nox), each as .png (for people) and .svg (for the
+// docs). The caller writes the data files and the plot commands; this file quotes, runs
+// gnuplot without a shell and reports its failure.
 #pragma once
 
 #include <string>
+#include <string_view>
 
 namespace fdh::verify {
 
-// Throws std::runtime_error when gnuplot is missing or fails.
-void draw_charts(const std::string& dir);
+// `s` as a gnuplot string literal: in single quotes, a quote doubled, nothing else
+// interpreted. Throws std::invalid_argument for a line break, which no gnuplot literal holds.
+std::string gnuplot_quote(std::string_view s);
 
-// <dir>/table1.png and .svg from <dir>/data/table1.csv (fdhcert table1 --out).
-void draw_table1_chart(const std::string& dir);
+// One chart: `commands` plot from data files (their paths quoted with gnuplot_quote) after
+// `set datafile separator ','` and `set grid`; the terminal and the output are set here.
+struct Chart {
+  std::string stem;  // the chart goes to <stem>.png and <stem>.svg
+  int width = 900, height = 600;
+  std::string commands;
+};
+
+// Draws the chart twice, as PNG (pngcairo) and as SVG. gnuplot is spawned with an argument
+// list (posix_spawnp, no shell) and reads its script from a temporary file. Throws
+// std::runtime_error when gnuplot is missing or fails (its messages go to stderr).
+void draw_chart(const Chart& chart);
 
 }  // namespace fdh::verify

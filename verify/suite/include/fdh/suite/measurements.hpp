@@ -1,31 +1,67 @@
-// The measurements behind the report's charts. Each returns CSV text (header line first); the
-// numbers are measured in this run, so compare rows with each other, not across machines.
+// The measurements behind the report's tables and charts. Each returns its rows; the numbers
+// are measured in this run, so compare rows with each other, not across machines. The *_csv
+// functions give the rows as the report's data files (docs/formats.md, "report").
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace fdh::verify {
 
-// method,family,queries,ns_per_query,fp_rate,fn_rate: every method on `per_family` queries of
-// every generator family, rates against exact.
-std::string speed_accuracy_csv(long per_family, std::uint64_t seed);
+// One method on the queries of one generator family, rates against the exact twin.
+struct SpeedAccuracyRow {
+  std::string method, family;
+  long queries = 0;
+  double ns_per_query = 0, fp_rate = 0, fn_rate = 0;
+  double error_rate() const { return fp_rate + fn_rate; }
+};
 
-// The lower-left envelope of speed_accuracy_csv: method,family,ns_per_query,error_rate for the
-// points no other point beats in both time and error (fp + fn) rate.
-std::string pareto_csv(const std::string& speed_accuracy);
+// Every method of the registry on `per_family` queries of every static generator family.
+std::vector<SpeedAccuracyRow> speed_accuracy(long per_family, std::uint64_t seed);
 
-// sweep,parameter,method,failure_rate: for each sweep, the share of `per_point` queries each
-// method gets wrong, as one parameter goes to its degenerate limit:
+// The lower-left envelope of `rows`: the points no other point beats in both time and error
+// rate, fastest first.
+std::vector<SpeedAccuracyRow> pareto_front(const std::vector<SpeedAccuracyRow>& rows);
+
+// For one sweep and one value of its parameter: the share of queries a method gets wrong.
+struct StabilityRow {
+  std::string sweep;
+  int parameter = 0;
+  std::string method;
+  double failure_rate = 0;
+};
+
+// For each sweep, the share of `per_point` queries each method (the twin aside) gets wrong, as
+// one parameter goes to its degenerate limit:
 //   angle      the motion's angle to the plane is 2^-p (p = 0..60)
 //   edge       the path crosses the plane 2^-p from an edge, inside or out (p = 0..64)
 //   magnitude  the whole query moved 2^p from the origin (p = 0..40)
 //   aspect     the triangle's height over its base is 2^-p (p = 0..60)
-std::string stability_csv(long per_point, std::uint64_t seed);
+// Rows run sweep by sweep, and within a sweep method by method, so each curve is contiguous.
+std::vector<StabilityRow> stability(long per_point, std::uint64_t seed);
 
-// k,grid,cloth_triangles,obstacle_triangles,build_ms,refit_ms,traverse_ms,candidate_pairs:
-// a cloth grid of n×n particles draped over a triangulated sphere, the cloth tree swept over
+// The FDH tree of one k on a cloth over a sphere: medians of 20 runs.
+struct KdopTreeRow {
+  int k = 0, grid = 0;
+  long cloth_triangles = 0, obstacle_triangles = 0;
+  double build_ms = 0, refit_ms = 0, traverse_ms = 0;
+  long candidate_pairs = 0;
+};
+
+// A cloth grid of n×n particles draped over a triangulated sphere, the cloth tree swept over
 // one step, for k = 6, 14, 18, 26.
-std::string kdop_tree_csv(int grid);
+std::vector<KdopTreeRow> kdop_tree(int grid);
+
+// The data files, header line first:
+//   method,family,queries,ns_per_query,fp_rate,fn_rate
+std::string speed_accuracy_csv(const std::vector<SpeedAccuracyRow>& rows);
+//   method,family,ns_per_query,error_rate
+std::string pareto_csv(const std::vector<SpeedAccuracyRow>& front);
+//   sweep,parameter,method,failure_rate
+std::string stability_csv(const std::vector<StabilityRow>& rows);
+//   k,grid,cloth_triangles,obstacle_triangles,build_ms,refit_ms,traverse_ms,candidate_pairs,
+// with a blank line between grids (gnuplot draws one line per block).
+std::string kdop_tree_csv(const std::vector<KdopTreeRow>& rows);
 
 }  // namespace fdh::verify

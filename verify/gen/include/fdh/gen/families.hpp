@@ -1,0 +1,54 @@
+// The generator families: every construction of queries the suite draws from, static and
+// moving, in one registry. Coordinates are dyadic (small integers over powers of two), so a
+// path that passes exactly through an edge or a vertex really does, and a construction often
+// knows the truth on its own, and its contact kind or time: an oracle that does not depend on
+// `exact`. The families are listed in docs/methods.md.
+//
+// This header needs no RapidCheck: callers draw a case from a seed. Property tests use the
+// families as RapidCheck generators through fdh/gen/rapidcheck.hpp.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fdh/query.hpp"
+
+namespace fdh::verify {
+
+// One case of a family.
+struct Generated {
+  std::string family;  // the family's name
+  Query query;         // query.truth: 0 or 1 where the construction decides it, else -1
+  std::string kind;    // the contact kind the construction guarantees ("edge", ...), or ""
+  std::string time;    // the exact earliest contact time it guarantees ("p/q"), or ""
+};
+
+struct Family {
+  std::string name;     // as on the command line: "angled", "generic-moving", ...
+  bool moving = false;  // moving vertex-face or edge-edge queries; else static vertex-face
+  std::string summary;  // what the construction draws, in one line
+  // The construction. It draws through RapidCheck, so it runs only inside a generator: call
+  // it through generate(), shrunk_failure() or gen_family() (fdh/gen/rapidcheck.hpp), which
+  // also set the case's family and query id to `name`.
+  Generated (*construct)() = nullptr;
+};
+
+// Every family: the 15 static ones, then the 9 moving ones, always in this order (certify
+// draws the j-th family from stream j).
+const std::vector<Family>& all_families();
+
+// The family of that name, or nullptr.
+const Family* family_named(const std::string& name);
+
+// Case `seed` of family f: the same seed gives the same case, on every run and every machine.
+Generated generate(const Family& f, std::uint64_t seed);
+
+// Case `seed` of family f shrunk while it still fails (a greedy descent through RapidCheck's
+// shrink tree, see fdh/gen/shrink.hpp), or nullopt when the case does not fail at all.
+std::optional<Generated> shrunk_failure(const Family& f, std::uint64_t seed,
+                                        const std::function<bool(const Generated&)>& fails);
+
+}  // namespace fdh::verify
