@@ -8,7 +8,7 @@
 
 #include "fdh/bvh.hpp"
 #include "fdh/exact/kdop.hpp"
-#include "fdh/gen/static_families.hpp"
+#include "fdh/gen/rapidcheck.hpp"
 
 namespace fdh {
 namespace {

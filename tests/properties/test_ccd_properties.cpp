@@ -11,62 +11,60 @@
 #include "fdh/ccd/robust.hpp"
 #include "fdh/exact/ccd.hpp"
 #include "fdh/exact/point_triangle.hpp"
-#include "fdh/gen/static_families.hpp"
-#include "fdh/gen/moving_families.hpp"
+#include "fdh/gen/rapidcheck.hpp"
 #include "test_name.hpp"
 
 namespace fdh::verify {
 namespace {
 
-class MovingFamilyTest : public ::testing::TestWithParam<MovingFamily> {};
+class MovingFamilyTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(MovingFamilyTest, RobustEqualsExact) {
-  EXPECT_TRUE(
-      rc::check("ccd-robust-equals-exact/" + moving_family_name(GetParam()), [f = GetParam()] {
-        const Query q = (*gen_moving(f)).query;
-        RC_ASSERT(robust_ccd(q, &exact::ccd_hit) == exact::ccd_hit(q));
-      }));
+  const Family& f = *family_named(GetParam());
+  EXPECT_TRUE(rc::check("ccd-robust-equals-exact/" + f.name, [&f] {
+    const Query q = (*gen_family(f)).query;
+    RC_ASSERT(robust_ccd(q, &exact::ccd_hit) == exact::ccd_hit(q));
+  }));
 }
 
 TEST_P(MovingFamilyTest, ExactMatchesTheConstruction) {
-  EXPECT_TRUE(rc::check("ccd-exact-matches-construction/" + moving_family_name(GetParam()),
-                        [f = GetParam()] {
-                          const GeneratedMoving g = *gen_moving(f);
-                          const exact::CcdContact c = exact::ccd(g.query);
-                          if (g.query.has_truth()) RC_ASSERT(c.hit == bool(g.query.truth));
-                          if (!g.time.empty()) {
-                            RC_ASSERT(c.time_exact());
-                            RC_ASSERT(c.time_lo == g.time);
-                          }
-                        }));
+  const Family& f = *family_named(GetParam());
+  EXPECT_TRUE(rc::check("ccd-exact-matches-construction/" + f.name, [&f] {
+    const Generated g = *gen_family(f);
+    const exact::CcdContact c = exact::ccd(g.query);
+    if (g.query.has_truth()) RC_ASSERT(c.hit == bool(g.query.truth));
+    if (!g.time.empty()) {
+      RC_ASSERT(c.time_exact());
+      RC_ASSERT(c.time_lo == g.time);
+    }
+  }));
 }
 
 TEST_P(MovingFamilyTest, ContactTimeIsTheFirstContact) {
-  EXPECT_TRUE(
-      rc::check("ccd-time-is-first-contact/" + moving_family_name(GetParam()), [f = GetParam()] {
-        const Query q = (*gen_moving(f)).query;
-        exact::CcdOptions o;
-        o.time_bits = 40;
-        const exact::CcdContact c = exact::ccd(q, o);
-        if (!c.hit) return;  // most random motions miss
-        const double lo = c.time_lo_down, hi = c.time_hi_up;
-        RC_ASSERT(0 <= lo && lo <= hi && hi <= 1);
-        if (!c.time_exact()) RC_ASSERT(hi - lo < 0x1p-39);
-        RC_ASSERT(exact::ccd(q, {lo, hi, 0}).hit);  // it touches in there
-        if (lo > 0)                                 // and never before
-          RC_ASSERT(!exact::ccd(q, {0, std::nextafter(lo, -1.0), 0}).hit);
-      }));
+  const Family& f = *family_named(GetParam());
+  EXPECT_TRUE(rc::check("ccd-time-is-first-contact/" + f.name, [&f] {
+    const Query q = (*gen_family(f)).query;
+    exact::CcdOptions o;
+    o.time_bits = 40;
+    const exact::CcdContact c = exact::ccd(q, o);
+    if (!c.hit) return;  // most random motions miss
+    const double lo = c.time_lo_down, hi = c.time_hi_up;
+    RC_ASSERT(0 <= lo && lo <= hi && hi <= 1);
+    if (!c.time_exact()) RC_ASSERT(hi - lo < 0x1p-39);
+    RC_ASSERT(exact::ccd(q, {lo, hi, 0}).hit);  // it touches in there
+    if (lo > 0)                                 // and never before
+      RC_ASSERT(!exact::ccd(q, {0, std::nextafter(lo, -1.0), 0}).hit);
+  }));
 }
 
-INSTANTIATE_TEST_SUITE_P(All, MovingFamilyTest, ::testing::ValuesIn(all_moving_families()),
-                         [](const auto& info) {
-                           return test_name(moving_family_name(info.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(All, MovingFamilyTest, ::testing::ValuesIn(family_names(true)),
+                         [](const auto& info) { return test_name(info.param); });
 
-class StaticFamilyCcd : public ::testing::TestWithParam<Family> {};
+class StaticFamilyCcd : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(StaticFamilyCcd, CcdEqualsStaticExactAndRobust) {
-  EXPECT_TRUE(rc::check("ccd-on-static/" + family_name(GetParam()), [f = GetParam()] {
+  const Family& f = *family_named(GetParam());
+  EXPECT_TRUE(rc::check("ccd-on-static/" + f.name, [&f] {
     const Query q = (*gen_family(f)).query;
     const bool e = exact::point_triangle_hit(q.b0(), q.b1(), q.d(), q.e(), q.f());
     RC_ASSERT(exact::ccd_hit(q) == e);
@@ -74,8 +72,8 @@ TEST_P(StaticFamilyCcd, CcdEqualsStaticExactAndRobust) {
   }));
 }
 
-INSTANTIATE_TEST_SUITE_P(All, StaticFamilyCcd, ::testing::ValuesIn(all_families()),
-                         [](const auto& info) { return test_name(family_name(info.param)); });
+INSTANTIATE_TEST_SUITE_P(All, StaticFamilyCcd, ::testing::ValuesIn(family_names(false)),
+                         [](const auto& info) { return test_name(info.param); });
 
 }  // namespace
 }  // namespace fdh::verify

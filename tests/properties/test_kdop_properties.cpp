@@ -6,8 +6,8 @@
 #include <cstdint>
 
 #include "fdh/exact/kdop.hpp"
+#include "fdh/gen/rapidcheck.hpp"
 #include "fdh/kdop.hpp"
-#include "fdh/gen/static_families.hpp"
 
 namespace fdh {
 namespace {
@@ -55,11 +55,13 @@ bool contains_for_every_k(const std::vector<Vec3>& pts) {
 
 TEST(KdopProperties, FloatFdhContainsExactFdh) {
   EXPECT_TRUE(rc::check("contains/clouds", [] { RC_ASSERT(contains_for_every_k(*cloud())); }));
-  for (const verify::Family f : verify::all_families())
-    EXPECT_TRUE(rc::check("contains/" + verify::family_name(f), [f] {
+  for (const verify::Family& f : verify::all_families()) {
+    if (f.moving) continue;  // the static vertex-face families
+    EXPECT_TRUE(rc::check("contains/" + f.name, [&f] {
       const Query q = (*verify::gen_family(f)).query;
       RC_ASSERT(contains_for_every_k(std::vector<Vec3>(q.x.begin(), q.x.end())));
     }));
+  }
 }
 
 template <int K>
@@ -79,11 +81,13 @@ void assert_no_false_disjoint_any_k(const std::vector<Vec3>& a, const std::vecto
 
 TEST(KdopProperties, OverlapNeverSaysDisjointWhenExactOverlaps) {
   // The sweep BB' against the triangle: touching is common in these families.
-  for (const verify::Family f : verify::all_families())
-    EXPECT_TRUE(rc::check("overlap/" + verify::family_name(f), [f] {
+  for (const verify::Family& f : verify::all_families()) {
+    if (f.moving) continue;
+    EXPECT_TRUE(rc::check("overlap/" + f.name, [&f] {
       const Query q = (*verify::gen_family(f)).query;
       assert_no_false_disjoint_any_k({q.b0(), q.b1()}, {q.d(), q.e(), q.f()});
     }));
+  }
   // A cloud against a copy of itself moved by a hair: touching slabs after rounding.
   EXPECT_TRUE(rc::check("overlap/nudged-clouds", [] {
     const std::vector<Vec3> a = *cloud();

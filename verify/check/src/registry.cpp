@@ -98,7 +98,8 @@ std::vector<Method> all_methods(int gate_k) {
   const Method float_cubic{"float-cubic",
                            "Provot/Bridson: float cubic roots, then inside tests",
                            Promise::None,
-                           {QueryTest(), &fdh::float_cubic, &fdh::float_cubic},
+                           // A CCD method: a static query is a moving one whose triangle stays.
+                           {&fdh::float_cubic, &fdh::float_cubic, &fdh::float_cubic},
                            {}};
   return {
       twin,

@@ -1,64 +1,130 @@
+// run_cli: one CLI11 app with a subcommand per command (commands.hpp explains the pattern).
 #include "fdh/cli/cli.hpp"
+
+#include <optional>
+#include <sstream>
 
 #include "commands.hpp"
 #include "fdh/io/input_error.hpp"
+#include "suite_commands.hpp"
 
 namespace fdh::verify {
 namespace {
 
-const char* const kMainHelp =
-    R"(fdhcert: exact verification of FDH (k-DOP) cloth collision detection
+const char* const kAbout = "fdhcert: exact verification of FDH (k-DOP) cloth collision detection";
+const char* const kFooter =
+    "Run 'fdhcert <command> --help' for the options of a command.\n"
+    "Exit status: 0 success, 1 a check or certificate failed, 2 bad input or usage.";
 
-usage: fdhcert <command> [options]
+// fdhcert's help layout: the usage line first, then the description (as the help texts read
+// before CLI11); the command list shows the first line of each command's description.
+class HelpFormatter : public CLI::Formatter {
+ public:
+  std::string make_help(const CLI::App* app, std::string name,
+                        CLI::AppFormatMode mode) const override {
+    if (mode == CLI::AppFormatMode::Sub) return make_expanded(app);
+    return make_usage(app, name) + "\n" + make_description(app) + make_positionals(app) +
+           make_groups(app, mode) + make_subcommands(app, mode) + "\n" + make_footer(app);
+  }
+  // The description without the blank lines a raw string may end with.
+  std::string make_description(const CLI::App* app) const override {
+    std::string d = app->get_description();
+    while (!d.empty() && d.back() == '\n') d.pop_back();
+    return d.empty() ? d : d + "\n";
+  }
+  // An option's value as its type name alone (its help says the range or the choices), and
+  // "..." after a positional that takes several.
+  std::string make_option_opts(const CLI::Option* opt) const override {
+    if (opt->get_type_size() == 0) return "";  // a flag
+    if (opt->get_positional()) return opt->get_expected_max() > 1 ? " ..." : "";
+    const std::string type = opt->get_type_name();
+    return " " + type.substr(0, type.find(':'));
+  }
+  std::string make_subcommand(const CLI::App* sub) const override {
+    const std::string& d = sub->get_description();
+    std::ostringstream out;
+    CLI::detail::format_help(out, sub->get_display_name(true), d.substr(0, d.find('\n')),
+                             column_width_);
+    return out.str();
+  }
+};
 
-commands:
-  classify FILE...   run the point-triangle methods side by side on query files
-  fuzz               search a generator family for cases where a method is wrong,
-                     shrink them and store them
-  replay PATH...     re-run stored cases: which methods still fail where
-  generate FAMILY    write queries of a generator family to a file
-  certify            certify the fast library against the exact reference
-  report             certificate, measurements and charts in one folder
-  simulate SCENE     run a cloth scene: time per frame, accuracy and exact audit
-  table1             the paper's Table 1 on today's machine, accuracy beside speed
+std::vector<Command> add_commands(CLI::App& app) {
+  return {add_classify(app), add_fuzz(app),    add_replay(app),
+          add_generate(app), add_certify(app), add_report(app),
+          add_simulate(app), add_table1(app),  add_scenes(app)};
+}
 
-Run 'fdhcert <command> --help' for the options of a command.
-Exit status: 0 success, 1 a check or certificate failed, 2 bad input or usage.
-)";
+std::string main_help(const CLI::App& app) {
+  return app.get_formatter()->make_help(&app, "fdhcert", CLI::AppFormatMode::Normal);
+}
+
+// "fdhcert help" prints the main help, "fdhcert help COMMAND" that command's.
+std::string help_text(const CLI::App& app, const std::vector<std::string>& topic) {
+  for (const CLI::App* sub : app.get_subcommands({}))
+    if (!topic.empty() && sub->get_name() == topic.front() && sub->get_group() != "")
+      return sub->get_formatter()->make_help(sub, "fdhcert " + sub->get_name(),
+                                             CLI::AppFormatMode::Normal);
+  return main_help(app);
+}
+
+// A parse error in words: CLI11's, and where to read more.
+std::string usage_message(const CLI::App& app, const CLI::ParseError& e,
+                          const std::vector<std::string>& args) {
+  const std::vector<CLI::App*> chosen = app.get_subcommands();
+  if (chosen.empty() && !args.front().empty() && args.front()[0] != '-')
+    return "unknown command '" + args.front() + "' (see fdhcert --help)";
+  const std::string see = chosen.empty() ? "fdhcert" : "fdhcert " + chosen.front()->get_name();
+  return std::string(e.what()) + " (see " + see + " --help)";
+}
+
+// Parses; the help and parse errors print here. Returns the exit status if that ended the run.
+std::optional<int> parse(CLI::App& app, const std::vector<std::string>& args, const Io& io) {
+  try {
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 pops from the back
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    io.out << app.help();  // the help of the command named, if any
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    io.err << "fdhcert: " << usage_message(app, e, args) << "\n";
+    return 2;
+  }
+  if (app.got_subcommand("help")) {
+    io.out << help_text(app, app.get_subcommand("help")->remaining());
+    return 0;
+  }
+  return std::nullopt;
+}
 
 }  // namespace
 
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  try {
-    if (args.empty()) {
-      err << kMainHelp;
-      return 2;
-    }
-    const std::string& cmd = args[0];
-    const Args rest(args.begin() + 1, args.end());
-    if (cmd == "-h" || cmd == "--help" || cmd == "help") {
-      out << kMainHelp;
-      return 0;
-    }
-    if (cmd == "classify") return classify_command(rest, out, err);
-    if (cmd == "fuzz") return fuzz_command(rest, out, err);
-    if (cmd == "replay") return replay_command(rest, out, err);
-    if (cmd == "generate") return generate_command(rest, out, err);
-    if (cmd == "certify") return certify_command(rest, out, err);
-    if (cmd == "report") return report_command(rest, out, err);
-    if (cmd == "simulate") return simulate_command(rest, out, err);
-    if (cmd == "table1") return table1_command(rest, out, err);
-    throw UsageError("unknown command '" + cmd + "' (see fdhcert --help)");
-  } catch (const UsageError& e) {
-    err << "fdhcert: " << e.what() << "\n";
-    return 2;
-  } catch (const InputError& e) {
-    err << "fdhcert: error: " << e.what() << "\n";
-    return 2;
-  } catch (const std::runtime_error& e) {  // I/O failures while writing output
-    err << "fdhcert: error: " << e.what() << "\n";
+  CLI::App app(kAbout, "fdhcert");
+  app.formatter(std::make_shared<HelpFormatter>());
+  app.get_formatter()->column_width(24);
+  app.require_subcommand(1);
+  app.footer(kFooter);
+  app.add_subcommand("help", "this text")->group("")->allow_extras();  // hidden
+  const std::vector<Command> commands = add_commands(app);
+  const Io io{out, err};
+  if (args.empty()) {
+    err << main_help(app);
     return 2;
   }
+  try {
+    if (const std::optional<int> status = parse(app, args, io)) return *status;
+    for (const Command& c : commands)
+      if (c.app->parsed()) return c.run(io);
+    return 2;  // unreachable: CLI11 requires one command
+  } catch (const UsageError& e) {
+    err << "fdhcert: " << e.what() << "\n";
+  } catch (const InputError& e) {
+    err << "fdhcert: error: " << e.what() << "\n";
+  } catch (const std::runtime_error& e) {  // I/O failures while writing output
+    err << "fdhcert: error: " << e.what() << "\n";
+  }
+  return 2;
 }
 
 }  // namespace fdh::verify

@@ -1,20 +1,47 @@
 #include "commands.hpp"
 
-#include <sstream>
+#include <algorithm>
 
 namespace fdh::verify {
 
-long long ArgReader::integer(long long lo, long long hi) {
-  const std::string flag = word();
-  const std::string& v = value();
-  try {
-    std::size_t used = 0;
-    const long long n = std::stoll(v, &used);
-    if (used == v.size() && n >= lo && n <= hi) return n;
-  } catch (const std::exception&) {
-  }
-  throw UsageError(flag + " takes a whole number from " + std::to_string(lo) + " to " +
-                   std::to_string(hi) + ", not '" + v + "'");
+CLI::Option* add_methods_option(CLI::App& cmd, std::vector<std::string>& names,
+                                const std::string& help) {
+  std::vector<std::string> known;
+  for (const Method& m : all_methods()) known.push_back(m.name);
+  // One word per --methods (not the files after it), split at commas.
+  return cmd.add_option("--methods", names, help)
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->type_name("LIST")
+      ->check(one_of(known));
+}
+
+CLI::Validator one_of(std::vector<std::string> choices) {
+  return CLI::Validator(
+      [choices](std::string& s) -> std::string {
+        if (std::find(choices.begin(), choices.end(), s) != choices.end()) return {};
+        std::string list;
+        for (const std::string& c : choices) list += (list.empty() ? "" : ", ") + c;
+        return "unknown value '" + s + "' (one of " + list + ")";
+      },
+      "");
+}
+
+CLI::Validator kdop_k_validator(bool allow_none) {
+  return CLI::Validator(
+      [allow_none](std::string& s) -> std::string {
+        for (const char* k : {"6", "14", "18", "26"})
+          if (s == k) return {};
+        if (allow_none && s == "0") return {};
+        return "takes 6, 14, 18 or 26, not '" + s + "'";
+      },
+      "");
+}
+
+CLI::Option* add_seed_option(CLI::App& cmd, std::uint64_t& seed, const std::string& help) {
+  return cmd.add_option("--seed", seed, help)
+      ->type_name("S")
+      ->check(CLI::Range(std::uint64_t(0), std::uint64_t(1) << 62));
 }
 
 std::vector<Method> methods_named(const std::vector<std::string>& names, int gate_k) {
@@ -25,13 +52,8 @@ std::vector<Method> methods_named(const std::vector<std::string>& names, int gat
   }
 }
 
-std::vector<std::string> split_list(const std::string& s) {
-  std::vector<std::string> out;
-  std::string item;
-  std::istringstream is(s);
-  while (std::getline(is, item, ','))
-    if (!item.empty()) out.push_back(item);
-  return out;
+void print_json(std::ostream& os, const nlohmann::ordered_json& j) {
+  os << j.dump(2) << "\n";
 }
 
 }  // namespace fdh::verify

@@ -1,7 +1,26 @@
-// The fdhcert subcommands and what they share: argument parsing and usage errors. Private to
-// verify/src; the public entry point is cli.hpp.
+// CLI11 pattern ready
+//
+// The fdhcert commands and what they share. Private to verify/cli; the public entry point is
+// fdh/cli/cli.hpp (run_cli).
+//
+// The pattern (classify.cpp is the example). A command is one file with
+//   - a struct of its options, held by a std::shared_ptr that the runner captures (CLI11 binds
+//     the options to its fields, so it must outlive the parse);
+//   - `Command add_<name>(CLI::App& app)`: adds the subcommand (a one-line description for the
+//     command list), binds its options with CLI11 validators for ranges and choices (a bad value
+//     is a usage error: exit 2), puts the long explanations in the description and the footer,
+//     and returns the runner;
+//   - the runner, `int(const Io&)`: calls the library and prints to io.out / io.err (never
+//     std::cout), returning the exit status (0, or 1 when a requested check failed). Bad input
+//     found while running throws UsageError or InputError (exit 2).
+// Tables with fmt, JSON with nlohmann::ordered_json (print_json below), no function longer than
+// about 60 lines. run_cli (cli.cpp) adds every command, parses, and runs the one named.
 #pragma once
 
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -11,52 +30,45 @@
 
 namespace fdh::verify {
 
-// A wrong command line: printed as "fdhcert: <what>", exit status 2.
+// A wrong command line found after parsing: printed as "fdhcert: <what>", exit status 2.
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-using Args = std::vector<std::string>;
-
-int classify_command(const Args& args, std::ostream& out, std::ostream& err);
-int fuzz_command(const Args& args, std::ostream& out, std::ostream& err);
-int replay_command(const Args& args, std::ostream& out, std::ostream& err);
-int certify_command(const Args& args, std::ostream& out, std::ostream& err);
-int report_command(const Args& args, std::ostream& out, std::ostream& err);
-int simulate_command(const Args& args, std::ostream& out, std::ostream& err);
-int table1_command(const Args& args, std::ostream& out, std::ostream& err);
-int generate_command(const Args& args, std::ostream& out, std::ostream& err);
-
-// Walks the arguments: options with values, flags, and positional words.
-class ArgReader {
- public:
-  explicit ArgReader(const Args& args) : args_(args) {}
-  bool next() { return ++i_ < args_.size(); }
-  const std::string& word() const { return args_[i_]; }
-  bool is(const char* flag) const { return args_[i_] == flag; }
-  bool is_option() const { return args_[i_].size() > 1 && args_[i_][0] == '-'; }
-  const std::string& value() {
-    if (i_ + 1 >= args_.size()) throw UsageError(args_[i_] + " needs a value");
-    return args_[++i_];
-  }
-  long long integer(long long lo, long long hi);  // the option's value, checked
-  [[noreturn]] void unknown(const char* command) const {
-    throw UsageError("unknown option '" + args_[i_] + "' (see fdhcert " + command + " --help)");
-  }
-
- private:
-  const Args& args_;
-  std::size_t i_ = std::size_t(-1);
+// Where a command prints.
+struct Io {
+  std::ostream& out;
+  std::ostream& err;
 };
 
-std::vector<std::string> split_list(const std::string& s);
+// A registered command: its subcommand and what runs it once the command line parsed.
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int(const Io&)> run;
+};
+
+Command add_classify(CLI::App& app);
+Command add_fuzz(CLI::App& app);
+Command add_replay(CLI::App& app);
+Command add_generate(CLI::App& app);
+Command add_simulate(CLI::App& app);
+
+// --- Shared options and checks -------------------------------------------------------------
+
+// --methods LIST: comma-separated method names from the registry, checked by CLI11.
+CLI::Option* add_methods_option(CLI::App& cmd, std::vector<std::string>& names,
+                                const std::string& help);
+// A word from a fixed list (a method, a family, on|off); the error lists the choices.
+CLI::Validator one_of(std::vector<std::string> choices);
+// A k-DOP's k: 6, 14, 18 or 26 (and 0 for "none" when allow_none).
+CLI::Validator kdop_k_validator(bool allow_none);
+// --seed S: 0 to 2^62.
+CLI::Option* add_seed_option(CLI::App& cmd, std::uint64_t& seed, const std::string& help);
 
 // The named methods (all of them for an empty list); an unknown name or gate is a UsageError.
 std::vector<Method> methods_named(const std::vector<std::string>& names, int gate_k = 0);
 
-struct CertifyOptions;
-// The options certify and report share (--quick --out --corpus --seed --per-family --soups, and
-// extra files). False if the current word is none of them.
-bool read_certify_option(ArgReader& a, CertifyOptions& opt);
+// Every JSON output: one object, two-space indented, then a newline.
+void print_json(std::ostream& os, const nlohmann::ordered_json& j);
 
 }  // namespace fdh::verify

@@ -1,54 +1,37 @@
 // fdhcert replay: re-run stored cases; exact must still give each stored truth.
-#include <map>
+#include <memory>
 
 #include "commands.hpp"
-#include "fdh/io/case_files.hpp"
+#include "fdh/check/checker.hpp"
 #include "fdh/check/classify.hpp"
+#include "fdh/io/case_files.hpp"
 #include "fdh/io/input_error.hpp"
-#include "fdh/io/json.hpp"
-#include "fdh/check/registry.hpp"
 #include "fdh/io/query_io.hpp"
 
 namespace fdh::verify {
 namespace {
 
-const char* const kReplayHelp = R"(usage: fdhcert replay PATH... [--methods LIST] [--json]
+const char* const kAbout =
+    R"(re-run stored cases: which methods still fail where
 
 Re-runs stored cases (native query files; a folder means every *.vf below it,
 such as corpus/ or a fuzz --out folder). Every case must carry a truth.
 
   exact must still give each case's stored truth: if it does not, replay names
   the case and exits with status 1.
-  For every other method it reports which cases it still gets wrong.
+  For every other method it reports which cases it still gets wrong.)";
 
-  --methods LIST   comma-separated methods (default: all)
-  --json           {"cases": N, "exact_mismatches": [...],
-                    "methods": {"<name>": {"failing": K, "cases": [...]}}}
-  -h, --help       this text
-)";
+const char* const kFooter =
+    R"(--json prints {"cases": N, "exact_mismatches": [...],
+               "methods": {"<name>": {"failing": K, "cases": [...]}}})";
 
-}  // namespace
-
-int replay_command(const Args& args, std::ostream& out, std::ostream& err) {
-  std::vector<std::string> paths, names;
+struct ReplayOptions {
+  std::vector<std::string> paths, methods;
   bool json = false;
-  for (ArgReader a(args); a.next();) {
-    if (a.is("-h") || a.is("--help")) {
-      out << kReplayHelp;
-      return 0;
-    } else if (a.is("--methods")) {
-      names = split_list(a.value());
-    } else if (a.is("--json")) {
-      json = true;
-    } else if (a.is_option()) {
-      a.unknown("replay");
-    } else {
-      paths.push_back(a.word());
-    }
-  }
-  if (paths.empty()) throw UsageError("replay needs at least one file or folder");
-  const std::vector<Method> methods = methods_named(names);
+};
 
+// The stored static vertex-face cases under the paths; the others are counted on err.
+std::vector<Query> read_cases(const std::vector<std::string>& paths, std::ostream& err) {
   std::vector<Query> cases;
   std::size_t skipped = 0;
   for (const std::string& p : paths)
@@ -62,49 +45,75 @@ int replay_command(const Args& args, std::ostream& out, std::ostream& err) {
       }
   if (skipped) err << "fdhcert: note: skipped " << skipped << " moving or edge-edge cases\n";
   if (cases.empty()) throw InputError(paths.front(), 0, "no stored static vertex-face case");
+  return cases;
+}
 
-  const Classification c = classify(cases, methods);
-  const auto where = [&](std::size_t i) {
-    return cases[i].file + ":" + std::to_string(cases[i].line);
-  };
-  std::map<std::string, std::vector<std::string>> failing;
+std::string where(const Query& q) {
+  return q.file + ":" + std::to_string(q.line);
+}
+
+// What replay found: the cases where the twin lost its stored truth, and per method (in the
+// order run) the cases it answers differently from the reference.
+struct Replay {
+  std::vector<std::string> twin_mismatches;
+  std::vector<std::pair<std::string, std::vector<std::string>>> failing;
+};
+
+Replay replay(const std::vector<Query>& cases, const Classification& c) {
+  Replay r;
+  for (std::size_t i = 0; i < cases.size(); ++i)
+    if (twin_matches_truth(cases[i], c.exact[i]) == std::optional<bool>(false))
+      r.twin_mismatches.push_back(where(cases[i]));
   for (const MethodResult& m : c.methods) {
-    std::vector<std::string>& list = failing[m.name];
+    std::vector<std::string> list;
     for (std::size_t i = 0; i < cases.size(); ++i)
       if (m.verdict[i] != kNotApplicable && m.verdict[i] != c.reference[i])
-        list.push_back(where(i));
+        list.push_back(where(cases[i]));
+    r.failing.emplace_back(m.name, std::move(list));
   }
+  return r;
+}
 
+void print_replay(const Replay& r, std::size_t cases, bool json, std::ostream& out) {
   if (json) {
-    out << "{\"cases\": " << cases.size() << ", \"exact_mismatches\": [";
-    for (std::size_t k = 0; k < c.exact_vs_file.size(); ++k)
-      out << (k ? ", " : "") << json_string(where(c.exact_vs_file[k]));
-    out << "], \"methods\": {";
-    bool first = true;
-    for (const MethodResult& m : c.methods) {
-      const auto& list = failing[m.name];
-      out << (first ? "" : ", ") << '"' << m.name << "\": {\"failing\": " << list.size()
-          << ", \"cases\": [";
-      for (std::size_t k = 0; k < list.size(); ++k) out << (k ? ", " : "") << json_string(list[k]);
-      out << "]}";
-      first = false;
-    }
-    out << "}}\n";
-  } else {
-    out << "replayed " << cases.size() << " cases; exact "
-        << (c.exact_vs_file.empty()
-                ? "gives every stored truth"
-                : "DISAGREES with " + std::to_string(c.exact_vs_file.size()) + " stored truths")
-        << "\n";
-    for (const MethodResult& m : c.methods) {
-      const auto& list = failing[m.name];
-      out << "  " << m.name << ": " << list.size() << " failing\n";
-      for (const std::string& w : list) out << "    " << w << "\n";
-    }
+    nlohmann::ordered_json methods = nlohmann::ordered_json::object();
+    for (const auto& [name, list] : r.failing)
+      methods[name] = {{"failing", list.size()}, {"cases", list}};
+    print_json(out,
+               {{"cases", cases}, {"exact_mismatches", r.twin_mismatches}, {"methods", methods}});
+    return;
   }
-  for (const std::size_t i : c.exact_vs_file)
-    err << "fdhcert: exact no longer gives the stored truth at " << where(i) << "\n";
-  return c.exact_vs_file.empty() ? 0 : 1;
+  out << "replayed " << cases << " cases; exact "
+      << (r.twin_mismatches.empty()
+              ? "gives every stored truth"
+              : "DISAGREES with " + std::to_string(r.twin_mismatches.size()) + " stored truths")
+      << "\n";
+  for (const auto& [name, list] : r.failing) {
+    out << "  " << name << ": " << list.size() << " failing\n";
+    for (const std::string& w : list) out << "    " << w << "\n";
+  }
+}
+
+int run_replay(const ReplayOptions& o, const Io& io) {
+  const std::vector<Method> methods = methods_named(o.methods);
+  const std::vector<Query> cases = read_cases(o.paths, io.err);
+  const Replay r = replay(cases, classify(cases, methods));
+  print_replay(r, cases.size(), o.json, io.out);
+  for (const std::string& w : r.twin_mismatches)
+    io.err << "fdhcert: exact no longer gives the stored truth at " << w << "\n";
+  return r.twin_mismatches.empty() ? 0 : 1;
+}
+
+}  // namespace
+
+Command add_replay(CLI::App& app) {
+  auto o = std::make_shared<ReplayOptions>();
+  CLI::App* cmd = app.add_subcommand("replay", kAbout);
+  cmd->footer(kFooter);
+  cmd->add_option("PATH", o->paths, "a case file, or a folder of them")->required();
+  add_methods_option(*cmd, o->methods, "comma-separated methods (default: all)");
+  cmd->add_flag("--json", o->json, "print one JSON object (below)");
+  return {cmd, [o](const Io& io) { return run_replay(*o, io); }};
 }
 
 }  // namespace fdh::verify

@@ -1,24 +1,23 @@
 // fdhcert simulate: one scene, frame by frame, timed and checked.
-#include <cstdio>
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <memory>
-#include <sstream>
 
 #include "commands.hpp"
 #include "fdh/io/atomic_file.hpp"
-#include "fdh/io/json.hpp"
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_file.hpp"
 #include "fdh/io/scene_output.hpp"
+#include "fdh/kdop.hpp"
+#include "fdh/suite/scene_report.hpp"
 #include "fdh/suite/scene_run.hpp"
 
 namespace fdh::verify {
 namespace {
 
-const char* const kSimulateHelp =
-    R"(usage: fdhcert simulate SCENE [--grid N] [--frames F] [--narrow METHOD] [--k K]
-                         [--thickness T] [--self on|off] [--audit-self] [--obj DIR]
-                         [--png FILE] [--record FILE] [--json] [--no-check]
+const char* const kAbout =
+    R"(run a cloth scene: time per frame, accuracy and exact audit
 
 Runs the cloth of SCENE (a .scene file, docs/formats.md; shipped ones are in
 corpus/scenes/) among its obstacles, one step of dt per frame: springs and
@@ -32,218 +31,212 @@ pairs and collisions, and two checks, both untimed:
             (false positives and false negatives);
   audit     after every frame, the exact count of cloth particles strictly
             inside an obstacle and of cloth edges crossing an obstacle
-            triangle, summed over the frames.
+            triangle, summed over the frames.)";
 
-options:
-  --grid N          particles per side (default: the scene's)
-  --frames F        frames to run (default: the scene's)
-  --narrow METHOD   robust (default), exact, paper-intended, paper-literal or
-                    linear-system
-  --k K             the FDH's k: 6, 14, 18 (default) or 26
-  --thickness T     the collision skin in m (default: the scene's; 0 collides
-                    with the obstacles' own surfaces, see docs/cloth.md)
-  --self on|off     the cloth against itself: moving vertex-face and edge-edge
-                    tests with robust CCD among primitives sharing no particle
-                    (default: the scene's self_collision, else off)
-  --audit-self      count self-crossings (cloth edges through the cloth's own
-                    triangles) even without the self-collision pass
-  --obj DIR         write DIR/frame_NNNNN.obj for every frame (cloth and
-                    obstacles), for Blender or ParaView
-  --png FILE        render the last frame to FILE
-  --record FILE     write every narrow-phase query of the run to FILE in the
-                    native vf format, for `fdhcert classify FILE`
-  --json            print one JSON object instead of the text
-  --no-check        skip the accuracy count and the audit
-  -h, --help        this text
-
-If the scene's dt is above the cloth's stable step (it shrinks as the grid
+const char* const kFooter =
+    R"(If the scene's dt is above the cloth's stable step (it shrinks as the grid
 grows), 0.9 times the stable step is used, and the output says so.
-Exit status: 0; 2 for bad input. A scene error names the file and line.
-)";
+Exit status: 0; 2 for bad input. A scene error names the file and line.)";
 
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
+struct SimulateOptions {
+  std::string scene_path, obj_dir, png, record;
+  int grid = 0;           // 0: the scene's
+  std::string thickness;  // "": the scene's
+  std::string self;       // "on", "off" or "": the scene's
+  bool json = false, no_check = false;
+  SceneRunOptions run;
+};
+
+const std::array<double, 3> kClothColour = {0.85, 0.25, 0.2}, kObstacleColour = {0.7, 0.7, 0.65};
+
+// The scene with the command line's overrides.
+cloth::Scene read_scene_as_asked(const SimulateOptions& o) {
+  cloth::Scene scene = read_scene(o.scene_path);
+  if (o.grid) scene.cloth.grid = o.grid;
+  std::string why;
+  if (!o.thickness.empty()) scene.thickness = *parse_double(o.thickness, why);  // checked
+  if (!o.self.empty()) scene.self_collision = o.self == "on";
+  return scene;
 }
 
-std::string general(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
+// What the run writes besides its report: OBJ frames, the recorded queries, the picture (as
+// `fdhcert scenes` draws it).
+class Outputs {
+ public:
+  Outputs(const SimulateOptions& o, const cloth::Scene& scene) : o_(o) {
+    for (const auto& ob : scene.obstacles) obstacles_.append(cloth::obstacle_mesh(ob));
+    if (!o.obj_dir.empty()) {
+      std::error_code ec;
+      std::filesystem::create_directories(o.obj_dir, ec);
+      if (ec) throw std::runtime_error(o.obj_dir + ": cannot create folder: " + ec.message());
+    }
+    if (!o.record.empty()) {
+      recording_ = std::make_unique<AtomicFile>(o.record);
+      recording_->stream() << "# fdhcert simulate " << o.scene_path
+                           << ": every narrow-phase query\n";
+    }
+  }
+  const TriMesh& obstacles() const { return obstacles_; }
+
+  void frame(const cloth::Simulation& sim, int frame) {
+    if (!o_.obj_dir.empty())
+      write_obj(o_.obj_dir + fmt::format("/frame_{:05d}.obj", frame),
+                {{"cloth", &sim.cloth().x(), &sim.cloth().triangles(), kClothColour},
+                 {"obstacles", &obstacles_.x, &obstacles_.tris, kObstacleColour}});
+    if (!recording_) return;
+    for (const auto& q : sim.queries()) {
+      Query r = sim.query(q);
+      r.id = fmt::format("f{}p{}t{}", frame, q.particle, q.triangle);
+      write_native(recording_->stream(), r);
+    }
+  }
+
+  void finish(const cloth::Scene& scene, const SceneRun& r) {
+    if (recording_) recording_->commit();
+    if (!o_.png.empty()) write_scene_png(o_.png, scene, r);
+  }
+
+ private:
+  const SimulateOptions& o_;
+  TriMesh obstacles_;
+  std::unique_ptr<AtomicFile> recording_;
+};
+
+// The scene, the step, and the time per frame.
+void print_timing(std::ostream& out, const SimulateOptions& o, const cloth::Scene& scene,
+                  std::size_t obstacle_tris, const SceneRun& r) {
+  const std::size_t n = scene.obstacles.size();
+  out << fmt::format("scene {} ({}): {}x{} particles, {} obstacle{} ({} triangles), skin {:g} m\n",
+                     scene.name, o.scene_path, r.grid, r.grid, n, n == 1 ? "" : "s", obstacle_tris,
+                     r.skin);
+  out << fmt::format(
+      "narrow phase {}, k = {}, {} frames of dt = {:g} s (stable up to {:g} s{})\n\n", o.run.narrow,
+      o.run.k, r.frames, r.dt, r.stable_dt,
+      r.dt_reduced ? fmt::format("; the scene's {:g} s is above it", scene.dt) : "");
+  const double per = r.frames ? 1e3 / r.frames : 0;  // s summed -> ms per frame
+  const cloth::FrameTimes& t = r.time;
+  out << fmt::format(
+      "ms per frame   springs+integration {:.4f}   refit {:.4f}   traversal {:.4f}   narrow "
+      "{:.4f}   response {:.4f}{}\n               collision {:.4f}   total {:.4f}\n",
+      per * t.springs, per * t.refit, per * t.traversal, per * t.narrow, per * t.response,
+      scene.self_collision ? fmt::format("   self {:.4f}", per * t.self) : "", per * t.collision(),
+      per * t.total());
+}
+
+// The counts, the checks and the files written.
+void print_counts(std::ostream& out, const SimulateOptions& o, const cloth::Scene& scene,
+                  const SceneRun& r) {
+  const double frames = r.frames ? r.frames : 1;
+  out << fmt::format(
+      "counts         {} candidate pairs, {} collisions ({:.1f} and {:.1f} per "
+      "frame)\n",
+      r.candidates, r.collisions, r.candidates / frames, r.collisions / frames);
+  if (o.run.check) {
+    out << fmt::format(
+        "accuracy       {} false positives, {} false negatives against the exact "
+        "test\n",
+        r.fp, r.fn);
+    out << fmt::format(
+        "audit (exact)  {} particles inside, {} crossing edges, summed over the "
+        "frames (last frame: {} and {})\n",
+        r.audit.inside, r.audit.crossing, r.audit_last_inside, r.audit_last_crossing);
+  }
+  if (scene.self_collision)
+    out << fmt::format("self-collision {} CCD queries, {} contacts, {} frames stopped whole\n",
+                       r.self_queries, r.self_hits, r.self_stops);
+  if (r.self_audited)
+    out << fmt::format(
+        "self (exact)   {} cloth edges through the cloth's own triangles, summed "
+        "over the frames\n",
+        r.audit.self_crossing);
+  if (!o.png.empty()) out << "picture        " << o.png << "\n";
+  if (!o.record.empty()) out << "queries        " << o.record << "\n";
+  if (!o.obj_dir.empty()) out << "frames         " << o.obj_dir << "/frame_*.obj\n";
+}
+
+int run_simulate(SimulateOptions& o, const Io& io) {
+  o.run.check = !o.no_check;
+  const cloth::Scene scene = read_scene_as_asked(o);
+  Outputs outputs(o, scene);
+  o.run.on_frame = [&outputs](const cloth::Simulation& sim, int frame) {
+    outputs.frame(sim, frame);
+  };
+  const SceneRun r = run_scene(scene, o.run);
+  outputs.finish(scene, r);
+  if (o.json) {
+    print_json(io.out, scene_run_json(scene, o.run, r));
+  } else {
+    print_timing(io.out, o, scene, outputs.obstacles().tris.size(), r);
+    print_counts(io.out, o, scene, r);
+  }
+  return 0;
+}
+
+// --thickness: a length >= 0 in m, read as query files read numbers.
+CLI::Validator length_validator() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        std::string why;
+        const std::optional<double> t = parse_double(s, why);
+        return t && *t >= 0 ? "" : "takes a length >= 0 in m, not '" + s + "'";
+      },
+      "");
+}
+
+void add_scene_options(CLI::App& cmd, SimulateOptions& o) {
+  cmd.add_option("SCENE", o.scene_path, "a .scene file (corpus/scenes/)")->required();
+  cmd.add_option("--grid", o.grid, "particles per side (default: the scene's)")
+      ->type_name("N")
+      ->check(CLI::Range(2, 4000));
+  cmd.add_option("--frames", o.run.frames, "frames to run (default: the scene's)")
+      ->type_name("F")
+      ->check(CLI::Range(0, 100000000));
+  cmd.add_option("--narrow", o.run.narrow,
+                 "robust (default), exact, paper-intended, paper-literal or\nlinear-system")
+      ->type_name("METHOD")
+      ->check(one_of(narrow_phase_names()));
+  cmd.add_option("--k", o.run.k, "the FDH's k: 6, 14, 18 (default) or 26")
+      ->type_name("K")
+      ->check(kdop_k_validator(false));
+  cmd.add_option("--thickness", o.thickness,
+                 "the collision skin in m (default: the scene's; 0 collides\n"
+                 "with the obstacles' own surfaces, see docs/cloth.md)")
+      ->type_name("T")
+      ->check(length_validator());
+  cmd.add_option("--self", o.self,
+                 "the cloth against itself: moving vertex-face and edge-edge\n"
+                 "tests with robust CCD among primitives sharing no particle\n"
+                 "(default: the scene's self_collision, else off)")
+      ->type_name("on|off")
+      ->check(one_of({"on", "off"}));
+  cmd.add_flag("--audit-self", o.run.audit_self,
+               "count self-crossings (cloth edges through the cloth's own\n"
+               "triangles) even without the self-collision pass");
+}
+
+void add_output_options(CLI::App& cmd, SimulateOptions& o) {
+  cmd.add_option("--obj", o.obj_dir,
+                 "write DIR/frame_NNNNN.obj for every frame (cloth and\n"
+                 "obstacles), for Blender or ParaView")
+      ->type_name("DIR");
+  cmd.add_option("--png", o.png, "render the last frame to FILE")->type_name("FILE");
+  cmd.add_option("--record", o.record,
+                 "write every narrow-phase query of the run to FILE in the\n"
+                 "native vf format, for `fdhcert classify FILE`")
+      ->type_name("FILE");
+  cmd.add_flag("--json", o.json, "print one JSON object instead of the text");
+  cmd.add_flag("--no-check", o.no_check, "skip the accuracy count and the audit");
 }
 
 }  // namespace
 
-int simulate_command(const Args& args, std::ostream& out, std::ostream&) {
-  std::string scene_path, obj_dir, png, record;
-  int grid = 0;
-  double thickness = -2;  // not given
-  int self = -1;          // not given
-  bool json = false;
-  SceneRunOptions opt;
-  for (ArgReader a(args); a.next();) {
-    if (a.is("-h") || a.is("--help")) {
-      out << kSimulateHelp;
-      return 0;
-    } else if (a.is("--grid")) {
-      grid = int(a.integer(2, 4000));
-    } else if (a.is("--frames")) {
-      opt.frames = int(a.integer(0, 100000000));
-    } else if (a.is("--narrow")) {
-      opt.narrow = a.value();
-      try {
-        narrow_phase_named(opt.narrow);
-      } catch (const std::invalid_argument& e) {
-        throw UsageError(std::string("--narrow: ") + e.what());
-      }
-    } else if (a.is("--k")) {
-      opt.k = int(a.integer(6, 26));
-      if (!is_valid_k(opt.k)) throw UsageError("--k takes 6, 14, 18 or 26");
-    } else if (a.is("--thickness")) {
-      const std::string& v = a.value();
-      std::string why;
-      const auto t = parse_double(v, why);
-      if (!t || *t < 0) throw UsageError("--thickness takes a length >= 0 in m, not '" + v + "'");
-      thickness = *t;
-    } else if (a.is("--self")) {
-      const std::string& v = a.value();
-      if (v != "on" && v != "off") throw UsageError("--self takes on or off, not '" + v + "'");
-      self = v == "on";
-    } else if (a.is("--audit-self")) {
-      opt.audit_self = true;
-    } else if (a.is("--obj")) {
-      obj_dir = a.value();
-    } else if (a.is("--png")) {
-      png = a.value();
-    } else if (a.is("--record")) {
-      record = a.value();
-    } else if (a.is("--json")) {
-      json = true;
-    } else if (a.is("--no-check")) {
-      opt.check = false;
-    } else if (a.is_option()) {
-      a.unknown("simulate");
-    } else if (scene_path.empty()) {
-      scene_path = a.word();
-    } else {
-      throw UsageError("simulate takes one scene, not '" + a.word() + "' too");
-    }
-  }
-  if (scene_path.empty()) throw UsageError("simulate needs a scene file (see corpus/scenes/)");
-  cloth::Scene scene = read_scene(scene_path);
-  if (grid) scene.cloth.grid = grid;
-  if (thickness >= 0) scene.thickness = thickness;
-  if (self >= 0) scene.self_collision = self == 1;
-  if (!obj_dir.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(obj_dir, ec);
-    if (ec) throw std::runtime_error(obj_dir + ": cannot create folder: " + ec.message());
-  }
-
-  std::vector<TriMesh> obstacles;
-  for (const auto& o : scene.obstacles) obstacles.push_back(cloth::obstacle_mesh(o));
-  TriMesh all_obstacles;
-  for (const auto& m : obstacles) all_obstacles.append(m);
-  const std::array<double, 3> cloth_colour = {0.85, 0.25, 0.2}, obstacle_colour = {0.7, 0.7, 0.65};
-
-  std::unique_ptr<AtomicFile> recording;
-  if (!record.empty()) recording = std::make_unique<AtomicFile>(record);
-  if (recording)
-    recording->stream() << "# fdhcert simulate " << scene_path << ": every narrow-phase query\n";
-  opt.on_frame = [&](const cloth::Simulation& sim, int frame) {
-    if (!obj_dir.empty()) {
-      char name[32];
-      std::snprintf(name, sizeof name, "/frame_%05d.obj", frame);
-      write_obj(obj_dir + name,
-                {{"cloth", &sim.cloth().x(), &sim.cloth().triangles(), cloth_colour},
-                 {"obstacles", &all_obstacles.x, &all_obstacles.tris, obstacle_colour}});
-    }
-    if (recording) {
-      for (const auto& q : sim.queries()) {
-        Query r = sim.query(q);
-        r.id = "f" + std::to_string(frame) + "p" + std::to_string(q.particle) + "t" +
-               std::to_string(q.triangle);
-        write_native(recording->stream(), r);
-      }
-    }
-  };
-  const SceneRun r = run_scene(scene, opt);
-  if (recording) recording->commit();
-  if (!png.empty()) {
-    const cloth::Cloth shape(scene.cloth);
-    write_png(png, {{"cloth", &r.final_x, &shape.triangles(), cloth_colour},
-                    {"obstacles", &all_obstacles.x, &all_obstacles.tris, obstacle_colour}});
-  }
-
-  const double per = r.frames ? 1e3 / r.frames : 0;  // s summed -> ms per frame
-  const cloth::FrameTimes& t = r.time;
-  const bool checked = opt.check;
-  if (json) {
-    out << "{\"scene\": " << json_string(scene.name) << ", \"grid\": " << r.grid
-        << ", \"particles\": " << r.particles << ", \"frames\": " << r.frames
-        << ", \"narrow\": " << json_string(opt.narrow) << ", \"k\": " << opt.k
-        << ", \"dt\": " << general(r.dt) << ", \"stable_dt\": " << general(r.stable_dt)
-        << ", \"dt_reduced\": " << (r.dt_reduced ? "true" : "false")
-        << ", \"skin\": " << general(r.skin)
-        << ", \"ms_per_frame\": {\"springs\": " << general(per * t.springs)
-        << ", \"refit\": " << general(per * t.refit)
-        << ", \"traversal\": " << general(per * t.traversal)
-        << ", \"narrow\": " << general(per * t.narrow)
-        << ", \"response\": " << general(per * t.response)
-        << ", \"self\": " << general(per * t.self)
-        << ", \"collision\": " << general(per * t.collision())
-        << ", \"total\": " << general(per * t.total()) << "}, \"candidates\": " << r.candidates
-        << ", \"collisions\": " << r.collisions;
-    if (checked)
-      out << ", \"fp\": " << r.fp << ", \"fn\": " << r.fn << ", \"inside\": " << r.audit.inside
-          << ", \"crossing\": " << r.audit.crossing;
-    else
-      out << ", \"fp\": null, \"fn\": null, \"inside\": null, \"crossing\": null";
-    out << ", \"self_collision\": " << (scene.self_collision ? "true" : "false")
-        << ", \"self_queries\": " << r.self_queries << ", \"self_hits\": " << r.self_hits
-        << ", \"self_stops\": " << r.self_stops << ", \"self_crossing\": ";
-    if (r.self_audited)
-      out << r.audit.self_crossing;
-    else
-      out << "null";
-    out << ", \"energy_start\": " << general(r.energy_start)
-        << ", \"energy_end\": " << general(r.energy_end) << "}\n";
-    return 0;
-  }
-  out << "scene " << scene.name << " (" << scene_path << "): " << r.grid << "x" << r.grid
-      << " particles, " << scene.obstacles.size() << " obstacle"
-      << (scene.obstacles.size() == 1 ? "" : "s") << " (" << all_obstacles.tris.size()
-      << " triangles), skin " << general(r.skin) << " m\n";
-  out << "narrow phase " << opt.narrow << ", k = " << opt.k << ", " << r.frames
-      << " frames of dt = " << general(r.dt) << " s (stable up to " << general(r.stable_dt) << " s"
-      << (r.dt_reduced ? "; the scene's " + general(scene.dt) + " s is above it" : "") << ")\n\n";
-  out << "ms per frame   springs+integration " << fixed(per * t.springs, 4) << "   refit "
-      << fixed(per * t.refit, 4) << "   traversal " << fixed(per * t.traversal, 4) << "   narrow "
-      << fixed(per * t.narrow, 4) << "   response " << fixed(per * t.response, 4)
-      << (scene.self_collision ? "   self " + fixed(per * t.self, 4) : std::string())
-      << "\n               collision " << fixed(per * t.collision(), 4) << "   total "
-      << fixed(per * t.total(), 4) << "\n";
-  out << "counts         " << r.candidates << " candidate pairs, " << r.collisions
-      << " collisions (" << fixed(r.frames ? double(r.candidates) / r.frames : 0, 1) << " and "
-      << fixed(r.frames ? double(r.collisions) / r.frames : 0, 1) << " per frame)\n";
-  if (checked) {
-    out << "accuracy       " << r.fp << " false positives, " << r.fn
-        << " false negatives against the exact test\n";
-    out << "audit (exact)  " << r.audit.inside << " particles inside, " << r.audit.crossing
-        << " crossing edges, summed over the frames (last frame: " << r.audit_last_inside << " and "
-        << r.audit_last_crossing << ")\n";
-  }
-  if (scene.self_collision)
-    out << "self-collision " << r.self_queries << " CCD queries, " << r.self_hits << " contacts, "
-        << r.self_stops << " frames stopped whole\n";
-  if (r.self_audited)
-    out << "self (exact)   " << r.audit.self_crossing
-        << " cloth edges through the cloth's own triangles, summed over the frames\n";
-  if (!png.empty()) out << "picture        " << png << "\n";
-  if (!record.empty()) out << "queries        " << record << "\n";
-  if (!obj_dir.empty()) out << "frames         " << obj_dir << "/frame_*.obj\n";
-  return 0;
+Command add_simulate(CLI::App& app) {
+  auto o = std::make_shared<SimulateOptions>();
+  CLI::App* cmd = app.add_subcommand("simulate", kAbout);
+  cmd->footer(kFooter);
+  add_scene_options(*cmd, *o);
+  add_output_options(*cmd, *o);
+  return {cmd, [o](const Io& io) { return run_simulate(*o, io); }};
 }
 
 }  // namespace fdh::verify

@@ -1,7 +1,9 @@
 // The static vertex-face families: a point B moving to B' against a triangle DEF that stands
 // still. One function per family; the table at the end is their half of the registry.
 #include <cmath>
+#include <iterator>
 #include <numeric>
+#include <string>
 
 #include "constructions.hpp"
 #include "draw.hpp"
@@ -187,8 +189,9 @@ bool add_exactly(double a, double b, double& s) {
 
 // The composite families start from one of these.
 Generated any_base() {
-  static Generated (*const kBases[])() = {parallel_cross,  angled,           through_edge,
-                                          through_vertex,  hair_outside_edge, grazing};
+  static Generated (*const kBases[])() = {
+      parallel_cross, angled, through_edge, through_vertex, hair_outside_edge, grazing,
+  };
   return kBases[pick(0, int(std::size(kBases)) - 1)]();
 }
 
@@ -231,8 +234,12 @@ std::vector<Family> static_families() {
       {"zero-motion", false, "B' = B", zero_motion},
       {"grazing", false, "B' ends 2^-20 to 2^-45 (times |n|) from the plane, on either side",
        grazing},
-      {"far-from-origin", false, "a case of parallel-cross, angled, through-edge, through-vertex, hair-outside-edge or grazing, translated by up to 2^42", far_from_origin},
-      {"tiny", false, "a case of the bases of far-from-origin, scaled by 2^-20 to 2^-60", tiny},
+      {"far-from-origin", false,
+       "a case of parallel-cross, angled, through-edge, through-vertex, hair-outside-edge or "
+       "grazing, translated by up to 2^42",
+       far_from_origin},
+      {"tiny", false, "as far-from-origin, but scaled by 2^-20 to 2^-60 instead of translated",
+       tiny},
       {"sliver", false, "F within 2^-10 to 2^-40 of line DE (never on it)", sliver},
       {"degenerate", false, "zero-area triangles: collinear or coincident corners", degenerate},
   };

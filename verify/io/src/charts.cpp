@@ -66,8 +66,8 @@ void run_gnuplot(const std::string& script, const std::string& what) {
   const int rc = ::posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
   posix_spawn_file_actions_destroy(&actions);
   if (rc != 0)
-    throw std::runtime_error(fmt::format(
-        "cannot run gnuplot ({}; Debian package gnuplot-nox)", std::strerror(rc)));
+    throw std::runtime_error(
+        fmt::format("cannot run gnuplot ({}; Debian package gnuplot-nox)", std::strerror(rc)));
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0)
     if (errno != EINTR) throw std::runtime_error("lost the gnuplot process");
@@ -91,8 +91,8 @@ std::string gnuplot_quote(std::string_view s) {
 
 void draw_chart(const Chart& chart) {
   std::string script;
-  for (const auto& [terminal, extension] : {std::pair<const char*, const char*>{"pngcairo", "png"},
-                                            {"svg dynamic", "svg"}})
+  for (const auto& [terminal, extension] :
+       {std::pair<const char*, const char*>{"pngcairo", "png"}, {"svg dynamic", "svg"}})
     script += fmt::format(
         "reset\nset datafile separator ','\nset grid\nset terminal {} size {},{}\n"
         "set output {}\n{}\nunset output\n",

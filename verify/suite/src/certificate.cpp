@@ -1,13 +1,125 @@
 // certificate.json and certificate.md: a Certificate for programs and for people.
+#include <fmt/format.h>
+
 #include <filesystem>
-#include <sstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
 
 #include "fdh/io/atomic_file.hpp"
-#include "fdh/io/json.hpp"
 #include "fdh/suite/certify.hpp"
 
 namespace fdh::verify {
+namespace {
+
 namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+using Out = std::back_insert_iterator<fmt::memory_buffer>;
+
+const char* mode(const Certificate& c) {
+  return c.options.quick ? "quick" : "full";
+}
+
+json inputs_json(const Certificate& c) {
+  return {{"corpus_files", c.corpus_files},
+          {"corpus_queries", c.corpus_queries},
+          {"fuzzed_per_family", c.options.per_family},
+          {"families", c.families.size()},
+          {"fuzzed_queries", c.fuzzed_queries},
+          {"soup_pairs", c.options.soups},
+          {"moving_families", c.moving_families.size()},
+          {"scenes", c.scenes},
+          {"scene_queries", c.scene_queries},
+          {"extra_files", c.options.extra_files.size()},
+          {"extra_queries", c.extra_queries}};
+}
+
+// Keyed by k, as before there was more than one k-DOP method; a second method of the same k
+// gets "<k>/<method>".
+std::string box_key(const json& into, const BoxCheck& b) {
+  const std::string k = std::to_string(b.k);
+  return into.contains(k) ? k + "/" + b.method : k;
+}
+
+json promises_json(const Certificate& c) {
+  json out = json::array();
+  for (const PromiseCheck& p : c.promises)
+    out.push_back({{"method", p.method},
+                   {"decision", to_string(p.decision)},
+                   {"promise", to_string(p.promise)},
+                   {"checked", p.checked},
+                   {"decided_by_filter", p.filter_decided},
+                   {"violations", p.violations}});
+  return out;
+}
+
+// What a method's promise says about its verdicts, against the exact twin.
+const char* promise_words(Promise p) {
+  switch (p) {
+    case Promise::Exact:
+      return "= the exact twin";
+    case Promise::Conservative:
+      return "misses no hit of the exact twin";
+    case Promise::None:
+      return "against the exact twin";
+  }
+  return "";
+}
+
+void inputs_markdown(Out to, const Certificate& c) {
+  fmt::format_to(to, "## Inputs\n\n| source | queries |\n|---|---|\n");
+  fmt::format_to(to, "| corpus (`{}`, {} files) | {} |\n", c.options.corpus_dir, c.corpus_files,
+                 c.corpus_queries);
+  fmt::format_to(to, "| fuzzed: {} per family, {} static and {} moving families | {} |\n",
+                 c.options.per_family, c.families.size(), c.moving_families.size(),
+                 c.fuzzed_queries);
+  fmt::format_to(to, "| extra files ({}) | {} |\n", c.options.extra_files.size(), c.extra_queries);
+  fmt::format_to(to,
+                 "| narrow-phase queries recorded from the shipped scenes ({} scenes, robust, "
+                 "every {}th frame) | {} |\n",
+                 c.scenes, c.options.scene_stride, c.scene_queries);
+  fmt::format_to(to, "| random triangle-soup pairs (tree) | {} |\n\n", c.options.soups);
+}
+
+void properties_markdown(Out to, const Certificate& c) {
+  fmt::format_to(to,
+                 "## Properties\n\n| property | method | k | checked | violations |\n"
+                 "|---|---|---|---|---|\n");
+  for (const BoxCheck& b : c.boxes)
+    fmt::format_to(to, "| float FDH contains the exact FDH | `{}` | {} | {} boxes | {} |\n",
+                   b.method, b.k, b.boxes, b.box_violations);
+  for (const BoxCheck& b : c.boxes)
+    fmt::format_to(to,
+                   "| tree traversal finds every exactly overlapping pair | `{}` | {} | {} tree "
+                   "pairs, {} overlapping primitive pairs | {} |\n",
+                   b.method, b.k, b.soup_pairs, b.exact_pairs, b.cull_violations);
+  for (const PromiseCheck& p : c.promises)
+    fmt::format_to(to, "| {} verdict {} | `{}` | – | {} queries{} | {} |\n", to_string(p.decision),
+                   promise_words(p.promise), p.method, p.checked,
+                   p.filter_decided
+                       ? fmt::format(" ({} decided by the float filter alone)", p.filter_decided)
+                       : std::string(),
+                   p.violations);
+  fmt::format_to(to,
+                 "| the exact twin = the known truth (corpus and benchmark files; fuzzed queries "
+                 "whose construction fixes it) | – | – | {} queries | {} |\n",
+                 c.truths, c.truth_violations);
+}
+
+}  // namespace
+
+long Certificate::checks() const {
+  long n = truths;
+  for (const PromiseCheck& p : promises) n += p.checked;
+  for (const BoxCheck& b : boxes) n += b.boxes + b.soup_pairs;
+  return n;
+}
+
+long Certificate::violations() const {
+  long n = truth_violations;
+  for (const PromiseCheck& p : promises) n += p.violations;
+  for (const BoxCheck& b : boxes) n += b.box_violations + b.cull_violations;
+  return n;
+}
 
 void write_certificate(const Certificate& c) {
   const fs::path dir(c.options.out_dir);
@@ -16,82 +128,43 @@ void write_certificate(const Certificate& c) {
 }
 
 std::string certificate_json(const Certificate& c) {
-  std::ostringstream os;
-  const auto per_k = [&](const char* a, const std::array<long, 4>& x, const char* b,
-                         const std::array<long, 4>& y, const char* v,
-                         const std::array<long, 4>& z) {
-    os << "{";
-    for (std::size_t i = 0; i < kCertifiedK.size(); ++i)
-      os << (i ? ", " : "") << '"' << kCertifiedK[i] << "\": {\"" << a << "\": " << x[i]
-         << (b ? std::string(", \"") + b + "\": " + std::to_string(y[i]) : std::string()) << ", \""
-         << v << "\": " << z[i] << "}";
-    os << "}";
-  };
-  os << "{\"certified\": " << (c.certified() ? "true" : "false") << ", \"commit\": \"" << c.commit
-     << "\", \"cgal\": \"" << c.cgal << "\", \"gmp\": \"" << c.gmp << "\", \"mode\": \""
-     << (c.options.quick ? "quick" : "full") << "\", \"seed\": " << c.options.seed
-     << ",\n \"inputs\": {\"corpus_files\": " << c.corpus_files
-     << ", \"corpus_queries\": " << c.corpus_queries
-     << ", \"fuzzed_per_family\": " << c.options.per_family
-     << ", \"families\": " << c.families.size() << ", \"fuzzed_queries\": " << c.fuzzed_queries
-     << ", \"soup_pairs\": " << c.options.soups
-     << ", \"moving_families\": " << c.moving_families.size() << ", \"scenes\": " << c.scenes
-     << ", \"scene_queries\": " << c.scene_queries
-     << ", \"extra_files\": " << c.options.extra_files.size()
-     << ", \"extra_queries\": " << c.extra_queries << "},\n \"kdop_contains_exact\": ";
-  per_k("boxes", c.boxes, nullptr, c.boxes, "violations", c.box_violations);
-  os << ",\n \"tree_no_false_cull\": ";
-  per_k("soup_pairs", c.soup_pairs, "exact_overlapping_pairs", c.exact_pairs, "violations",
-        c.cull_violations);
-  os << ",\n \"robust_equals_exact\": {\"static_queries\": " << c.static_queries
-     << ", \"decided_by_filter\": " << c.filter_decided
-     << ", \"violations\": " << c.robust_violations
-     << "},\n \"robust_ccd_equals_exact_ccd\": {\"moving_queries\": " << c.moving_queries
-     << ", \"decided_by_filter\": " << c.moving_filter_decided
-     << ", \"violations\": " << c.moving_violations
-     << "},\n \"exact_equals_stored_truth\": {\"queries\": " << c.truths
-     << ", \"violations\": " << c.truth_violations
-     << "},\n \"first_violation\": " << json_string(c.first_violation) << "}\n";
-  return os.str();
+  json boxes = json::object(), culls = json::object();
+  for (const BoxCheck& b : c.boxes) {
+    boxes[box_key(boxes, b)] = {
+        {"method", b.method}, {"boxes", b.boxes}, {"violations", b.box_violations}};
+    culls[box_key(culls, b)] = {{"method", b.method},
+                                {"soup_pairs", b.soup_pairs},
+                                {"exact_overlapping_pairs", b.exact_pairs},
+                                {"violations", b.cull_violations}};
+  }
+  const json j = {
+      {"certified", c.certified()},
+      {"commit", c.commit},
+      {"cgal", c.cgal},
+      {"gmp", c.gmp},
+      {"mode", mode(c)},
+      {"seed", c.options.seed},
+      {"inputs", inputs_json(c)},
+      {"kdop_contains_exact", boxes},
+      {"tree_no_false_cull", culls},
+      {"promises", promises_json(c)},
+      {"exact_equals_stored_truth", {{"queries", c.truths}, {"violations", c.truth_violations}}},
+      {"first_violation", c.first_violation}};
+  return j.dump(2) + "\n";
 }
 
 std::string certificate_markdown(const Certificate& c) {
-  std::ostringstream os;
-  os << "# fdhcert certificate\n\n"
-     << (c.certified() ? "**Certified**: no violation.\n"
-                       : "**Violated**: " + c.first_violation + ".\n")
-     << "\nCommit `" << c.commit << "`, CGAL " << c.cgal << ", GMP " << c.gmp << ", "
-     << (c.options.quick ? "quick" : "full") << " run, seed " << c.options.seed
-     << ". Made by `fdhcert certify" << (c.options.quick ? " --quick" : "") << "`.\n\n"
-     << "## Inputs\n\n| source | queries |\n|---|---|\n"
-     << "| corpus (`" << c.options.corpus_dir << "`, " << c.corpus_files << " files) | "
-     << c.corpus_queries << " |\n"
-     << "| fuzzed: " << c.options.per_family << " per family, " << c.families.size()
-     << " static and " << c.moving_families.size() << " moving families | " << c.fuzzed_queries
-     << " |\n"
-     << "| extra files (" << c.options.extra_files.size() << ") | " << c.extra_queries << " |\n"
-     << "| narrow-phase queries recorded from the shipped scenes (" << c.scenes
-     << " scenes, robust, every " << c.options.scene_stride << "th frame) | " << c.scene_queries
-     << " |\n"
-     << "| random triangle-soup pairs (tree) | " << c.options.soups << " |\n\n"
-     << "## Properties\n\n| property | k | checked | violations |\n|---|---|---|---|\n";
-  for (std::size_t i = 0; i < kCertifiedK.size(); ++i)
-    os << "| float FDH contains the exact FDH | " << kCertifiedK[i] << " | " << c.boxes[i]
-       << " boxes | " << c.box_violations[i] << " |\n";
-  for (std::size_t i = 0; i < kCertifiedK.size(); ++i)
-    os << "| tree traversal finds every exactly overlapping pair | " << kCertifiedK[i] << " | "
-       << c.soup_pairs[i] << " tree pairs, " << c.exact_pairs[i]
-       << " overlapping primitive pairs | " << c.cull_violations[i] << " |\n";
-  os << "| `robust` = `exact`, static vertex-face | – | " << c.static_queries << " queries ("
-     << c.filter_decided << " decided by the float filter alone) | " << c.robust_violations
-     << " |\n"
-     << "| `robust` = `exact`, moving vertex-face and edge-edge (CCD) | – | " << c.moving_queries
-     << " queries (" << c.moving_filter_decided << " decided by the float filter alone) | "
-     << c.moving_violations << " |\n"
-     << "| `exact` = the known truth (corpus and benchmark files; fuzzed queries whose "
-        "construction fixes it) | – | "
-     << c.truths << " queries | " << c.truth_violations << " |\n";
-  return os.str();
+  fmt::memory_buffer out;
+  const auto to = std::back_inserter(out);
+  fmt::format_to(to, "# fdhcert certificate\n\n{}\n",
+                 c.certified() ? std::string("**Certified**: no violation.")
+                               : fmt::format("**Violated**: {}.", c.first_violation));
+  fmt::format_to(
+      to, "\nCommit `{}`, CGAL {}, GMP {}, {} run, seed {}. Made by `fdhcert certify{}`.\n\n",
+      c.commit, c.cgal, c.gmp, mode(c), c.options.seed, c.options.quick ? " --quick" : "");
+  inputs_markdown(to, c);
+  properties_markdown(to, c);
+  return fmt::to_string(out);
 }
 
 }  // namespace fdh::verify

@@ -1,7 +1,6 @@
 #include "fdh/suite/certify.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <set>
 #include <sstream>
@@ -12,29 +11,20 @@
 #include "fdh/cloth/simulation.hpp"
 #include "fdh/exact/kdop.hpp"
 #include "fdh/exact/versions.hpp"
-#include "fdh/gen/moving_families.hpp"
-#include "fdh/gen/static_families.hpp"
+#include "fdh/gen/families.hpp"
+#include "fdh/gen/soup.hpp"
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/io/case_files.hpp"
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_file.hpp"
+#include "fdh/suite/build_info.hpp"
 #include "fdh/suite/fuzz.hpp"
+#include "fdh/suite/scene_report.hpp"
 #include "fdh/suite/scene_run.hpp"
 
 namespace fdh::verify {
 namespace fs = std::filesystem;
 namespace {
-
-std::string git_commit() {
-  std::string out;
-  if (std::FILE* p = ::popen("git rev-parse --short=12 HEAD 2>/dev/null", "r")) {
-    char buf[64];
-    while (std::fgets(buf, sizeof buf, p)) out += buf;
-    ::pclose(p);
-  }
-  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
-  return out.empty() ? "unknown" : out;
-}
 
 // Every method with a promise, on every query decision it makes and every box it builds, against
 // the exact twin through the checker (check/checker.hpp).
@@ -169,13 +159,9 @@ class Certifier {
 void check_scenes(Certificate& c, Certifier& cert) {
   const fs::path dir = fs::path(c.options.corpus_dir) / "scenes";
   if (!fs::is_directory(dir)) return;
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().extension() == ".scene") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
   const int stride = c.options.scene_stride;
-  for (const fs::path& file : files) {
-    const cloth::Scene scene = read_scene(file.string());
+  for (const std::string& file : scene_files(dir.string())) {
+    const cloth::Scene scene = read_scene(file);
     SceneRunOptions opt;  // robust, k = 18, the scene's step as `simulate` takes it
     opt.frames = int(std::min<long>(scene.frames, c.options.scene_frames));
     opt.check = false;  // certified here instead
@@ -185,7 +171,7 @@ void check_scenes(Certificate& c, Certifier& cert) {
         Query q = sim.query(nq);
         q.id = scene.name + "/f" + std::to_string(f) + "p" + std::to_string(nq.particle) + "t" +
                std::to_string(nq.triangle);
-        q.file = file.string();
+        q.file = file;
         ++c.scene_queries;
         cert.check_query(q);
       }
@@ -204,7 +190,7 @@ Certificate certify(const CertifyOptions& options) {
   if (c.options.soups < 0) c.options.soups = options.quick ? 30 : 300;
   if (c.options.scene_frames < 0) c.options.scene_frames = options.quick ? 600 : 100000000;
   if (c.options.scene_stride < 1) c.options.scene_stride = options.quick ? 50 : 10;
-  c.commit = git_commit();
+  c.commit = build_commit();
   c.cgal = exact::cgal_library_version();
   c.gmp = exact::gmp_library_version();
   Certifier cert(c);
@@ -217,25 +203,17 @@ Certificate certify(const CertifyOptions& options) {
     }
   }
   std::uint64_t stream = 0;
-  for (const Family f : all_families()) {
-    c.families.push_back(family_name(f));
+  for (const Family& f : all_families()) {
+    (f.moving ? c.moving_families : c.families).push_back(f.name);
     ++stream;
     for (long i = 0; i < c.options.per_family; ++i, ++c.fuzzed_queries)
-      cert.check_query(
-          gen_family(f)(rc::Random(case_seed(c.options.seed * 1000 + stream, i))).value().query);
-  }
-  for (const MovingFamily f : all_moving_families()) {
-    c.moving_families.push_back(moving_family_name(f));
-    ++stream;
-    for (long i = 0; i < c.options.per_family; ++i, ++c.fuzzed_queries)
-      cert.check_query(
-          gen_moving(f)(rc::Random(case_seed(c.options.seed * 1000 + stream, i))).value().query);
+      cert.check_query(generate(f, case_seed(c.options.seed * 1000 + stream, i)).query);
   }
   check_scenes(c, cert);
   for (long i = 0; i < c.options.soups; ++i) {
     const std::uint64_t s = c.options.seed * 1000 + 999;
-    cert.check_soups(gen_soup(24)(rc::Random(case_seed(s, 2 * i))).value(),
-                     gen_soup(24)(rc::Random(case_seed(s, 2 * i + 1))).value());
+    cert.check_soups(generate_soup(24, case_seed(s, 2 * i)),
+                     generate_soup(24, case_seed(s, 2 * i + 1)));
   }
   for (const std::string& f : options.extra_files)
     for (const Query& q : read_query_file(f)) {

@@ -89,8 +89,14 @@ KdopTreeRow measure(int grid) {
     std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
     return v[v.size() / 2];
   };
-  return {K,           grid,          long(c.tris.size()), long(obstacle.tris.size()),
-          median(build), median(refit), median(trav),        long(pairs)};
+  return {K,
+          grid,
+          long(c.tris.size()),
+          long(obstacle.tris.size()),
+          median(build),
+          median(refit),
+          median(trav),
+          long(pairs)};
 }
 
 }  // namespace

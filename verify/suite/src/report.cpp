@@ -1,15 +1,69 @@
 #include "fdh/suite/report.hpp"
 
-#include <cstdio>
-#include <set>
+#include <fmt/format.h>
 
+#include <cmath>
+#include <set>
 #include <sstream>
+
+#include "fdh/check/registry.hpp"
 #include "fdh/exact/ccd.hpp"
 #include "fdh/exact/point_triangle.hpp"
-#include "fdh/io/json.hpp"
 
 namespace fdh::verify {
 namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string kinds(const Classification& c) {
+  std::string out;
+  const auto add = [&](std::size_t n, const char* what) {
+    if (n) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", n, what);
+  };
+  add(c.static_vf, "static vertex-face");
+  add(c.moving_vf, "moving vertex-face");
+  add(c.edge_edge, "edge-edge");
+  return out.empty() ? "no queries" : out;
+}
+
+const char* truth_words(const std::string& truth) {
+  return truth == "file"    ? "the file's truth"
+         : truth == "exact" ? "exact"
+                            : "the file's truth where given, else exact";
+}
+
+void print_block(std::ostream& os, const std::string& title, const Classification& c,
+                 const ReportContext& ctx) {
+  os << fmt::format("{}: {}; counted against {}", title, kinds(c), truth_words(c.truth));
+  if (ctx.gate_k) os << fmt::format("; paper methods gated by {}-DOP overlap", ctx.gate_k);
+  os << fmt::format("\n  {:<16} {:>8} {:>8} {:>8} {:>8} {:>8} {:>12}\n", "method", "TP", "TN", "FP",
+                    "FN", "n/a", "ns/query");
+  for (const MethodResult& m : c.methods) {
+    const Tally& t = m.tally;
+    if (t.decided() == 0)
+      os << fmt::format("  {:<16} {:>8} {:>8} {:>8} {:>8} {:>8} {:>12}\n", m.name, "n/a", "n/a",
+                        "n/a", "n/a", t.na, "n/a");
+    else
+      os << fmt::format("  {:<16} {:>8} {:>8} {:>8} {:>8} {:>8} {:>12.1f}\n", m.name, t.tp, t.tn,
+                        t.fp, t.fn, t.na, t.ns_per_query);
+  }
+}
+
+Json tally_json(const Tally& t) {
+  if (t.decided() == 0)
+    return {{"tp", nullptr}, {"tn", nullptr}, {"fp", nullptr},
+            {"fn", nullptr}, {"na", t.na},    {"ns_per_query", nullptr}};
+  // Three decimals are more than the timing's precision.
+  return {{"tp", t.tp}, {"tn", t.tn}, {"fp", t.fp},
+          {"fn", t.fn}, {"na", t.na}, {"ns_per_query", std::round(t.ns_per_query * 1e3) / 1e3}};
+}
+
+Json counts_json(const Classification& c) {
+  Json methods = Json::object();
+  for (const MethodResult& m : c.methods) methods[m.name] = tally_json(m.tally);
+  return {{"queries", c.queries},     {"static_vf", c.static_vf}, {"moving_vf", c.moving_vf},
+          {"edge_edge", c.edge_edge}, {"truth", c.truth},         {"methods", methods}};
+}
 
 std::string csv_field(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -18,65 +72,20 @@ std::string csv_field(const std::string& s) {
   return out + "\"";
 }
 
-}  // namespace
-
-namespace {
-
-std::string kinds(const Classification& c) {
-  std::string out;
-  const auto add = [&](std::size_t n, const char* what) {
-    if (n) out += (out.empty() ? "" : ", ") + std::to_string(n) + " " + what;
-  };
-  add(c.static_vf, "static vertex-face");
-  add(c.moving_vf, "moving vertex-face");
-  add(c.edge_edge, "edge-edge");
-  return out.empty() ? "no queries" : out;
+// The contact and time columns: the exact test of the query's own decision.
+std::pair<std::string, std::string> exact_contact(const Query& q) {
+  if (decision_of(q) == Decision::PointTriangle) {
+    const exact::PointTriangleContact e =
+        exact::point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f());
+    return {exact::to_string(e.kind), e.time};
+  }
+  const exact::CcdContact e = exact::ccd(q);
+  if (!e.hit) return {"none", ""};
+  return {"moving", e.time_exact() ? e.time_lo : e.time_lo + ".." + e.time_hi};
 }
 
-void print_block(std::ostream& os, const std::string& title, const Classification& c,
-                 const ReportContext& ctx) {
-  os << title << ": " << kinds(c) << "; counted against "
-     << (c.truth == "file"    ? "the file's truth"
-         : c.truth == "exact" ? "exact"
-                              : "the file's truth where given, else exact");
-  if (ctx.gate_k) os << "; paper methods gated by " << ctx.gate_k << "-DOP overlap";
-  os << "\n";
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "  %-16s %8s %8s %8s %8s %8s %12s\n", "method", "TP", "TN", "FP",
-                "FN", "n/a", "ns/query");
-  os << buf;
-  for (const MethodResult& m : c.methods) {
-    const Tally& t = m.tally;
-    if (t.decided() == 0)
-      std::snprintf(buf, sizeof buf, "  %-16s %8s %8s %8s %8s %8ld %12s\n", m.name.c_str(), "n/a",
-                    "n/a", "n/a", "n/a", t.na, "n/a");
-    else
-      std::snprintf(buf, sizeof buf, "  %-16s %8ld %8ld %8ld %8ld %8ld %12.1f\n", m.name.c_str(),
-                    t.tp, t.tn, t.fp, t.fn, t.na, t.ns_per_query);
-    os << buf;
-  }
-}
-
-void print_json_body(std::ostream& os, const Classification& c) {
-  os << "\"queries\": " << c.queries << ", \"static_vf\": " << c.static_vf
-     << ", \"moving_vf\": " << c.moving_vf << ", \"edge_edge\": " << c.edge_edge
-     << ", \"truth\": " << json_string(c.truth) << ", \"methods\": {";
-  bool first = true;
-  for (const MethodResult& m : c.methods) {
-    const Tally& t = m.tally;
-    os << (first ? "" : ", ") << json_string(m.name) << ": {";
-    if (t.decided() == 0) {
-      os << "\"tp\": null, \"tn\": null, \"fp\": null, \"fn\": null, \"na\": " << t.na
-         << ", \"ns_per_query\": null}";
-    } else {
-      char ns[32];
-      std::snprintf(ns, sizeof ns, "%.3f", t.ns_per_query);
-      os << "\"tp\": " << t.tp << ", \"tn\": " << t.tn << ", \"fp\": " << t.fp
-         << ", \"fn\": " << t.fn << ", \"na\": " << t.na << ", \"ns_per_query\": " << ns << "}";
-    }
-    first = false;
-  }
-  os << "}";
+std::string verdict_field(char v) {
+  return v == kNotApplicable ? "n/a" : std::to_string(int(v));
 }
 
 }  // namespace
@@ -88,17 +97,17 @@ void print_table(std::ostream& os, const std::vector<FileClassification>& files,
   print_block(os, files.size() > 1 ? "total" : files.front().file, total, ctx);
 }
 
-void print_json(std::ostream& os, const std::vector<FileClassification>& files,
-                const Classification& total, const ReportContext& ctx) {
-  os << "{";
-  print_json_body(os, total);
-  os << ", \"gate\": " << ctx.gate_k << ", \"files\": [";
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    os << (i ? ", " : "") << "{\"file\": " << json_string(files[i].file) << ", ";
-    print_json_body(os, files[i].c);
-    os << "}";
+Json classification_json(const std::vector<FileClassification>& files, const Classification& total,
+                         const ReportContext& ctx) {
+  Json j = counts_json(total);
+  j["gate"] = ctx.gate_k;
+  j["files"] = Json::array();
+  for (const FileClassification& f : files) {
+    Json one = {{"file", f.file}};
+    one.update(counts_json(f.c));
+    j["files"].push_back(std::move(one));
   }
-  os << "]}\n";
+  return j;
 }
 
 std::string per_query_csv(const std::vector<Query>& queries, const Classification& c) {
@@ -112,10 +121,9 @@ std::string per_query_csv(const std::vector<Query>& queries, const Classificatio
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const Query& q = queries[i];
     os << csv_field(prefix ? q.file + ":" + q.id : q.id) << ',' << int(c.reference[i]);
-    for (const MethodResult& m : c.methods) os << ',' << int(m.verdict[i]);
-    const exact::PointTriangleContact e =
-        exact::point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f());
-    os << ',' << exact::to_string(e.kind) << ',' << e.time << '\n';
+    for (const MethodResult& m : c.methods) os << ',' << verdict_field(m.verdict[i]);
+    const auto [contact, time] = exact_contact(q);
+    os << ',' << contact << ',' << time << '\n';
   }
   return os.str();
 }

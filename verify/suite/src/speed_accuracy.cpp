@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "fdh/check/classify.hpp"
-#include "fdh/gen/static_families.hpp"
+#include "fdh/gen/families.hpp"
 #include "fdh/suite/fuzz.hpp"
 #include "fdh/suite/measurements.hpp"
 
@@ -16,19 +16,22 @@ std::vector<SpeedAccuracyRow> speed_accuracy(long per_family, std::uint64_t seed
   std::vector<SpeedAccuracyRow> rows;
   const std::vector<Method> methods = all_methods();
   std::uint64_t stream = 0;
-  for (const Family f : all_families()) {
+  for (const Family& f : all_families()) {
+    if (f.moving) continue;  // static vertex-face families only
     ++stream;
     std::vector<Query> qs;
     for (long i = 0; i < per_family; ++i) {
-      Query q = gen_family(f)(rc::Random(case_seed(seed * 1000 + stream, i))).value().query;
+      Query q = generate(f, case_seed(seed * 1000 + stream, i)).query;
       q.truth = -1;  // count against the twin
       qs.push_back(q);
     }
     const Classification c = classify(qs, methods);
-    const double n = double(qs.size());
-    for (const MethodResult& m : c.methods)
-      rows.push_back({m.name, family_name(f), long(qs.size()), m.tally.ns_per_query,
-                      double(m.tally.fp) / n, double(m.tally.fn) / n});
+    for (const MethodResult& m : c.methods) {
+      const long n = m.tally.decided();  // the queries it applies to
+      if (n == 0) continue;
+      rows.push_back({m.name, f.name, n, m.tally.ns_per_query, double(m.tally.fp) / double(n),
+                      double(m.tally.fn) / double(n)});
+    }
   }
   return rows;
 }

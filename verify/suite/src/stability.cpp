@@ -103,19 +103,16 @@ Query sample(const std::string& sweep, int p, Sampler& s) {
   return make(t, x + dir, x - s.uniform(0.2, 1) * dir);
 }
 
-struct Sweep {
-  const char* name;
-  int last;  // p runs 0..last
-};
-
-// failure[m][p]: the share of `per_point` queries of each p that methods[m] gets wrong;
-// methods that do not apply to a static query are never counted.
-std::vector<std::vector<double>> sweep_rates(const Sweep& sw, const std::vector<Method>& methods,
-                                             long per_point, std::uint64_t seed) {
+// failure[m][p]: the share of the queries of each p that methods[m] applies to and gets
+// wrong; empty for a method that applies to none of the sweep's queries.
+std::vector<std::vector<double>> sweep_rates(const StabilitySweep& sw,
+                                             const std::vector<Method>& methods, long per_point,
+                                             std::uint64_t seed) {
   std::vector<std::vector<double>> failure(methods.size(), std::vector<double>(sw.last + 1));
+  std::vector<long> applied_in_sweep(methods.size());
   for (int p = 0; p <= sw.last; ++p) {
     Sampler s(seed * 7919 + std::uint64_t(p) * 131 + std::uint64_t(sw.name[0]));
-    std::vector<long> wrong(methods.size());
+    std::vector<long> wrong(methods.size()), applied(methods.size());
     for (long i = 0; i < per_point; ++i) {
       const Query q = sample(sw.name, p, s);
       const bool twin = twin_hit(q);
@@ -123,28 +120,41 @@ std::vector<std::vector<double>> sweep_rates(const Sweep& sw, const std::vector<
         if (!methods[m].applies_to(q)) continue;
         const Verdicts v = check(methods[m], q, twin);
         wrong[m] += v.said != v.twin;
+        ++applied[m];
       }
     }
-    for (std::size_t m = 0; m < methods.size(); ++m)
-      failure[m][p] = double(wrong[m]) / double(per_point);
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      failure[m][p] = applied[m] ? double(wrong[m]) / double(applied[m]) : 0;
+      applied_in_sweep[m] += applied[m];
+    }
   }
+  for (std::size_t m = 0; m < methods.size(); ++m)
+    if (applied_in_sweep[m] == 0) failure[m].clear();
   return failure;
 }
 
 }  // namespace
 
+const std::vector<StabilitySweep>& stability_sweeps() {
+  static const std::vector<StabilitySweep> sweeps = {
+      {"angle", 60, "motion-to-plane angle 2^{-p}: p"},
+      {"edge", 64, "distance of the crossing from an edge 2^{-p}: p"},
+      {"magnitude", 40, "distance from the origin 2^{p}: p"},
+      {"aspect", 60, "triangle height / base 2^{-p}: p"}};
+  return sweeps;
+}
+
 std::vector<StabilityRow> stability(long per_point, std::uint64_t seed) {
-  const Sweep sweeps[] = {{"angle", 60}, {"edge", 64}, {"magnitude", 40}, {"aspect", 60}};
   std::vector<Method> methods = all_methods();
-  methods.erase(std::remove_if(methods.begin(), methods.end(),
-                               [](const Method& m) { return m.is_twin; }),
-                methods.end());
+  methods.erase(
+      std::remove_if(methods.begin(), methods.end(), [](const Method& m) { return m.is_twin; }),
+      methods.end());
   std::vector<StabilityRow> rows;
-  for (const Sweep& sw : sweeps) {
+  for (const StabilitySweep& sw : stability_sweeps()) {
     const auto failure = sweep_rates(sw, methods, per_point, seed);
     for (std::size_t m = 0; m < methods.size(); ++m)
-      for (int p = 0; p <= sw.last; ++p)
-        rows.push_back({sw.name, p, methods[m].name, failure[m][p]});
+      for (std::size_t p = 0; p < failure[m].size(); ++p)
+        rows.push_back({sw.name, int(p), methods[m].name, failure[m][p]});
   }
   return rows;
 }

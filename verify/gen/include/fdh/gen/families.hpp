@@ -43,6 +43,9 @@ const std::vector<Family>& all_families();
 // The family of that name, or nullptr.
 const Family* family_named(const std::string& name);
 
+// The names of the static (moving = false) or of the moving families, in registry order.
+std::vector<std::string> family_names(bool moving);
+
 // Case `seed` of family f: the same seed gives the same case, on every run and every machine.
 Generated generate(const Family& f, std::uint64_t seed);
 

@@ -13,13 +13,11 @@
 #include <set>
 #include <string>
 
-#include "fdh/gen/static_families.hpp"
-
 namespace fdh::verify {
 
 struct FuzzOptions {
   std::string method;
-  Family family = Family::Angled;
+  std::string family = "angled";  // a static family (fdh/gen/families.hpp)
   std::uint64_t seed = 1;
   long count = 10000;  // cases in the whole run, over all shards
   int shard = 0;       // this process runs shard `shard` of `shards` (0-based)
@@ -38,7 +36,8 @@ struct FuzzSummary {
   std::set<std::string> distinct;  // file paths of the distinct shrunk cases
 };
 
-// Throws std::invalid_argument for an unknown method, std::runtime_error for I/O failures.
+// Throws std::invalid_argument for an unknown method or family, std::runtime_error for I/O
+// failures.
 FuzzSummary run_fuzz(const FuzzOptions& opt, std::ostream& progress_stream);
 
 // The seed of case i of a run: splitmix64 of (seed, i).

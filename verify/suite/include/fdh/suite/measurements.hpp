@@ -17,7 +17,8 @@ struct SpeedAccuracyRow {
   double error_rate() const { return fp_rate + fn_rate; }
 };
 
-// Every method of the registry on `per_family` queries of every static generator family.
+// Every method of the registry on `per_family` queries of every static generator family; a
+// method is measured on the queries it applies to, and has no row where it applies to none.
 std::vector<SpeedAccuracyRow> speed_accuracy(long per_family, std::uint64_t seed);
 
 // The lower-left envelope of `rows`: the points no other point beats in both time and error
@@ -32,8 +33,17 @@ struct StabilityRow {
   double failure_rate = 0;
 };
 
+// A sweep of the stability measurement: p runs 0..last; `axis` says what p is, for charts.
+struct StabilitySweep {
+  const char* name;
+  int last;
+  const char* axis;
+};
+const std::vector<StabilitySweep>& stability_sweeps();
+
 // For each sweep, the share of `per_point` queries each method (the twin aside) gets wrong, as
-// one parameter goes to its degenerate limit:
+// one parameter goes to its degenerate limit (a method that applies to none of a sweep's
+// queries has no rows there):
 //   angle      the motion's angle to the plane is 2^-p (p = 0..60)
 //   edge       the path crosses the plane 2^-p from an edge, inside or out (p = 0..64)
 //   magnitude  the whole query moved 2^p from the origin (p = 0..40)

@@ -1,12 +1,13 @@
 // Prints a Classification: a table for people, JSON for programs, CSV per query.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
 #include <vector>
 
-#include "fdh/query.hpp"
 #include "fdh/check/classify.hpp"
+#include "fdh/query.hpp"
 
 namespace fdh::verify {
 
@@ -26,16 +27,18 @@ void print_table(std::ostream& os, const std::vector<FileClassification>& files,
                  const Classification& total, const ReportContext& ctx);
 
 // {"queries": N, "static_vf": S, "moving_vf": M, "edge_edge": E,
-//  "truth": "file"|"exact"|"mixed", "gate": K,
+//  "truth": "file"|"exact"|"mixed",
 //  "methods": {"<name>": {"tp":…, "tn":…, "fp":…, "fn":…, "na":…, "ns_per_query":…}, …},
-//  "files": [{"file": "…", "queries": …, …, "methods": {…}}, …]}
+//  "gate": K, "files": [{"file": "…", "queries": …, …, "methods": {…}}, …]}
 // for the total, then each file. Counts and time are null where a method applies to nothing.
-void print_json(std::ostream& os, const std::vector<FileClassification>& files,
-                const Classification& total, const ReportContext& ctx);
+nlohmann::ordered_json classification_json(const std::vector<FileClassification>& files,
+                                           const Classification& total, const ReportContext& ctx);
 
-// id,truth,<method>,…,contact,time with one row per query; verdicts are 0, 1 or n/a; contact and
-// time are exact's contact kind ("moving" for a moving query) and earliest contact time (a
-// rational, or "lo..hi" around an irrational one; empty for no contact).
+// id,truth,<method>,…,contact,time with one row per query; verdicts are 0, 1 or n/a. Contact
+// and time come from the exact test of the query's own decision: for a static vertex-face
+// query the contact kind (face, edge, vertex, in-plane, none) and the rational time of exact
+// point–triangle; for a moving one (vertex-face or edge-edge) "moving" and the earliest time of
+// exact CCD, a rational or "lo..hi" around an irrational one. No contact: "none" and "".
 // With queries from several files the id is "<file>:<id>".
 std::string per_query_csv(const std::vector<Query>& queries, const Classification& c);
 

@@ -30,8 +30,8 @@ struct Table1Cell {
 };
 
 struct Table1 {
-  std::string scene;  // the scene file
-  int frames = 0;     // frames per run
+  std::string scene;              // the scene file
+  int frames = 0;                 // frames per run
   std::vector<Table1Cell> cells;  // row by row (method and k), each at every grid size
 };
 

@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 FuzzOptions options(const fs::path& out, int threads) {
   FuzzOptions o;
   o.method = "paper-intended";
-  o.family = Family::ParallelCross;
+  o.family = "parallel-cross";
   o.seed = 7;
   o.count = 1200;
   o.chunk = 100;

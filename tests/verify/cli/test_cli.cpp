@@ -1,0 +1,317 @@
+// fdhcert's command line, run in-process: options, exit codes, and the outputs' structure.
+#include "fdh/cli/cli.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "temp_dir.hpp"
+
+namespace fdh::verify {
+namespace {
+
+using Json = nlohmann::json;
+
+const std::string kData = FDH_SOURCE_DIR "/tests/data/";
+
+struct CliRun {
+  int status;
+  std::string out, err;
+};
+
+CliRun fdhcert(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int status = run_cli(args, out, err);
+  return {status, out.str(), err.str()};
+}
+
+bool file_exists(const std::string& p) {
+  return std::ifstream(p).good();
+}
+
+std::string contents(const std::string& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// The keys of a JSON object, in the order printed.
+std::vector<std::string> keys(const nlohmann::ordered_json& j) {
+  std::vector<std::string> out;
+  for (const auto& [k, v] : j.items()) out.push_back(k);
+  return out;
+}
+
+TEST(Cli, HelpNamesEveryOption) {
+  const CliRun r = fdhcert({"classify", "--help"});
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.err, "");
+  for (const char* opt : {"--methods", "--gate", "--json", "--per-query", "--kind", "--check"})
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+  const CliRun main = fdhcert({"--help"});
+  EXPECT_EQ(main.status, 0);
+  for (const char* cmd :
+       {"classify", "fuzz", "replay", "generate", "certify", "report", "simulate", "table1"})
+    EXPECT_NE(main.out.find(cmd), std::string::npos) << cmd;
+  EXPECT_EQ(fdhcert({"help"}).out, main.out);
+  EXPECT_EQ(fdhcert({"help", "classify"}).out, r.out);
+  EXPECT_EQ(fdhcert({}).status, 2);
+  EXPECT_EQ(fdhcert({"frobnicate"}).status, 2);
+}
+
+// Every command's --help goes to out with status 0, even without its required arguments.
+TEST(Cli, EveryCommandHasHelp) {
+  for (const char* cmd :
+       {"classify", "fuzz", "replay", "generate", "certify", "report", "simulate", "table1"}) {
+    const CliRun r = fdhcert({cmd, "--help"});
+    EXPECT_EQ(r.status, 0) << cmd << ": " << r.err;
+    EXPECT_NE(r.out.find("--"), std::string::npos) << cmd;
+  }
+}
+
+// A wrong command line: status 2, nothing on out, one short "fdhcert: ..." line on err.
+TEST(Cli, UsageErrorsExitTwoWithAShortMessage) {
+  const std::vector<std::vector<std::string>> bad = {
+      {"frobnicate"},
+      {"classify"},
+      {"classify", kData + "static.vf", "--bogus"},
+      {"classify", kData + "static.vf", "--methods"},
+      {"classify", kData + "static.vf", "--kind", "xx"},
+      {"fuzz", "--method", "robust", "--family", "angled"},  // no --out
+      {"fuzz", "--method", "robust", "--family", "angled", "--out", "x", "--shard", "3/2"},
+      {"fuzz", "--method", "robust", "--family", "nope", "--out", "x"},
+      {"generate", "angled", "--out", "x", "--count", "0"},
+      {"generate", "angled", "extra", "--out", "x"},
+      {"simulate", kData + "none.scene", "--k", "7"},
+      {"simulate", kData + "none.scene", "--thickness", "-1"},
+      {"simulate", kData + "none.scene", "--self", "maybe"},
+      {"simulate", kData + "none.scene", "--narrow", "nope"},
+      {"replay"},
+  };
+  for (const auto& args : bad) {
+    const CliRun r = fdhcert(args);
+    EXPECT_EQ(r.status, 2) << args.back();
+    EXPECT_EQ(r.out, "") << args.back();
+    EXPECT_EQ(r.err.rfind("fdhcert: ", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  EXPECT_NE(fdhcert({"frobnicate"}).err.find("unknown command 'frobnicate'"), std::string::npos);
+}
+
+TEST(Cli, ClassifyPrintsOneRowPerMethod) {
+  const CliRun r = fdhcert({"classify", kData + "static.vf"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* m : {"exact", "robust", "paper-literal", "paper-intended", "linear-system"})
+    EXPECT_NE(r.out.find(m), std::string::npos) << m;
+  EXPECT_NE(r.out.find("ns/query"), std::string::npos);
+}
+
+TEST(Cli, ClassifyJson) {
+  const CliRun r =
+      fdhcert({"classify", kData + "static.vf", "--json", "--methods", "exact,robust"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  EXPECT_EQ(keys(j), (std::vector<std::string>{"queries", "static_vf", "moving_vf", "edge_edge",
+                                               "truth", "methods", "gate", "files"}));
+  // Three queries carry truth and one does not: the counts mix both.
+  EXPECT_EQ(j["queries"], 4);
+  EXPECT_EQ(j["static_vf"], 4);
+  EXPECT_EQ(j["moving_vf"], 0);
+  EXPECT_EQ(j["edge_edge"], 0);
+  EXPECT_EQ(j["truth"], "mixed");
+  EXPECT_EQ(j["gate"], 0);
+  EXPECT_EQ(keys(j["methods"]), (std::vector<std::string>{"exact", "robust"}));
+  const auto& exact = j["methods"]["exact"];
+  EXPECT_EQ(keys(exact), (std::vector<std::string>{"tp", "tn", "fp", "fn", "na", "ns_per_query"}));
+  EXPECT_EQ(exact["tp"], 2);
+  EXPECT_EQ(exact["tn"], 2);
+  EXPECT_EQ(exact["fp"], 0);
+  EXPECT_EQ(exact["fn"], 0);
+  EXPECT_EQ(exact["na"], 0);
+  EXPECT_TRUE(exact["ns_per_query"].is_number());
+  ASSERT_EQ(j["files"].size(), 1u);
+  EXPECT_EQ(j["files"][0]["file"], kData + "static.vf");
+  EXPECT_EQ(j["files"][0]["methods"]["robust"]["tp"], 2);
+}
+
+TEST(Cli, ClassifyMovingShowsNotApplicable) {
+  const CliRun r = fdhcert({"classify", kData + "moving.vf", "--json", "--check"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  EXPECT_EQ(j["moving_vf"], 1);
+  EXPECT_EQ(j["edge_edge"], 2);
+  EXPECT_EQ(j["methods"]["robust"],
+            Json::parse(R"({"tp": 2, "tn": 1, "fp": 0, "fn": 0, "na": 0, "ns_per_query": )" +
+                        j["methods"]["robust"]["ns_per_query"].dump() + "}"));
+  EXPECT_EQ(j["methods"]["paper-literal"],
+            Json::parse(R"({"tp": null, "tn": null, "fp": null, "fn": null, "na": 3,
+                            "ns_per_query": null})"));
+  const CliRun table = fdhcert({"classify", kData + "moving.vf", kData + "static.vf"});
+  ASSERT_EQ(table.status, 0) << table.err;
+  EXPECT_NE(table.out.find("total: 4 static vertex-face, 1 moving vertex-face, 2 edge-edge"),
+            std::string::npos)
+      << table.out;
+  EXPECT_NE(table.out.find("paper-literal         n/a"), std::string::npos) << table.out;
+}
+
+TEST(Cli, PerQueryCsv) {
+  const std::string out = ::testing::TempDir() + "per_query.csv";
+  std::remove(out.c_str());
+  const CliRun r = fdhcert(
+      {"classify", kData + "static.vf", "--per-query", out, "--methods", "exact,paper-literal"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(contents(out),
+            "id,truth,exact,paper-literal,contact,time\n"
+            "through-face,1,1,0,face,1/2\nshort,0,0,0,none,\nhexfloat,1,1,0,face,1/2\n"
+            "no-truth,0,0,0,none,\n");
+}
+
+// Moving vertex-face and edge-edge rows take contact and time from exact CCD: "moving" and the
+// earliest time, a rational or two rationals around an irrational one; a static-only method
+// is n/a there.
+TEST(Cli, PerQueryCsvMovingVertexFaceAndEdgeEdge) {
+  const std::string out = ::testing::TempDir() + "per_query_moving.csv";
+  std::remove(out.c_str());
+  const CliRun r = fdhcert({"classify", kData + "moving.vf", "--per-query", out, "--methods",
+                            "exact,robust,paper-literal", "--check"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(contents(out),
+            "id,truth,exact,robust,paper-literal,contact,time\n"
+            "rising,1,1,1,n/a,moving,1/2\n"
+            "falling,1,1,1,n/a,moving,1/2\n"
+            "passing,0,0,0,n/a,none,\n");
+
+  const CliRun times = fdhcert(
+      {"classify", kData + "moving_times.vf", "--per-query", out, "--methods", "exact", "--check"});
+  ASSERT_EQ(times.status, 0) << times.err;
+  // 1/sqrt(2) lies in the bracket (lo^2 < 1/2 < hi^2, with lo = 1592262918131443 / 2^51);
+  // the two ends are 2^-53 apart.
+  EXPECT_EQ(contents(out),
+            "id,truth,exact,contact,time\n"
+            "quarter,1,1,moving,1/4\n"
+            "at-start,1,1,moving,0\n"
+            "apart,0,0,none,\n"
+            "irrational,1,1,moving,"
+            "1592262918131443/2251799813685248..6369051672525773/9007199254740992\n");
+}
+
+TEST(Cli, GateRejectsBadK) {
+  const CliRun r = fdhcert({"classify", kData + "static.vf", "--gate", "7"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--gate: takes 6, 14, 18 or 26"), std::string::npos) << r.err;
+  EXPECT_EQ(fdhcert({"classify", kData + "static.vf", "--gate", "18"}).status, 0);
+}
+
+TEST(Cli, BadInputExitsTwoNamingFileAndLineAndWritesNothing) {
+  const std::string out = ::testing::TempDir() + "never.csv";
+  std::remove(out.c_str());
+  const CliRun r =
+      fdhcert({"classify", kData + "static.vf", kData + "bad_number.vf", "--per-query", out});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("bad_number.vf:3:"), std::string::npos) << r.err;
+  EXPECT_FALSE(file_exists(out));
+  EXPECT_EQ(fdhcert({"classify", kData + "missing.vf"}).status, 2);
+  EXPECT_EQ(fdhcert({"classify", kData + "static.vf", "--bogus"}).status, 2);
+  EXPECT_EQ(fdhcert({"classify", kData + "static.vf", "--methods", "exact,nope"}).status, 2);
+}
+
+TEST(Cli, CheckPassesOnHandMadeTruth) {
+  EXPECT_EQ(fdhcert({"classify", kData + "static.vf", "--check"}).status, 0);
+}
+
+// The exact twin against a wrong stored truth: named on err always, exit 1 only with --check.
+TEST(Cli, CheckFailsWhereTheTwinDisagreesWithTheFile) {
+  const CliRun r = fdhcert({"classify", kData + "wrong_truth.vf", "--check"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("disagrees with the file's truth at " + kData +
+                       "wrong_truth.vf:2 (query wrong-no)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(fdhcert({"classify", kData + "wrong_truth.vf"}).status, 0);
+}
+
+// generate writes the same file for the same seed, and classify checks robust = exact on it.
+TEST(Cli, GenerateIsDeterministicAndClassifiable) {
+  const std::string a = ::testing::TempDir() + "gen_a.vf", b = ::testing::TempDir() + "gen_b.vf";
+  for (const std::string& f : {a, b})
+    ASSERT_EQ(
+        fdhcert({"generate", "generic-moving", "--count", "300", "--seed", "7", "--out", f}).status,
+        0);
+  EXPECT_EQ(contents(a), contents(b));
+  const CliRun r = fdhcert({"classify", a, "--methods", "exact,robust,float-cubic", "--check"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("moving vertex-face"), std::string::npos) << r.out;
+  EXPECT_EQ(fdhcert({"generate", "no-such-family", "--out", a}).status, 2);
+  EXPECT_EQ(fdhcert({"generate", "generic-moving"}).status, 2);                       // no --out
+  EXPECT_EQ(fdhcert({"generate", "angled", "--count", "20", "--out", b}).status, 0);  // static
+}
+
+TEST(Cli, FuzzJsonSummary) {
+  const std::string dir = fresh_temp_dir("cli_fuzz").string();
+  const CliRun r = fdhcert({"fuzz", "--method", "paper-literal", "--family", "angled", "--out", dir,
+                            "--count", "100", "--threads", "1", "--shard", "1/2", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  EXPECT_EQ(keys(j),
+            (std::vector<std::string>{"method", "family", "seed", "shard", "first", "last", "cases",
+                                      "resumed", "disagreements", "distinct", "files"}));
+  EXPECT_EQ(j["method"], "paper-literal");
+  EXPECT_EQ(j["shard"], "1/2");
+  EXPECT_EQ(j["first"], 0);
+  EXPECT_EQ(j["last"], 50);
+  EXPECT_EQ(j["cases"], 50);
+  EXPECT_EQ(j["distinct"], j["files"].size());
+}
+
+TEST(Cli, ReplayJsonNamesFailingCases) {
+  const CliRun r = fdhcert({"replay", FDH_SOURCE_DIR "/corpus/counterexamples/paper-literal",
+                            "--methods", "exact,paper-literal", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  EXPECT_EQ(keys(j), (std::vector<std::string>{"cases", "exact_mismatches", "methods"}));
+  EXPECT_EQ(j["exact_mismatches"].size(), 0u);
+  EXPECT_EQ(j["methods"]["exact"]["failing"], 0);
+  // Every stored counterexample of a method still fails it.
+  EXPECT_EQ(j["methods"]["paper-literal"]["failing"], j["cases"]);
+  EXPECT_EQ(j["methods"]["paper-literal"]["cases"].size(), j["cases"].get<std::size_t>());
+}
+
+TEST(Cli, SimulateJsonFields) {
+  const CliRun r = fdhcert({"simulate", FDH_SOURCE_DIR "/corpus/scenes/table.scene", "--grid", "6",
+                            "--frames", "5", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  EXPECT_EQ(keys(j), (std::vector<std::string>{"scene",        "grid",
+                                               "particles",    "frames",
+                                               "narrow",       "k",
+                                               "dt",           "stable_dt",
+                                               "dt_reduced",   "skin",
+                                               "ms_per_frame", "candidates",
+                                               "collisions",   "fp",
+                                               "fn",           "inside",
+                                               "crossing",     "self_collision",
+                                               "self_queries", "self_hits",
+                                               "self_stops",   "self_crossing",
+                                               "energy_start", "energy_end"}));
+  EXPECT_EQ(keys(j["ms_per_frame"]),
+            (std::vector<std::string>{"springs", "refit", "traversal", "narrow", "response", "self",
+                                      "collision", "total"}));
+  EXPECT_EQ(j["grid"], 6);
+  EXPECT_EQ(j["frames"], 5);
+  EXPECT_EQ(j["narrow"], "robust");
+  EXPECT_EQ(j["k"], 18);
+  EXPECT_EQ(j["fp"], 0);
+  EXPECT_TRUE(j["self_crossing"].is_null());
+  const CliRun unchecked = fdhcert({"simulate", FDH_SOURCE_DIR "/corpus/scenes/table.scene",
+                                    "--grid", "6", "--frames", "5", "--json", "--no-check"});
+  ASSERT_EQ(unchecked.status, 0) << unchecked.err;
+  EXPECT_TRUE(Json::parse(unchecked.out)["inside"].is_null());
+}
+
+}  // namespace
+}  // namespace fdh::verify

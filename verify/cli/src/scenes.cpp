@@ -1,0 +1,49 @@
+// fdhcert scenes: every shipped scene run as `simulate` runs it, a picture and a JSON each.
+#include <filesystem>
+#include <memory>
+
+#include "fdh/suite/scene_report.hpp"
+#include "suite_commands.hpp"
+
+namespace fdh::verify {
+namespace {
+
+const char* const kAbout =
+    R"(run every scene of a folder: a picture, a JSON and a line each
+
+Runs each *.scene of the folder (in name order) as `fdhcert simulate SCENE
+--png OUT/NAME.png --json` would, with the scene's own grid and frames,
+robust, k = 18, writes OUT/NAME.png and OUT/NAME.json (the object of
+simulate --json, docs/formats.md), and prints one line per scene: its grid,
+frames, ms per frame, FP and FN against the exact test, and the exact audit
+(particles inside, crossing edges, self-crossings; - where not audited).
+`./run verify` runs it into docs/scenes.
+)";
+
+struct ScenesOptions {
+  std::string scenes = "corpus/scenes", out_dir = "scenes";
+};
+
+int run_scenes(const ScenesOptions& o, const Io& io) {
+  const auto runs = run_scene_folder(o.scenes, o.out_dir, [&](const SceneFolderRun& r) {
+    io.out << scene_summary_line(r) << std::endl;
+  });
+  io.out << "scenes: wrote a picture and a JSON for each of " << runs.size() << " scenes to "
+         << o.out_dir << "\n";
+  return 0;
+}
+
+}  // namespace
+
+Command add_scenes(CLI::App& app) {
+  auto o = std::make_shared<ScenesOptions>();
+  CLI::App* cmd = app.add_subcommand("scenes", kAbout);
+  cmd->add_option("--scenes", o->scenes, "the folder of scenes (default: corpus/scenes)")
+      ->type_name("DIR");
+  cmd->add_option("--out", o->out_dir,
+                  "where the pictures and JSON go, created if needed (default:\nscenes)")
+      ->type_name("DIR");
+  return {cmd, [o](const Io& io) { return run_scenes(*o, io); }};
+}
+
+}  // namespace fdh::verify

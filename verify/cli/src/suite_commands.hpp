@@ -1,0 +1,19 @@
+// The commands over the suite's long jobs: certify, report, table1 and scenes (the pattern of
+// commands.hpp).
+#pragma once
+
+#include "commands.hpp"
+#include "fdh/suite/certify.hpp"
+
+namespace fdh::verify {
+
+Command add_certify(CLI::App& app);
+Command add_report(CLI::App& app);
+Command add_table1(CLI::App& app);
+Command add_scenes(CLI::App& app);
+
+// The options certify and report share: --quick --out --corpus --seed --per-family --soups and
+// the extra query files. --out's default is opt.out_dir as given.
+void add_certify_options(CLI::App& cmd, CertifyOptions& opt);
+
+}  // namespace fdh::verify

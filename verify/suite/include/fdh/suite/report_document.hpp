@@ -1,0 +1,50 @@
+// `fdhcert report`: the certificate, the measurements, their charts and report.md in one
+// folder (docs/formats.md, "report"). Everything is built from the structs of certify.hpp and
+// measurements.hpp; nothing is read back from the files written.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fdh/suite/certify.hpp"
+#include "fdh/suite/measurements.hpp"
+
+namespace fdh::verify {
+
+struct Measurements {
+  long per_family = 0;  // queries per generator family in `speed`
+  long per_point = 0;   // queries per parameter value in `stability`
+  std::vector<SpeedAccuracyRow> speed, pareto;
+  std::vector<StabilityRow> stability;
+  std::vector<KdopTreeRow> kdop;  // one block of k per cloth grid: 30, 50, 100
+};
+
+struct Report {
+  Certificate certificate;
+  Measurements measurements;
+};
+
+using Progress = std::function<void(std::string_view step)>;
+
+// Certifies (options as for certify; the first violating case is saved in options.out_dir)
+// and measures: 1000 queries per family and 400 per stability point, or 100 and 100 quick.
+// `progress` hears each step's name before it runs.
+Report make_report(const CertifyOptions& options, const Progress& progress = {});
+
+// Into report.certificate.options.out_dir: certificate.json and .md, data/*.csv, the charts
+// (speed_accuracy, stability, kdop_k as .png and .svg) and report.md. Throws
+// std::runtime_error when a file cannot be written or gnuplot fails.
+void write_report(const Report& report);
+
+std::string report_markdown(const Report& report);
+
+// The charts from the data files in <dir>/data (written by write_report).
+void draw_report_charts(const std::string& dir, const Measurements& m);
+
+// The certificate's part of report.md (certificate.md without its title): what `fdhcert
+// report` prints when it is done.
+std::string certificate_section(const Certificate& c);
+
+}  // namespace fdh::verify
