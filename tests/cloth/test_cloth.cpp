@@ -10,12 +10,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "fdh/cli/cli.hpp"
 #include "fdh/cloth/response.hpp"
 #include "fdh/cloth/self_collision.hpp"
 #include "fdh/cloth/simulation.hpp"
 #include "fdh/exact/audit.hpp"
 #include "fdh/exact/ccd.hpp"
-#include "fdh/cli/cli.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_file.hpp"

@@ -10,7 +10,7 @@ namespace {
 // A vertical segment through the middle of the unit triangle in z = 0: a hit.
 Query crossing() {
   Query q;
-  q.x = {Vec3{0.25, 0.25, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+  q.x = {Vec3{0.25, 0.25, 1},  {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
          Vec3{0.25, 0.25, -1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   return q;
 }
@@ -34,7 +34,7 @@ TEST(Checker, PromisesAllowWhatTheySay) {
   EXPECT_TRUE(keeps_promise(Promise::Exact, true, true));
   EXPECT_FALSE(keeps_promise(Promise::Exact, true, false));
   EXPECT_FALSE(keeps_promise(Promise::Exact, false, true));
-  EXPECT_TRUE(keeps_promise(Promise::Conservative, true, false));  // a false alarm is allowed
+  EXPECT_TRUE(keeps_promise(Promise::Conservative, true, false));   // a false alarm is allowed
   EXPECT_FALSE(keeps_promise(Promise::Conservative, false, true));  // a miss is not
   EXPECT_TRUE(keeps_promise(Promise::None, false, true));
 }

@@ -8,9 +8,12 @@ namespace fdh::verify {
 
 bool keeps_promise(Promise promise, bool said, bool twin) {
   switch (promise) {
-    case Promise::Exact: return said == twin;
-    case Promise::Conservative: return said || !twin;
-    case Promise::None: return true;
+    case Promise::Exact:
+      return said == twin;
+    case Promise::Conservative:
+      return said || !twin;
+    case Promise::None:
+      return true;
   }
   return false;
 }
@@ -23,7 +26,9 @@ Verdicts check(const Method& m, const Query& q, bool twin) {
   return v;
 }
 
-Verdicts check(const Method& m, const Query& q) { return check(m, q, twin_hit(q)); }
+Verdicts check(const Method& m, const Query& q) {
+  return check(m, q, twin_hit(q));
+}
 
 Verdicts check_given(const Method& m, const Query& q, bool said) {
   Verdicts v;
@@ -64,8 +69,7 @@ int check_box(const BoxMethod& m, const Vec3* pts, std::size_t n) {
   return exact::first_uncontained_slab(m.k, pts, n, lo, hi);
 }
 
-Verdicts check_overlap(const BoxMethod& m, const std::vector<Vec3>& a,
-                       const std::vector<Vec3>& b) {
+Verdicts check_overlap(const BoxMethod& m, const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
   double la[13], ha[13], lb[13], hb[13];
   m.build(a.data(), a.size(), la, ha);
   m.build(b.data(), b.size(), lb, hb);

@@ -15,20 +15,28 @@ namespace fdh::verify {
 
 const char* to_string(Decision d) {
   switch (d) {
-    case Decision::PointTriangle: return "point-triangle";
-    case Decision::VertexFaceCcd: return "vertex-face-ccd";
-    case Decision::EdgeEdgeCcd: return "edge-edge-ccd";
-    case Decision::KdopBuild: return "kdop-build";
-    case Decision::KdopOverlap: return "kdop-overlap";
+    case Decision::PointTriangle:
+      return "point-triangle";
+    case Decision::VertexFaceCcd:
+      return "vertex-face-ccd";
+    case Decision::EdgeEdgeCcd:
+      return "edge-edge-ccd";
+    case Decision::KdopBuild:
+      return "kdop-build";
+    case Decision::KdopOverlap:
+      return "kdop-overlap";
   }
   return "?";
 }
 
 const char* to_string(Promise p) {
   switch (p) {
-    case Promise::Exact: return "exact";
-    case Promise::Conservative: return "conservative";
-    case Promise::None: return "none";
+    case Promise::Exact:
+      return "exact";
+    case Promise::Conservative:
+      return "conservative";
+    case Promise::None:
+      return "none";
   }
   return "?";
 }
@@ -68,7 +76,9 @@ bool robust_static(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
   return robust_point_triangle(b0, b1, d, e, f, &exact::point_triangle_hit);
 }
 
-bool robust_moving(const Query& q) { return robust_ccd(q, &exact::ccd_hit); }
+bool robust_moving(const Query& q) {
+  return robust_ccd(q, &exact::ccd_hit);
+}
 
 Filtered robust_static_filter(const Query& q) {
   return robust_point_triangle_filter(q.b0(), q.b1(), q.d(), q.e(), q.f());
@@ -77,8 +87,9 @@ Filtered robust_static_filter(const Query& q) {
 // A method of all three query decisions, the static one as a plain function.
 Method all_kinds(std::string name, std::string summary, Promise promise, Test point_triangle,
                  QueryTest moving) {
-  return {std::move(name), std::move(summary), promise,
-          {on_query(point_triangle), moving, moving}, {}, point_triangle};
+  return {
+      std::move(name), std::move(summary), promise, {on_query(point_triangle), moving, moving}, {},
+      point_triangle};
 }
 
 }  // namespace
@@ -105,12 +116,24 @@ std::vector<Method> all_methods(int gate_k) {
       twin,
       robust,
       float_cubic,
-      {"paper-literal", "Han & Jia 3.2 as printed", Promise::None, {paper(&paper_literal)},
-       {}, &paper_literal},
-      {"paper-intended", "Han & Jia 3.2 as Figs. 3-4 read", Promise::None,
-       {paper(&paper_intended)}, {}, &paper_intended},
-      {"linear-system", "3x3 solve for (t, u, v), singular = no", Promise::None,
-       {on_query(&linear_system)}, {}, &linear_system},
+      {"paper-literal",
+       "Han & Jia 3.2 as printed",
+       Promise::None,
+       {paper(&paper_literal)},
+       {},
+       &paper_literal},
+      {"paper-intended",
+       "Han & Jia 3.2 as Figs. 3-4 read",
+       Promise::None,
+       {paper(&paper_intended)},
+       {},
+       &paper_intended},
+      {"linear-system",
+       "3x3 solve for (t, u, v), singular = no",
+       Promise::None,
+       {on_query(&linear_system)},
+       {},
+       &linear_system},
   };
 }
 
@@ -138,7 +161,8 @@ std::vector<Method> select_methods(const std::vector<std::string>& names, int ga
   std::vector<std::string> known;
   for (const Method& m : all) known.push_back(m.name);
   for (const std::string& n : names) {
-    const auto it = std::find_if(all.begin(), all.end(), [&](const Method& m) { return m.name == n; });
+    const auto it =
+        std::find_if(all.begin(), all.end(), [&](const Method& m) { return m.name == n; });
     if (it == all.end())
       throw std::invalid_argument("unknown method '" + n + "' (known: " + joined(known) + ")");
     out.push_back(*it);

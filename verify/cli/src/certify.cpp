@@ -72,8 +72,7 @@ void add_certify_options(CLI::App& cmd, CertifyOptions& opt) {
 Command add_certify(CLI::App& app) {
   auto opt = std::make_shared<CertifyOptions>();
   opt->out_dir = "certificate";
-  CLI::App* cmd = app.add_subcommand("certify", kAbout);
-  cmd->footer(kFooter);
+  CLI::App* cmd = add_command(app, "certify", kAbout, kFooter);
   add_certify_options(*cmd, *opt);
   return {cmd, [opt](const Io& io) { return run_certify(*opt, io); }};
 }

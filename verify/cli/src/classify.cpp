@@ -127,8 +127,7 @@ int run_classify(const ClassifyOptions& o, const Io& io) {
 
 Command add_classify(CLI::App& app) {
   auto o = std::make_shared<ClassifyOptions>();
-  CLI::App* cmd = app.add_subcommand("classify", kAbout);
-  cmd->footer(kFooter);
+  CLI::App* cmd = add_command(app, "classify", kAbout, kFooter);
   cmd->add_option("FILE", o->files,
                   "a native query file (docs/formats.md) or a CCD benchmark\n"
                   "CSV (*.csv), whose kind comes from a vertex-face or\n"

@@ -62,6 +62,19 @@ CLI::Option* add_methods_option(CLI::App& cmd, std::vector<std::string>& names,
 CLI::Validator one_of(std::vector<std::string> choices);
 // A k-DOP's k: 6, 14, 18 or 26 (and 0 for "none" when allow_none).
 CLI::Validator kdop_k_validator(bool allow_none);
+// A subcommand with its one-line description and its long footer.
+inline CLI::App* add_command(CLI::App& app, const char* name, const char* about,
+                             const char* footer) {
+  CLI::App* cmd = app.add_subcommand(name, about);
+  cmd->footer(footer);
+  return cmd;
+}
+// A whole number in [lo, hi]; outside it is a usage error naming the range.
+template <class T>
+CLI::Option* add_number_option(CLI::App& cmd, const std::string& name, T& value,
+                               const std::string& help, const std::string& type_name, T lo, T hi) {
+  return cmd.add_option(name, value, help)->type_name(type_name)->check(CLI::Range(lo, hi));
+}
 // --seed S: 0 to 2^62.
 CLI::Option* add_seed_option(CLI::App& cmd, std::uint64_t& seed, const std::string& help);
 

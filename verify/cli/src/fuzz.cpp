@@ -111,8 +111,7 @@ int run_fuzz_command(FuzzCommandOptions& o, const Io& io) {
 Command add_fuzz(CLI::App& app) {
   auto o = std::make_shared<FuzzCommandOptions>();
   FuzzOptions& opt = o->run;
-  CLI::App* cmd = app.add_subcommand("fuzz", kAbout);
-  cmd->footer(kFooter);
+  CLI::App* cmd = add_command(app, "fuzz", kAbout, kFooter);
   std::vector<std::string> methods;
   for (const Method& m : all_methods()) methods.push_back(m.name);
   cmd->add_option("--method", opt.method, wrapped(methods, 56))->required()->type_name("M");

@@ -53,17 +53,15 @@ int run_generate(const GenerateOptions& o, const Io& io) {
 
 Command add_generate(CLI::App& app) {
   auto o = std::make_shared<GenerateOptions>();
-  CLI::App* cmd = app.add_subcommand("generate", kAbout);
-  cmd->footer(kFooter);
+  CLI::App* cmd = add_command(app, "generate", kAbout, kFooter);
   std::vector<std::string> families;
   for (const Family& f : all_families()) families.push_back(f.name);
   cmd->add_option("FAMILY", o->family, "a generator family (below)")
       ->required()
       ->check(one_of(families));
   cmd->add_option("--out", o->file, "the file to write")->required()->type_name("FILE");
-  cmd->add_option("--count", o->count, "queries to write (default 10000)")
-      ->type_name("N")
-      ->check(CLI::Range(1L, 100000000L));
+  add_number_option(*cmd, "--count", o->count, "queries to write (default 10000)", "N", 1L,
+                    100000000L);
   add_seed_option(*cmd, o->seed, "the run's seed (default 1)");
   return {cmd, [o](const Io& io) { return run_generate(*o, io); }};
 }

@@ -108,8 +108,7 @@ int run_replay(const ReplayOptions& o, const Io& io) {
 
 Command add_replay(CLI::App& app) {
   auto o = std::make_shared<ReplayOptions>();
-  CLI::App* cmd = app.add_subcommand("replay", kAbout);
-  cmd->footer(kFooter);
+  CLI::App* cmd = add_command(app, "replay", kAbout, kFooter);
   cmd->add_option("PATH", o->paths, "a case file, or a folder of them")->required();
   add_methods_option(*cmd, o->methods, "comma-separated methods (default: all)");
   cmd->add_flag("--json", o->json, "print one JSON object (below)");

@@ -52,8 +52,7 @@ int run_report(const CertifyOptions& opt, const Io& io) {
 Command add_report(CLI::App& app) {
   auto opt = std::make_shared<CertifyOptions>();
   opt->out_dir = "report";
-  CLI::App* cmd = app.add_subcommand("report", kAbout);
-  cmd->footer(kFooter);
+  CLI::App* cmd = add_command(app, "report", kAbout, kFooter);
   add_certify_options(*cmd, *opt);
   return {cmd, [opt](const Io& io) { return run_report(*opt, io); }};
 }

@@ -232,8 +232,7 @@ void add_output_options(CLI::App& cmd, SimulateOptions& o) {
 
 Command add_simulate(CLI::App& app) {
   auto o = std::make_shared<SimulateOptions>();
-  CLI::App* cmd = app.add_subcommand("simulate", kAbout);
-  cmd->footer(kFooter);
+  CLI::App* cmd = add_command(app, "simulate", kAbout, kFooter);
   add_scene_options(*cmd, *o);
   add_output_options(*cmd, *o);
   return {cmd, [o](const Io& io) { return run_simulate(*o, io); }};

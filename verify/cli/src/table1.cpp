@@ -62,13 +62,11 @@ int run_table1(const Table1Options& o, const Io& io) {
 
 Command add_table1(CLI::App& app) {
   auto o = std::make_shared<Table1Options>();
-  CLI::App* cmd = app.add_subcommand("table1", kAbout);
-  cmd->footer(kFooter);
+  CLI::App* cmd = add_command(app, "table1", kAbout, kFooter);
   cmd->add_option("--scene", o->scene, "the scene (default: corpus/scenes/table.scene)")
       ->type_name("FILE");
-  cmd->add_option("--frames", o->frames, "frames per run (default: the scene's)")
-      ->type_name("F")
-      ->check(CLI::Range(1, 100000000));
+  add_number_option(*cmd, "--frames", o->frames, "frames per run (default: the scene's)", "F", 1,
+                    100000000);
   cmd->add_flag("--json", o->json, "print one JSON object instead of the text (below)");
   cmd->add_option("--out", o->out_dir,
                   "also write DIR/table1.md, DIR/data/table1.csv and the chart\n"

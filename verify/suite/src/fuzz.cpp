@@ -16,11 +16,11 @@
 #include <thread>
 #include <vector>
 
+#include "fdh/check/checker.hpp"
 #include "fdh/exact/point_triangle.hpp"
+#include "fdh/gen/families.hpp"
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/io/case_files.hpp"
-#include "fdh/check/checker.hpp"
-#include "fdh/gen/families.hpp"
 
 namespace fdh::verify {
 namespace fs = std::filesystem;

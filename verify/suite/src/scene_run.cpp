@@ -2,8 +2,8 @@
 
 #include <stdexcept>
 
-#include "fdh/exact/ccd.hpp"
 #include "fdh/check/checker.hpp"
+#include "fdh/exact/ccd.hpp"
 
 namespace fdh::verify {
 

@@ -37,7 +37,7 @@ std::optional<bool> twin_matches_truth(const Query& q, bool twin);
 // A count of checks and of broken promises, with the first few broken cases kept.
 struct CheckTally {
   long checked = 0, broken = 0;
-  long filter_decided = 0;  // checked queries the method's float filter decided alone
+  long filter_decided = 0;                // checked queries the method's float filter decided alone
   std::vector<std::size_t> first_broken;  // indices into the caller's sequence, at most `keep`
 
   void add(bool kept, std::size_t index, std::size_t keep = 16);
@@ -54,8 +54,7 @@ int check_box(const BoxMethod& m, const Vec3* pts, std::size_t n);
 
 // A k-DOP method's overlap test on the boxes it builds of two point sets, against the exact
 // FDHs. Conservative methods must not say "no" where the exact FDHs overlap.
-Verdicts check_overlap(const BoxMethod& m, const std::vector<Vec3>& a,
-                       const std::vector<Vec3>& b);
+Verdicts check_overlap(const BoxMethod& m, const std::vector<Vec3>& a, const std::vector<Vec3>& b);
 
 // A broad phase (tree traversal) against the exact overlapping pairs: the pairs it culled
 // although their exact boxes overlap (a conservative broad phase culls none).

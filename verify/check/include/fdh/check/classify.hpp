@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "fdh/query.hpp"
 #include "fdh/check/registry.hpp"
+#include "fdh/query.hpp"
 
 namespace fdh::verify {
 
