@@ -38,5 +38,17 @@ TEST(Corpus, EveryCounterexampleStillFailsItsMethod) {
   EXPECT_GE(files, 30);
 }
 
+// Far from the origin linear-system also raises false alarms (docs/methods.md).
+TEST(Corpus, LinearSystemRaisesAFalseAlarmFarFromTheOrigin) {
+  const std::vector<Query> qs =
+      read_native(FDH_SOURCE_DIR "/tests/data/linear_system_far_false_alarm.vf");
+  ASSERT_EQ(qs.size(), 1u);
+  const Method m = select_methods({"linear-system"}).front();
+  const Verdicts v = check(m, qs[0]);
+  EXPECT_FALSE(v.twin);
+  EXPECT_EQ(twin_matches_truth(qs[0], v.twin), true);
+  EXPECT_TRUE(v.said);
+}
+
 }  // namespace
 }  // namespace fdh::verify

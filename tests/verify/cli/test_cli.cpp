@@ -1,5 +1,6 @@
 // fdhcert's command line, run in-process: options, exit codes, and the outputs' structure.
 #include "fdh/cli/cli.hpp"
+#include "test_data.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +15,6 @@ namespace fdh::verify {
 namespace {
 
 using Json = nlohmann::json;
-
-const std::string kData = FDH_SOURCE_DIR "/tests/data/";
 
 struct CliRun {
   int status;

@@ -1,4 +1,5 @@
 #include "fdh/io/query_io.hpp"
+#include "test_data.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +11,6 @@
 
 namespace fdh::verify {
 namespace {
-
-const std::string kData = FDH_SOURCE_DIR "/tests/data/";
 
 TEST(QueryIo, ReadsNativeWithCommentsHexFloatsAndOptionalTruth) {
   const std::vector<Query> qs = read_native(kData + "static.vf");

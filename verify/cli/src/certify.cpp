@@ -1,13 +1,14 @@
 // fdhcert certify: the fast library against the exact reference, with a certificate.
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "suite_commands.hpp"
 
 namespace fdh::verify {
 namespace {
 
-const char* const kAbout =
+const char* const kCertifyAbout =
     R"(certify the fast library against the exact reference
 
 Checks every method of the registry against the exact twin of its decision,
@@ -28,7 +29,7 @@ the first 600 frames and every 50th with --quick), and the EXTRA FILES
 (native or benchmark CSV).
 )";
 
-const char* const kFooter =
+const char* const kCertifyFooter =
     R"(Writes DIR/certificate.json and DIR/certificate.md: counts, seed, the CGAL and
 GMP versions and the git commit. On any violation the first violating case is
 saved in DIR as a corpus file (a .vf query, or an .obj for a tree), named in
@@ -72,7 +73,7 @@ void add_certify_options(CLI::App& cmd, CertifyOptions& opt) {
 Command add_certify(CLI::App& app) {
   auto opt = std::make_shared<CertifyOptions>();
   opt->out_dir = "certificate";
-  CLI::App* cmd = add_command(app, "certify", kAbout, kFooter);
+  CLI::App* cmd = add_command(app, "certify", kCertifyAbout, kCertifyFooter);
   add_certify_options(*cmd, *opt);
   return {cmd, [opt](const Io& io) { return run_certify(*opt, io); }};
 }

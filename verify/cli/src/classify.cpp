@@ -1,5 +1,6 @@
 // fdhcert classify: every method side by side on query files.
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "fdh/check/checker.hpp"
@@ -12,7 +13,7 @@
 namespace fdh::verify {
 namespace {
 
-const char* const kAbout =
+const char* const kClassifyAbout =
     R"(run the point-triangle methods side by side on query files
 
 Runs the collision methods side by side on every query and prints one row per
@@ -25,7 +26,7 @@ moving linearly over the step. exact, robust and float-cubic take them all;
 the paper's methods and linear-system take only static vertex-face queries
 (the triangle stands still) and show n/a elsewhere.)";
 
-const char* const kFooter =
+const char* const kClassifyFooter =
     R"(--json prints one JSON object instead of the table:
   {"queries": N, "static_vf": S, "moving_vf": M, "edge_edge": E,
    "truth": "file"|"exact"|"mixed",
@@ -68,8 +69,8 @@ Inputs read_inputs(const ClassifyOptions& o) {
   return in;
 }
 
-std::string where(const Query& q) {
-  return q.file + ":" + std::to_string(q.line) + " (query " + q.id + ")";
+std::string where_and_id(const Query& q) {
+  return where(q) + " (query " + q.id + ")";
 }
 
 // Prints every disagreement the checker finds: the twin against a file's truth, and each method
@@ -85,7 +86,7 @@ std::size_t report_disagreements(const std::vector<Query>& queries,
     const std::optional<bool> agrees = twin_matches_truth(queries[i], c.exact[i]);
     if (!agrees || *agrees) continue;
     ++found;
-    err << "fdhcert: " << twin << " disagrees with the file's truth at " << where(queries[i])
+    err << "fdhcert: " << twin << " disagrees with the file's truth at " << where_and_id(queries[i])
         << "\n";
   }
   for (std::size_t k = 0; k < methods.size(); ++k) {
@@ -95,8 +96,8 @@ std::size_t report_disagreements(const std::vector<Query>& queries,
     for (std::size_t i = 0; i < queries.size(); ++i) {
       if (said[i] == kNotApplicable || keeps_promise(m.promise, said[i], c.exact[i])) continue;
       ++found;
-      err << "fdhcert: " << m.name << " disagrees with " << twin << " at " << where(queries[i])
-          << "\n";
+      err << "fdhcert: " << m.name << " disagrees with " << twin << " at "
+          << where_and_id(queries[i]) << "\n";
     }
   }
   return found;
@@ -127,7 +128,7 @@ int run_classify(const ClassifyOptions& o, const Io& io) {
 
 Command add_classify(CLI::App& app) {
   auto o = std::make_shared<ClassifyOptions>();
-  CLI::App* cmd = add_command(app, "classify", kAbout, kFooter);
+  CLI::App* cmd = add_command(app, "classify", kClassifyAbout, kClassifyFooter);
   cmd->add_option("FILE", o->files,
                   "a native query file (docs/formats.md) or a CCD benchmark\n"
                   "CSV (*.csv), whose kind comes from a vertex-face or\n"

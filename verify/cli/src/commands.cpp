@@ -1,6 +1,7 @@
 #include "commands.hpp"
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 namespace fdh::verify {
 

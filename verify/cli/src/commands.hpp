@@ -20,7 +20,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <functional>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -80,6 +80,11 @@ CLI::Option* add_seed_option(CLI::App& cmd, std::uint64_t& seed, const std::stri
 
 // The named methods (all of them for an empty list); an unknown name or gate is a UsageError.
 std::vector<Method> methods_named(const std::vector<std::string>& names, int gate_k = 0);
+
+// A query's FILE:LINE, for messages.
+inline std::string where(const Query& q) {
+  return q.file + ":" + std::to_string(q.line);
+}
 
 // Every JSON output: one object, two-space indented, then a newline.
 void print_json(std::ostream& os, const nlohmann::ordered_json& j);

@@ -1,5 +1,6 @@
 // fdhcert fuzz: find, shrink and store cases where a method disagrees with exact.
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include <memory>
 
@@ -10,7 +11,7 @@
 namespace fdh::verify {
 namespace {
 
-const char* const kAbout =
+const char* const kFuzzAbout =
     R"(search a generator family for cases where a method is wrong
 
 Draws N queries from generator family F and runs method M and exact on each.
@@ -18,7 +19,7 @@ Every disagreement is shrunk (RapidCheck's shrink tree, greedy) to a minimal
 case; distinct cases are written to DIR/M/F/<hash>.vf in the native format,
 with exact's verdict as the truth and a comment saying what M answered.)";
 
-const char* const kFooter =
+const char* const kFuzzFooter =
     R"(The same seed and shard always give the same cases. Progress is saved after
 every chunk of cases, in DIR/.fuzz/: a run that is killed and started again
 with the same arguments continues where it stopped, losing no case. On a
@@ -111,7 +112,7 @@ int run_fuzz_command(FuzzCommandOptions& o, const Io& io) {
 Command add_fuzz(CLI::App& app) {
   auto o = std::make_shared<FuzzCommandOptions>();
   FuzzOptions& opt = o->run;
-  CLI::App* cmd = add_command(app, "fuzz", kAbout, kFooter);
+  CLI::App* cmd = add_command(app, "fuzz", kFuzzAbout, kFuzzFooter);
   std::vector<std::string> methods;
   for (const Method& m : all_methods()) methods.push_back(m.name);
   cmd->add_option("--method", opt.method, wrapped(methods, 56))->required()->type_name("M");

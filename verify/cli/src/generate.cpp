@@ -12,14 +12,14 @@
 namespace fdh::verify {
 namespace {
 
-const char* const kAbout =
+const char* const kGenerateAbout =
     R"(write queries of a generator family to a file
 
 Writes N queries (default 10000) of a generator family to FILE in the native
 format, with the truth where the construction knows it. Case i comes from the
 seed (S, i), as in fuzz: the same seed gives the same file.)";
 
-const char* const kFooter =
+const char* const kGenerateFooter =
     R"(FAMILY is a static vertex-face family (the 15 of fuzz --help, e.g. angled) or
 a moving one: random-linear, generic-moving, rotating, hourglass, two-crossings,
 coplanar, sliding-on-edge, parallel-edges, degenerate-edge. generic-moving is
@@ -53,7 +53,7 @@ int run_generate(const GenerateOptions& o, const Io& io) {
 
 Command add_generate(CLI::App& app) {
   auto o = std::make_shared<GenerateOptions>();
-  CLI::App* cmd = add_command(app, "generate", kAbout, kFooter);
+  CLI::App* cmd = add_command(app, "generate", kGenerateAbout, kGenerateFooter);
   std::vector<std::string> families;
   for (const Family& f : all_families()) families.push_back(f.name);
   cmd->add_option("FAMILY", o->family, "a generator family (below)")

@@ -1,5 +1,6 @@
 // fdhcert replay: re-run stored cases; exact must still give each stored truth.
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "fdh/check/checker.hpp"
@@ -11,7 +12,7 @@
 namespace fdh::verify {
 namespace {
 
-const char* const kAbout =
+const char* const kReplayAbout =
     R"(re-run stored cases: which methods still fail where
 
 Re-runs stored cases (native query files; a folder means every *.vf below it,
@@ -21,7 +22,7 @@ such as corpus/ or a fuzz --out folder). Every case must carry a truth.
   the case and exits with status 1.
   For every other method it reports which cases it still gets wrong.)";
 
-const char* const kFooter =
+const char* const kReplayFooter =
     R"(--json prints {"cases": N, "exact_mismatches": [...],
                "methods": {"<name>": {"failing": K, "cases": [...]}}})";
 
@@ -46,10 +47,6 @@ std::vector<Query> read_cases(const std::vector<std::string>& paths, std::ostrea
   if (skipped) err << "fdhcert: note: skipped " << skipped << " moving or edge-edge cases\n";
   if (cases.empty()) throw InputError(paths.front(), 0, "no stored static vertex-face case");
   return cases;
-}
-
-std::string where(const Query& q) {
-  return q.file + ":" + std::to_string(q.line);
 }
 
 // What replay found: the cases where the twin lost its stored truth, and per method (in the
@@ -108,7 +105,7 @@ int run_replay(const ReplayOptions& o, const Io& io) {
 
 Command add_replay(CLI::App& app) {
   auto o = std::make_shared<ReplayOptions>();
-  CLI::App* cmd = add_command(app, "replay", kAbout, kFooter);
+  CLI::App* cmd = add_command(app, "replay", kReplayAbout, kReplayFooter);
   cmd->add_option("PATH", o->paths, "a case file, or a folder of them")->required();
   add_methods_option(*cmd, o->methods, "comma-separated methods (default: all)");
   cmd->add_flag("--json", o->json, "print one JSON object (below)");

@@ -1,6 +1,7 @@
 // fdhcert report: certificate, measurements, charts and report.md in one folder.
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "fdh/suite/report_document.hpp"
 #include "suite_commands.hpp"
@@ -8,7 +9,7 @@
 namespace fdh::verify {
 namespace {
 
-const char* const kAbout =
+const char* const kReportAbout =
     R"(certificate, measurements and charts in one folder
 
 The verification report, as `./run verify` makes it (into docs/report):
@@ -26,7 +27,7 @@ The verification report, as `./run verify` makes it (into docs/report):
 When done, prints the certificate's tables.
 )";
 
-const char* const kFooter =
+const char* const kReportFooter =
     R"(Charts need gnuplot (Debian: gnuplot-nox). Exit status 1 if the certificate
 finds a violation (the report is written all the same). --quick takes smaller
 samples (a quick certificate, 100 queries per family and point): for a first
@@ -52,7 +53,7 @@ int run_report(const CertifyOptions& opt, const Io& io) {
 Command add_report(CLI::App& app) {
   auto opt = std::make_shared<CertifyOptions>();
   opt->out_dir = "report";
-  CLI::App* cmd = add_command(app, "report", kAbout, kFooter);
+  CLI::App* cmd = add_command(app, "report", kReportAbout, kReportFooter);
   add_certify_options(*cmd, *opt);
   return {cmd, [opt](const Io& io) { return run_report(*opt, io); }};
 }

@@ -1,6 +1,7 @@
 // fdhcert scenes: every shipped scene run as `simulate` runs it, a picture and a JSON each.
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "fdh/suite/scene_report.hpp"
 #include "suite_commands.hpp"
@@ -8,7 +9,7 @@
 namespace fdh::verify {
 namespace {
 
-const char* const kAbout =
+const char* const kScenesAbout =
     R"(run every scene of a folder: a picture, a JSON and a line each
 
 Runs each *.scene of the folder (in name order) as `fdhcert simulate SCENE
@@ -37,7 +38,7 @@ int run_scenes(const ScenesOptions& o, const Io& io) {
 
 Command add_scenes(CLI::App& app) {
   auto o = std::make_shared<ScenesOptions>();
-  CLI::App* cmd = app.add_subcommand("scenes", kAbout);
+  CLI::App* cmd = app.add_subcommand("scenes", kScenesAbout);
   cmd->add_option("--scenes", o->scenes, "the folder of scenes (default: corpus/scenes)")
       ->type_name("DIR");
   cmd->add_option("--out", o->out_dir,

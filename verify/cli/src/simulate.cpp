@@ -1,5 +1,6 @@
 // fdhcert simulate: one scene, frame by frame, timed and checked.
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <memory>
@@ -16,7 +17,7 @@
 namespace fdh::verify {
 namespace {
 
-const char* const kAbout =
+const char* const kSimulateAbout =
     R"(run a cloth scene: time per frame, accuracy and exact audit
 
 Runs the cloth of SCENE (a .scene file, docs/formats.md; shipped ones are in
@@ -33,7 +34,7 @@ pairs and collisions, and two checks, both untimed:
             inside an obstacle and of cloth edges crossing an obstacle
             triangle, summed over the frames.)";
 
-const char* const kFooter =
+const char* const kSimulateFooter =
     R"(If the scene's dt is above the cloth's stable step (it shrinks as the grid
 grows), 0.9 times the stable step is used, and the output says so.
 Exit status: 0; 2 for bad input. A scene error names the file and line.)";
@@ -232,7 +233,7 @@ void add_output_options(CLI::App& cmd, SimulateOptions& o) {
 
 Command add_simulate(CLI::App& app) {
   auto o = std::make_shared<SimulateOptions>();
-  CLI::App* cmd = add_command(app, "simulate", kAbout, kFooter);
+  CLI::App* cmd = add_command(app, "simulate", kSimulateAbout, kSimulateFooter);
   add_scene_options(*cmd, *o);
   add_output_options(*cmd, *o);
   return {cmd, [o](const Io& io) { return run_simulate(*o, io); }};

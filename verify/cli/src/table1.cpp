@@ -1,6 +1,7 @@
 // fdhcert table1: the paper's Table 1 (ms per frame of the cloth on the table at four grid
 // sizes) measured on this machine, with the accuracy of each run beside its speed.
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include <iostream>
 #include <memory>
@@ -12,7 +13,7 @@
 namespace fdh::verify {
 namespace {
 
-const char* const kAbout =
+const char* const kTable1About =
     R"(the paper's Table 1 on today's machine, accuracy beside speed
 
 Han & Jia 2013, Table 1: milliseconds per frame of a cloth falling on a table,
@@ -28,7 +29,7 @@ accuracy: FP and FN of its narrow-phase queries against the exact test, and
 the exact audit (particles inside, crossing edges, summed over the frames).
 )";
 
-const char* const kFooter =
+const char* const kTable1Footer =
     R"(--json prints {"scene": .., "frames": F, "rows": [{"method": "robust", "k": 26,
 "grid": 50, "ms_per_frame": .., "fp": .., "fn": .., "inside": .., "crossing": ..,
 "queries": .., "collision_ms": .., "springs_ms": .., "dt": ..}, ...],
@@ -62,7 +63,7 @@ int run_table1(const Table1Options& o, const Io& io) {
 
 Command add_table1(CLI::App& app) {
   auto o = std::make_shared<Table1Options>();
-  CLI::App* cmd = add_command(app, "table1", kAbout, kFooter);
+  CLI::App* cmd = add_command(app, "table1", kTable1About, kTable1Footer);
   cmd->add_option("--scene", o->scene, "the scene (default: corpus/scenes/table.scene)")
       ->type_name("FILE");
   add_number_option(*cmd, "--frames", o->frames, "frames per run (default: the scene's)", "F", 1,

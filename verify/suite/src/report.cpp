@@ -1,6 +1,7 @@
 #include "fdh/suite/report.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <set>

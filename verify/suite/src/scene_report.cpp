@@ -1,6 +1,7 @@
 #include "fdh/suite/scene_report.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -12,16 +13,16 @@
 #include "fdh/io/scene_output.hpp"
 
 namespace fdh::verify {
+double six_digits(double v) {
+  return std::stod(fmt::format("{:.6g}", v));
+}
+
 namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
 // Times and energies to six significant digits, as simulate has always printed them.
-double six_digits(double v) {
-  return std::stod(fmt::format("{:.6g}", v));
-}
-
 json times_json(const SceneRun& r) {
   const double per = r.frames ? 1e3 / r.frames : 0;  // s summed -> ms per frame
   const cloth::FrameTimes& t = r.time;

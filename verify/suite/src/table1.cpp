@@ -1,6 +1,7 @@
 #include "fdh/suite/table1.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -8,6 +9,7 @@
 
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/io/charts.hpp"
+#include "fdh/suite/scene_report.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -26,10 +28,6 @@ constexpr const char* kTraditional = "linear-system";
 constexpr const char* kOwn = "paper-intended";
 
 // The paper's numbers, rounded as printed; ours to six significant digits.
-double six_digits(double v) {
-  return std::stod(fmt::format("{:.6g}", v));
-}
-
 std::string grid_name(int g) {
   return fmt::format("{}x{}", g, g);
 }

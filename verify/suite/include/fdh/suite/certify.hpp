@@ -50,8 +50,8 @@ struct Certificate {
   std::vector<std::string> families, moving_families;
   // Narrow-phase queries recorded from the shipped scenes (<corpus>/scenes/*.scene).
   long scenes = 0, scene_queries = 0;
-  std::vector<PromiseCheck> promises;  // every (method, query decision) with a promise
-  std::vector<BoxCheck> boxes;         // every k-DOP method
+  std::vector<PromiseCheck> promises;     // every (method, query decision) with a promise
+  std::vector<BoxCheck> boxes;            // every k-DOP method
   long truths = 0, truth_violations = 0;  // queries with a stored truth: the twin = the truth
   std::string first_violation;            // what went wrong first, and the file it was saved to
 

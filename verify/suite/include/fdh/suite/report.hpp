@@ -1,7 +1,7 @@
 // Prints a Classification: a table for people, JSON for programs, CSV per query.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <ostream>
 #include <string>
 #include <vector>

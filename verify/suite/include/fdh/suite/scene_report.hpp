@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "fdh/cloth/scene.hpp"
 #include "fdh/suite/scene_run.hpp"
@@ -43,5 +43,8 @@ std::vector<SceneFolderRun> run_scene_folder(
 // One line for people: the scene, its grid and frames, ms per frame, FP and FN, the exact
 // audit (inside, crossing, self-crossing).
 std::string scene_summary_line(const SceneFolderRun& r);
+
+// v to six significant digits: the precision of every time and energy in the JSON outputs.
+double six_digits(double v);
 
 }  // namespace fdh::verify

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "fdh/cloth/simulation.hpp"
 #include "fdh/check/registry.hpp"
+#include "fdh/cloth/simulation.hpp"
 #include "fdh/exact/audit.hpp"
 
 namespace fdh::verify {
@@ -31,7 +31,7 @@ struct SceneRun {
   bool dt_reduced = false;  // the scene's Δt was above stable_dt, so 0.9·stable_dt was used
   cloth::FrameTimes time;   // summed over the frames, s
   long candidates = 0, collisions = 0, fp = 0, fn = 0;
-  long broken = 0;  // narrow-phase verdicts that break the method's promise (checker.hpp)
+  long broken = 0;           // narrow-phase verdicts that break the method's promise (checker.hpp)
   exact::AuditCounts audit;  // summed over the frames
   long audit_last_inside = 0, audit_last_crossing = 0;
   bool self_audited = false;

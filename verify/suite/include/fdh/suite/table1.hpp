@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "fdh/cloth/scene.hpp"
 #include "fdh/suite/scene_run.hpp"
