@@ -73,6 +73,8 @@ class Line {
 
 using Reader = std::function<void(const Line&, Scene&)>;
 
+// One entry per keyword of the format, with its range: a table, longer than a function should
+// be because it is data (docs/formats.md lists the same keywords).
 const std::map<std::string, Reader>& readers() {
   static const std::map<std::string, Reader> r = {
       {"name", [](const Line& l, Scene& s) { l.expect(1, 1), s.name = l.word(0); }},

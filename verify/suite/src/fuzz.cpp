@@ -141,6 +141,63 @@ struct Run {
 
 }  // namespace
 
+namespace {
+
+// Worker processes 0 .. n-1, each reporting (cases, found) per chunk on the pipe.
+std::vector<pid_t> start_workers(const Run& run, int workers, int progress_fd) {
+  std::vector<pid_t> children;
+  std::fflush(nullptr);
+  for (int w = 0; w < workers; ++w) {
+    const pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error("fuzz: cannot start a worker process");
+    if (pid == 0) {
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed run leaves no worker behind
+      int status = 0;
+      try {
+        run.work(w, workers, progress_fd);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "fdhcert: fuzz worker: %s\n", e.what());
+        status = 3;
+      }
+      std::fflush(nullptr);
+      ::_exit(status);
+    }
+    children.push_back(pid);
+  }
+  return children;
+}
+
+// Waits for every worker, showing progress; false if one failed.
+bool wait_for_workers(const Run& run, std::size_t alive, int progress_fd, long done, long found,
+                      const FuzzSummary& sum, std::ostream* progress) {
+  const auto start = std::chrono::steady_clock::now();
+  bool ok = true;
+  while (alive > 0) {
+    int status = 0;
+    const pid_t pid = ::waitpid(-1, &status, WNOHANG);
+    if (pid > 0) {
+      --alive;
+      ok &= WIFEXITED(status) && WEXITSTATUS(status) == 0;
+      continue;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    for (long report[2]; ::read(progress_fd, report, sizeof report) == sizeof report;)
+      done += report[0], found += report[1];
+    if (!progress) continue;
+    const double secs =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    char line[200];
+    std::snprintf(line, sizeof line, "\rfuzz %s on %s: %ld/%ld cases, %.0f cases/s, %ld found ",
+                  run.method.name.c_str(), run.family.c_str(), done, sum.last - sum.first,
+                  double(done - sum.resumed) / std::max(secs, 1e-9), found);
+    *progress << line << std::flush;
+  }
+  if (progress) *progress << '\n';
+  return ok;
+}
+
+}  // namespace
+
 FuzzSummary run_fuzz(const FuzzOptions& opt, std::ostream& progress_stream) {
   if (opt.shards < 1 || opt.shard < 0 || opt.shard >= opt.shards)
     throw std::invalid_argument("--shard I/N needs 1 <= I <= N");
@@ -162,59 +219,16 @@ FuzzSummary run_fuzz(const FuzzOptions& opt, std::ostream& progress_stream) {
   const int workers = int(std::min<long>(
       std::max(1, opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency())),
       std::max(1L, run.chunks)));
-  int progress_pipe[2];
-  if (::pipe(progress_pipe) != 0) throw std::runtime_error("fuzz: cannot make a pipe");
-  ::fcntl(progress_pipe[0], F_SETFL, O_NONBLOCK);
-  ::fcntl(progress_pipe[1], F_SETFL, O_NONBLOCK);
-  std::vector<pid_t> children;
-  std::fflush(nullptr);
-  for (int w = 0; w < workers; ++w) {
-    const pid_t pid = ::fork();
-    if (pid < 0) throw std::runtime_error("fuzz: cannot start a worker process");
-    if (pid == 0) {
-      ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed run leaves no worker behind
-      ::close(progress_pipe[0]);
-      int status = 0;
-      try {
-        run.work(w, workers, progress_pipe[1]);
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "fdhcert: fuzz worker: %s\n", e.what());
-        status = 3;
-      }
-      std::fflush(nullptr);
-      ::_exit(status);
-    }
-    children.push_back(pid);
-  }
-  ::close(progress_pipe[1]);
-
-  const auto start = std::chrono::steady_clock::now();
-  long done = sum.resumed;
-  bool failed = false;
-  for (std::size_t alive = children.size(); alive > 0;) {
-    int status = 0;
-    const pid_t pid = ::waitpid(-1, &status, WNOHANG);
-    if (pid > 0) {
-      --alive;
-      failed |= !WIFEXITED(status) || WEXITSTATUS(status) != 0;
-      continue;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-    for (long report[2]; ::read(progress_pipe[0], report, sizeof report) == sizeof report;)
-      done += report[0], found += report[1];
-    if (opt.progress) {
-      const double secs =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      char line[200];
-      std::snprintf(line, sizeof line, "\rfuzz %s on %s: %ld/%ld cases, %.0f cases/s, %ld found ",
-                    run.method.name.c_str(), run.family.c_str(), done, sum.last - sum.first,
-                    double(done - sum.resumed) / std::max(secs, 1e-9), found);
-      progress_stream << line << std::flush;
-    }
-  }
-  ::close(progress_pipe[0]);
-  if (opt.progress) progress_stream << '\n';
-  if (failed) throw std::runtime_error("fuzz: a worker failed (see above)");
+  int pipe_fd[2];
+  if (::pipe(pipe_fd) != 0) throw std::runtime_error("fuzz: cannot make a pipe");
+  ::fcntl(pipe_fd[0], F_SETFL, O_NONBLOCK);
+  ::fcntl(pipe_fd[1], F_SETFL, O_NONBLOCK);
+  const std::vector<pid_t> children = start_workers(run, workers, pipe_fd[1]);
+  ::close(pipe_fd[1]);
+  const bool ok = wait_for_workers(run, children.size(), pipe_fd[0], sum.resumed, found, sum,
+                                   opt.progress ? &progress_stream : nullptr);
+  ::close(pipe_fd[0]);
+  if (!ok) throw std::runtime_error("fuzz: a worker failed (see above)");
 
   for (long c = 0; c < run.chunks; ++c) {
     ChunkResult r;
