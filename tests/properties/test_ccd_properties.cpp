@@ -1,5 +1,5 @@
-// Moving queries (vertex-face with a moving triangle, edge-edge): `robust` equals `exact` on
-// every family; `exact` agrees with what a construction guarantees (truth, earliest time); and
+// Moving queries (vertex-face with a moving triangle, edge-edge): `exact` agrees with what a
+// construction guarantees (truth, earliest time); and
 // exact's contact time really is the first contact: the query touches inside the reported
 // interval and not before it. On static queries, the CCD and the static exact test (CGAL's
 // do_intersect) are two independent exact methods, and they must agree.
@@ -8,7 +8,6 @@
 
 #include <cmath>
 
-#include "fdh/ccd/robust.hpp"
 #include "fdh/exact/ccd.hpp"
 #include "fdh/exact/point_triangle.hpp"
 #include "fdh/gen/rapidcheck.hpp"
@@ -18,14 +17,6 @@ namespace fdh::verify {
 namespace {
 
 class MovingFamilyTest : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(MovingFamilyTest, RobustEqualsExact) {
-  const Family& f = *family_named(GetParam());
-  EXPECT_TRUE(rc::check("ccd-robust-equals-exact/" + f.name, [&f] {
-    const Query q = (*gen_family(f)).query;
-    RC_ASSERT(robust_ccd(q, &exact::ccd_hit) == exact::ccd_hit(q));
-  }));
-}
 
 TEST_P(MovingFamilyTest, ExactMatchesTheConstruction) {
   const Family& f = *family_named(GetParam());
@@ -62,13 +53,12 @@ INSTANTIATE_TEST_SUITE_P(All, MovingFamilyTest, ::testing::ValuesIn(family_names
 
 class StaticFamilyCcd : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(StaticFamilyCcd, CcdEqualsStaticExactAndRobust) {
+TEST_P(StaticFamilyCcd, CcdEqualsStaticExact) {
   const Family& f = *family_named(GetParam());
   EXPECT_TRUE(rc::check("ccd-on-static/" + f.name, [&f] {
     const Query q = (*gen_family(f)).query;
     const bool e = exact::point_triangle_hit(q.b0(), q.b1(), q.d(), q.e(), q.f());
     RC_ASSERT(exact::ccd_hit(q) == e);
-    RC_ASSERT(robust_ccd(q, &exact::ccd_hit) == e);
   }));
 }
 

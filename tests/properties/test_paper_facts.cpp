@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
+#include "fdh/check/registry.hpp"
 #include "fdh/exact/point_triangle.hpp"
 #include "fdh/gen/rapidcheck.hpp"
-#include "fdh/check/registry.hpp"
 #include "test_name.hpp"
 
 namespace fdh::verify {

@@ -1,27 +1,16 @@
-// Property 4: `robust` equals `exact` on every generated query. And the exact reference itself
-// agrees with what the construction of a query guarantees: its truth, contact kind and time.
+// The exact reference agrees with what the construction of a query guarantees: its truth,
+// contact kind and time. (That `robust` equals it is test_promises.cpp's.)
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
 #include "fdh/exact/point_triangle.hpp"
 #include "fdh/gen/rapidcheck.hpp"
-#include "fdh/point_triangle/robust.hpp"
 #include "test_name.hpp"
 
 namespace fdh::verify {
 namespace {
 
 class PointTriangleFamily : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(PointTriangleFamily, RobustEqualsExact) {
-  const Family& f = *family_named(GetParam());
-  EXPECT_TRUE(rc::check("robust-equals-exact/" + f.name, [&f] {
-    const Query q = (*gen_family(f)).query;
-    const bool exact = exact::point_triangle_hit(q.b0(), q.b1(), q.d(), q.e(), q.f());
-    RC_ASSERT(robust_point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f(),
-                                    &exact::point_triangle_hit) == exact);
-  }));
-}
 
 TEST_P(PointTriangleFamily, ExactMatchesTheConstruction) {
   const Family& f = *family_named(GetParam());

@@ -30,6 +30,15 @@ Verdicts check(const Method& m, const Query& q) {
   return check(m, q, twin_hit(q));
 }
 
+Verdicts check(const Method& m, const Query& q, Decision d) {
+  Verdicts v;
+  v.twin = twin_hit(q, d);
+  const QueryTest& test = m.test[std::size_t(d)];
+  v.said = m.is_twin || !test ? v.twin : test(q);
+  v.kept = keeps_promise(m.promise, v.said, v.twin);
+  return v;
+}
+
 Verdicts check_given(const Method& m, const Query& q, bool said) {
   Verdicts v;
   v.said = said;

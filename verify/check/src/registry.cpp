@@ -46,9 +46,14 @@ Decision decision_of(const Query& q) {
   return q.is_static_vf() ? Decision::PointTriangle : Decision::VertexFaceCcd;
 }
 
+bool twin_hit(const Query& q, Decision d) {
+  return d == Decision::PointTriangle
+             ? exact::point_triangle_hit(q.b0(), q.b1(), q.d(), q.e(), q.f())
+             : exact::ccd_hit(q);
+}
+
 bool twin_hit(const Query& q) {
-  return q.is_static_vf() ? exact::point_triangle_hit(q.b0(), q.b1(), q.d(), q.e(), q.f())
-                          : exact::ccd_hit(q);
+  return twin_hit(q, decision_of(q));
 }
 
 namespace {

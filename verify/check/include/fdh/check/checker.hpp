@@ -28,6 +28,9 @@ struct Verdicts {
 Verdicts check(const Method& m, const Query& q);
 // The same with the twin's verdict already known (several methods on one query).
 Verdicts check(const Method& m, const Query& q, bool twin);
+// The method's test for decision d against d's twin (a static query asked as a CCD query, say);
+// a method without a test for d keeps its promise trivially (said = twin).
+Verdicts check(const Method& m, const Query& q, Decision d);
 // A verdict the method already gave elsewhere (the simulator's narrow phase) against the twin.
 Verdicts check_given(const Method& m, const Query& q, bool said);
 

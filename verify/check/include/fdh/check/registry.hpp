@@ -63,8 +63,10 @@ struct Method {
   bool hit(const Query& q) const { return test[std::size_t(decision_of(q))](q); }
 };
 
-// The exact twin of a query decision: its verdict (reference/).
+// The exact twin of a query decision: its verdict (reference/), for the query's own decision or
+// for a given one (a static query is also a moving one whose triangle stays: VertexFaceCcd).
 bool twin_hit(const Query& q);
+bool twin_hit(const Query& q, Decision d);
 
 // A k-DOP method of a fixed k: builds a box (lo, hi per slab, in fdh::Kdop<k> slab order) and
 // decides overlap of two boxes.
