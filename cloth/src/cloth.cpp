@@ -93,4 +93,25 @@ double Cloth::stable_dt() const {
   return k > 0 ? std::sqrt(2 * m_ / k) : INFINITY;
 }
 
+double stable_dt(const ClothSpec& spec) {
+  if (spec.grid < 2) return 0;
+  const int g = spec.grid;
+  // A particle's springs depend only on whether its row and its column are the first, second,
+  // a middle, the second-to-last or the last: one candidate of each.
+  const int cand[] = {0, 1, 2, g / 2, g - 3, g - 2, g - 1};
+  const auto pos = [](double k) { return k > 0 ? k : 0.0; };
+  double k_max = 0;
+  for (const int r : cand)
+    for (const int c : cand) {
+      if (r < 0 || r >= g || c < 0 || c >= g) continue;
+      const int rows = (r > 0) + (r + 1 < g), cols = (c > 0) + (c + 1 < g);
+      const int bends = (r >= 2) + (r + 2 < g) + (c >= 2) + (c + 2 < g);
+      const double k = (rows + cols) * pos(spec.k_structural) + rows * cols * pos(spec.k_shear) +
+                       bends * pos(spec.k_bend);
+      k_max = std::max(k_max, k);
+    }
+  const double m = spec.mass / (double(g) * g);
+  return k_max > 0 ? std::sqrt(2 * m / k_max) : INFINITY;
+}
+
 }  // namespace fdh::cloth

@@ -1,6 +1,7 @@
 #include "fdh/cloth/simulation.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -107,6 +108,18 @@ void Simulation::step() {
 
   if (self_pass_) self_ = self_pass_->resolve(cloth_, x0_, x, v);
   times_.self = seconds_since(clock);
+
+  ++frame_;
+  const auto bounded = [](const Vec3& p) {
+    return std::abs(p.x) <= kMaxMagnitude && std::abs(p.y) <= kMaxMagnitude &&
+           std::abs(p.z) <= kMaxMagnitude;  // false for nan too
+  };
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (!bounded(x[i]) || !bounded(v[i]))
+      throw Diverged("the cloth diverged at frame " + std::to_string(frame_) + ": particle " +
+                     std::to_string(i) + "'s " + (bounded(x[i]) ? "velocity" : "position") +
+                     " is not finite or beyond 1e30; lower dt, the stiffness or the damping "
+                     "(docs/limits.md)");
 }
 
 }  // namespace fdh::cloth

@@ -293,7 +293,11 @@ double energy_growth(const Scene& s, double dt) {
   const double e0 = sim.cloth().energy();
   double worst = 0;
   for (int f = 0; f < int(2.0 / dt); ++f) {
-    sim.step();
+    try {
+      sim.step();
+    } catch (const Diverged&) {  // positions or velocities past 1e30: it exploded
+      return INFINITY;
+    }
     const double e = sim.cloth().energy();
     if (!std::isfinite(e)) return INFINITY;
     worst = std::max(worst, (e - e0) / std::fabs(e0));

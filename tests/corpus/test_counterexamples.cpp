@@ -50,5 +50,16 @@ TEST(Corpus, LinearSystemRaisesAFalseAlarmFarFromTheOrigin) {
   EXPECT_TRUE(v.said);
 }
 
+// Scaled down, linear-system misses a face hit at the end of the step (docs/methods.md).
+TEST(Corpus, LinearSystemMissesAFaceHitOnATinyQuery) {
+  const std::vector<Query> qs =
+      read_native(FDH_SOURCE_DIR "/tests/data/linear_system_tiny_face_miss.vf");
+  ASSERT_EQ(qs.size(), 1u);
+  const Verdicts v = check(select_methods({"linear-system"}).front(), qs[0]);
+  EXPECT_TRUE(v.twin);
+  EXPECT_EQ(twin_matches_truth(qs[0], v.twin), true);
+  EXPECT_FALSE(v.said);
+}
+
 }  // namespace
 }  // namespace fdh::verify

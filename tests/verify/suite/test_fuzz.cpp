@@ -8,12 +8,17 @@
 
 #include <fcntl.h>
 
+#include <sys/file.h>
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
+
+#include <climits>
 #include <thread>
 
 #include "fdh/io/query_io.hpp"
@@ -24,6 +29,11 @@ namespace fdh::verify {
 namespace {
 
 namespace fs = std::filesystem;
+
+// A fresh folder of this process's own: test binaries of other build folders may run at once.
+fs::path fuzz_dir(const std::string& name) {
+  return fresh_temp_dir(name + "_" + std::to_string(::getpid()));
+}
 
 FuzzOptions options(const fs::path& out, int threads) {
   FuzzOptions o;
@@ -52,7 +62,7 @@ std::map<std::string, std::string> cases_in(const fs::path& dir) {
 }
 
 TEST(Fuzz, FindsShrinksAndStoresCasesThatReplayAsFailures) {
-  const fs::path d = fresh_temp_dir("fuzz_basic");
+  const fs::path d = fuzz_dir("fuzz_basic");
   std::ostringstream progress;
   const FuzzSummary s = run_fuzz(options(d, 1), progress);
   EXPECT_EQ(s.cases, 1200);
@@ -67,8 +77,8 @@ TEST(Fuzz, FindsShrinksAndStoresCasesThatReplayAsFailures) {
 }
 
 TEST(Fuzz, SameCasesForAnyWorkerCountAndShards) {
-  const fs::path one = fresh_temp_dir("fuzz_one"), two = fresh_temp_dir("fuzz_two"),
-                 shards = fresh_temp_dir("fuzz_shards");
+  const fs::path one = fuzz_dir("fuzz_one"), two = fuzz_dir("fuzz_two"),
+                 shards = fuzz_dir("fuzz_shards");
   std::ostringstream progress;
   const FuzzSummary a = run_fuzz(options(one, 1), progress);
   const FuzzSummary b = run_fuzz(options(two, 2), progress);
@@ -86,7 +96,7 @@ TEST(Fuzz, SameCasesForAnyWorkerCountAndShards) {
 }
 
 TEST(Fuzz, KilledWithSigkillAndRestartedLosesNothing) {
-  const fs::path whole = fresh_temp_dir("fuzz_whole"), killed = fresh_temp_dir("fuzz_killed");
+  const fs::path whole = fuzz_dir("fuzz_whole"), killed = fuzz_dir("fuzz_killed");
   std::ostringstream progress;
   FuzzOptions o = options(whole, 2);
   o.count = 6000;
@@ -116,7 +126,7 @@ TEST(Fuzz, KilledWithSigkillAndRestartedLosesNothing) {
     long n = 0;
     std::error_code ec;
     for (const auto& e : fs::recursive_directory_iterator(markers, ec))
-      n += e.path().filename().string().rfind("chunk-", 0) == 0;
+      n += e.path().filename().string().rfind("cases-", 0) == 0;
     return n;
   };
   for (int i = 0; i < 2000 && count_markers() < 5; ++i)
@@ -130,12 +140,9 @@ TEST(Fuzz, KilledWithSigkillAndRestartedLosesNothing) {
   EXPECT_LT(done_before, 60) << "the run finished before it could be killed";
   std::this_thread::sleep_for(std::chrono::milliseconds(100));  // workers die with the parent
 
-  // Every file left behind is whole: a case file parses, a temporary is only a temporary.
-  for (const auto& [rel, text] : cases_in(killed)) {
-    if (rel.find(".tmp.") == std::string::npos) {
-      EXPECT_NO_THROW(read_native((killed / rel).string())) << rel;
-    }
-  }
+  // Every file left behind is whole: a case file parses. Temporaries live in .fuzz/tmp only.
+  for (const auto& [rel, text] : cases_in(killed))
+    EXPECT_NO_THROW(read_native((killed / rel).string())) << rel;
 
   const pid_t again = start();
   ::waitpid(again, &status, 0);
@@ -146,6 +153,160 @@ TEST(Fuzz, KilledWithSigkillAndRestartedLosesNothing) {
   EXPECT_EQ(after.resumed, 6000);
   EXPECT_EQ(after.disagreements, expected.disagreements);
   EXPECT_EQ(after.distinct.size(), expected.distinct.size());
+}
+
+// The markers of the run in `out` (names cases-B-E), as paths.
+std::vector<fs::path> fuzz_markers_in(const fs::path& out) {
+  std::vector<fs::path> v;
+  for (const auto& e : fs::recursive_directory_iterator(out / ".fuzz"))
+    if (e.path().filename().string().rfind("cases-", 0) == 0) v.push_back(e.path());
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+TEST(Fuzz, ResumedWithAnotherChunkAndThreadsEndsWithTheSameCases) {
+  const fs::path whole = fuzz_dir("fuzz_rechunk_whole"), part = fuzz_dir("fuzz_rechunk_part");
+  std::ostringstream progress;
+  const FuzzSummary expected = run_fuzz(options(whole, 1), progress);
+  // A run killed part way: chunks of 100 done, some not (their markers gone, as after a kill).
+  run_fuzz(options(part, 2), progress);
+  const std::vector<fs::path> markers = fuzz_markers_in(part);
+  ASSERT_EQ(markers.size(), 12u);
+  for (std::size_t k : {1u, 2u, 7u, 11u}) fs::remove(markers[k]);
+  for (const int chunk : {37, 1000, 1}) {
+    FuzzOptions o = options(part, chunk == 37 ? 2 : 1);
+    o.chunk = chunk;
+    const FuzzSummary s = run_fuzz(o, progress);
+    EXPECT_EQ(s.cases, 1200);
+    EXPECT_EQ(s.disagreements, expected.disagreements);
+    EXPECT_EQ(s.distinct, [&] {
+      std::set<std::string> d;
+      for (const std::string& f : expected.distinct)
+        d.insert((part / fs::relative(f, whole)).string());
+      return d;
+    }());
+    EXPECT_EQ(cases_in(part), cases_in(whole));
+    if (chunk == 37) {
+      EXPECT_EQ(s.resumed, 800);
+      // Cut again, across the old and the new chunk boundaries.
+      const std::vector<fs::path> now = fuzz_markers_in(part);
+      for (std::size_t k = 0; k < now.size(); k += 3) fs::remove(now[k]);
+    }
+  }
+}
+
+TEST(Fuzz, RefusesToStartBesideAnUnfinishedRunWithOtherOptions) {
+  const fs::path d = fuzz_dir("fuzz_other_run");
+  std::ostringstream progress;
+  run_fuzz(options(d, 1), progress);
+  fs::remove(fuzz_markers_in(d).at(3));  // now unfinished
+  for (const auto& change : std::vector<std::function<void(FuzzOptions&)>>{
+           [](FuzzOptions& o) { o.seed = 8; }, [](FuzzOptions& o) { o.count = 1300; },
+           [](FuzzOptions& o) { o.method = "paper-literal"; },
+           [](FuzzOptions& o) { o.family = "angled"; },
+           [](FuzzOptions& o) { o.shard = 1, o.shards = 2; }}) {
+    FuzzOptions o = options(d, 1);
+    change(o);
+    try {
+      run_fuzz(o, progress);
+      ADD_FAILURE() << "a run with other options started beside an unfinished one";
+    } catch (const FuzzRefused& e) {
+      EXPECT_NE(std::string(e.what()).find("unfinished fuzz run with other options (--method "
+                                           "paper-intended --family parallel-cross --seed 7 "
+                                           "--count 1200 --shard 1/1)"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  // The same run, with another chunk, resumes it; then a run with other options may start.
+  FuzzOptions same = options(d, 2);
+  same.chunk = 450;
+  EXPECT_EQ(run_fuzz(same, progress).resumed, 1100);
+  FuzzOptions other = options(d, 1);
+  other.seed = 8;
+  other.count = 100;
+  EXPECT_EQ(run_fuzz(other, progress).cases, 100);
+}
+
+TEST(Fuzz, RefusesAManifestThatDoesNotRecordItsRun) {
+  const fs::path d = fuzz_dir("fuzz_manifest");
+  std::ostringstream progress;
+  FuzzOptions o = options(d, 1);
+  o.count = 100;
+  run_fuzz(o, progress);
+  const fs::path manifest = fuzz_markers_in(d).at(0).parent_path() / "manifest";
+  ASSERT_TRUE(fs::exists(manifest));
+  std::ofstream(manifest) << "fdhcert fuzz run\nmethod paper-intended\nfamily parallel-cross\n"
+                             "seed 9\ncount 100\nshard 1/1\n";
+  EXPECT_THROW(run_fuzz(o, progress), FuzzRefused);
+}
+
+TEST(Fuzz, ASecondRunOnTheSameFolderRefuses) {
+  const fs::path d = fuzz_dir("fuzz_locked");
+  fs::create_directories(d / ".fuzz");
+  const int fd = ::open((d / ".fuzz" / "lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);  // as a running fuzz run holds it
+  std::ostringstream progress;
+  FuzzOptions o = options(d, 1);
+  o.lock_wait_seconds = 0.2;
+  try {
+    run_fuzz(o, progress);
+    ADD_FAILURE() << "ran beside a run holding the lock";
+  } catch (const FuzzRefused& e) {
+    EXPECT_NE(std::string(e.what()).find("another fuzz run is using " + d.string()),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(d / "paper-intended")) << "wrote before it had the lock";
+  ::close(fd);
+  o.count = 100;
+  EXPECT_EQ(run_fuzz(o, progress).cases, 100);
+}
+
+TEST(Fuzz, CleanUpRemovesOnlyItsOwnTemporaries) {
+  const fs::path d = fuzz_dir("fuzz_cleanup");
+  const fs::path cases = d / "paper-intended" / "parallel-cross";
+  fs::create_directories(cases);
+  fs::create_directories(d / ".fuzz" / "tmp");
+  const std::vector<fs::path> users = {d / "notes.tmp.1.2", cases / "mine.vf.tmp.12.0",
+                                       d / "sub" / "x.tmp.3.4"};
+  for (const fs::path& p : users) {
+    fs::create_directories(p.parent_path());
+    std::ofstream(p) << "the user's\n";
+  }
+  std::ofstream(d / ".fuzz" / "tmp" / "123.4") << "half a case";  // a killed run's
+  std::ostringstream progress;
+  FuzzOptions o = options(d, 2);
+  o.count = 300;
+  run_fuzz(o, progress);
+  for (const fs::path& p : users) EXPECT_TRUE(fs::exists(p)) << p;
+  EXPECT_TRUE(fs::is_empty(d / ".fuzz" / "tmp"));
+}
+
+TEST(Fuzz, RefusesATemporaryFolderThatIsALink) {
+  const fs::path d = fuzz_dir("fuzz_tmp_link"), elsewhere = fuzz_dir("fuzz_tmp_elsewhere");
+  std::ofstream(elsewhere / "precious") << "the user's\n";
+  fs::create_directories(d / ".fuzz");
+  fs::create_directory_symlink(elsewhere, d / ".fuzz" / "tmp");
+  std::ostringstream progress;
+  EXPECT_THROW(run_fuzz(options(d, 1), progress), std::runtime_error);
+  EXPECT_TRUE(fs::exists(elsewhere / "precious"));
+}
+
+TEST(Fuzz, ShardBoundsDoNotOverflow) {
+  const auto exact = [](long count, int shard, int shards) {
+    return long(static_cast<unsigned __int128>(count) * unsigned(shard) / unsigned(shards));
+  };
+  for (const long count : {0L, 1L, 999L, 1L << 40, 1000000000000L, LONG_MAX})
+    for (const int shards : {1, 3, 1000000, INT_MAX})
+      for (const int shard : {0, 1, shards / 2, shards - 1, shards})
+        EXPECT_EQ(shard_begin(count, shard, shards), exact(count, shard, shards))
+            << count << " " << shard << "/" << shards;
+  EXPECT_THROW(shard_begin(-1, 0, 1), std::invalid_argument);
+  EXPECT_THROW(shard_begin(5, 2, 1), std::invalid_argument);
+  // The last shard of the largest run ends at its count.
+  EXPECT_EQ(shard_begin(1L << 40, 1000000, 1000000), 1L << 40);
 }
 
 }  // namespace

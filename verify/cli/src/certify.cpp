@@ -3,6 +3,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "fdh/io/atomic_file.hpp"
 #include "suite_commands.hpp"
 
 namespace fdh::verify {
@@ -36,6 +37,7 @@ saved in DIR as a corpus file (a .vf query, or an .obj for a tree), named in
 the output, and the exit status is 1.)";
 
 int run_certify(const CertifyOptions& opt, const Io& io) {
+  check_output_dir(opt.out_dir, {"certificate.json", "certificate.md"});
   const Certificate c = certify(opt);
   write_certificate(c);
   const std::filesystem::path dir(opt.out_dir);

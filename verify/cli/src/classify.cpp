@@ -104,6 +104,7 @@ std::size_t report_disagreements(const std::vector<Query>& queries,
 }
 
 int run_classify(const ClassifyOptions& o, const Io& io) {
+  if (!o.per_query.empty()) check_output_path(o.per_query);
   const std::vector<Method> methods = methods_named(o.methods, o.gate);
   const Inputs in = read_inputs(o);
   std::vector<FileClassification> per_file;

@@ -1,6 +1,9 @@
 // run_cli: one CLI11 app with a subcommand per command (commands.hpp explains the pattern).
 #include "fdh/cli/cli.hpp"
 
+#include <cerrno>
+#include <cstring>
+#include <new>
 #include <optional>
 #include <sstream>
 
@@ -14,7 +17,9 @@ namespace {
 const char* const kAbout = "fdhcert: exact verification of FDH (k-DOP) cloth collision detection";
 const char* const kFooter =
     "Run 'fdhcert <command> --help' for the options of a command.\n"
-    "Exit status: 0 success, 1 a check or certificate failed, 2 bad input or usage.";
+    "Exit status: 0 success, 1 a check or certificate failed, 2 bad input or usage,\n"
+    "a bound passed, or an output (standard output included) that could not be\n"
+    "written; every output path is checked before a run starts (docs/limits.md).";
 
 // fdhcert's help layout: the usage line first, then the description (as the help texts read
 // before CLI11); the command list shows the first line of each command's description.
@@ -73,9 +78,12 @@ std::string usage_message(const CLI::App& app, const CLI::ParseError& e,
                           const std::vector<std::string>& args) {
   const std::vector<CLI::App*> chosen = app.get_subcommands();
   if (chosen.empty() && !args.front().empty() && args.front()[0] != '-')
-    return "unknown command '" + args.front() + "' (see fdhcert --help)";
+    return "unknown command " + quoted_input(args.front()) + " (see fdhcert --help)";
   const std::string see = chosen.empty() ? "fdhcert" : "fdhcert " + chosen.front()->get_name();
-  return std::string(e.what()) + " (see " + see + " --help)";
+  // CLI11's words may hold the value whole: control bytes escaped, at most about 240 bytes.
+  std::string what = quoted_input(e.what(), 240);
+  what = what.substr(1, what.rfind('\'') - 1) + what.substr(what.rfind('\'') + 1);
+  return what + " (see " + see + " --help)";
 }
 
 // Parses; the help and parse errors print here. Returns the exit status if that ended the run.
@@ -97,6 +105,24 @@ std::optional<int> parse(CLI::App& app, const std::vector<std::string>& args, co
   return std::nullopt;
 }
 
+// Standard output is written in place; a write that failed (a full disk, a closed stdout) is
+// found here, when the command is done: exit 2 with the system's reason.
+int checked_output(int status, std::ostream& out, std::ostream& err) {
+  errno = 0;
+  out.flush();
+  if (out) return status;
+  const int why = errno;
+  err << "fdhcert: error: standard output: "
+      << (why ? std::strerror(why) : "cannot write (the stream failed)") << "\n";
+  return 2;
+}
+
+int run_command(const std::vector<Command>& commands, const Io& io) {
+  for (const Command& c : commands)
+    if (c.app->parsed()) return c.run(io);
+  return 2;  // unreachable: CLI11 requires one command
+}
+
 }  // namespace
 
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -113,16 +139,19 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     return 2;
   }
   try {
-    if (const std::optional<int> status = parse(app, args, io)) return *status;
-    for (const Command& c : commands)
-      if (c.app->parsed()) return c.run(io);
-    return 2;  // unreachable: CLI11 requires one command
+    if (const std::optional<int> status = parse(app, args, io))
+      return checked_output(*status, out, err);
+    return checked_output(run_command(commands, io), out, err);
   } catch (const UsageError& e) {
     err << "fdhcert: " << e.what() << "\n";
   } catch (const InputError& e) {
     err << "fdhcert: error: " << e.what() << "\n";
   } catch (const std::runtime_error& e) {  // I/O failures while writing output
     err << "fdhcert: error: " << e.what() << "\n";
+  } catch (const std::bad_alloc&) {  // an error, not an abort (docs/limits.md)
+    err << "fdhcert: error: out of memory (docs/limits.md)\n";
+  } catch (const std::length_error& e) {
+    err << "fdhcert: error: out of memory: " << e.what() << "\n";
   }
   return 2;
 }

@@ -1,9 +1,27 @@
 #include "commands.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "fdh/suite/scene_report.hpp"
+
 namespace fdh::verify {
+
+std::string quoted_input(std::string_view s, std::size_t shown) {
+  std::string out = "'";
+  for (std::size_t i = 0; i < s.size() && i < shown; ++i) {
+    const unsigned char ch = static_cast<unsigned char>(s[i]);
+    if (ch < 0x20 || ch >= 0x7f)
+      out += fmt::format("\\x{:02x}", ch);
+    else
+      out += char(ch);
+  }
+  out += "'";
+  if (s.size() > shown) out += fmt::format("... ({} bytes)", s.size());
+  return out;
+}
 
 CLI::Option* add_methods_option(CLI::App& cmd, std::vector<std::string>& names,
                                 const std::string& help) {
@@ -23,7 +41,7 @@ CLI::Validator one_of(std::vector<std::string> choices) {
         if (std::find(choices.begin(), choices.end(), s) != choices.end()) return {};
         std::string list;
         for (const std::string& c : choices) list += (list.empty() ? "" : ", ") + c;
-        return "unknown value '" + s + "' (one of " + list + ")";
+        return "unknown value " + quoted_input(s) + " (one of " + list + ")";
       },
       "");
 }
@@ -34,7 +52,7 @@ CLI::Validator kdop_k_validator(bool allow_none) {
         for (const char* k : {"6", "14", "18", "26"})
           if (s == k) return {};
         if (allow_none && s == "0") return {};
-        return "takes 6, 14, 18 or 26, not '" + s + "'";
+        return "takes 6, 14, 18 or 26, not " + quoted_input(s);
       },
       "");
 }
@@ -54,7 +72,7 @@ std::vector<Method> methods_named(const std::vector<std::string>& names, int gat
 }
 
 void print_json(std::ostream& os, const nlohmann::ordered_json& j) {
-  os << j.dump(2) << "\n";
+  os << json_text(j, "the JSON output");
 }
 
 }  // namespace fdh::verify

@@ -24,6 +24,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fdh/check/registry.hpp"
@@ -75,6 +76,16 @@ CLI::Option* add_number_option(CLI::App& cmd, const std::string& name, T& value,
                                const std::string& help, const std::string& type_name, T lo, T hi) {
   return cmd.add_option(name, value, help)->type_name(type_name)->check(CLI::Range(lo, hi));
 }
+// fuzz's bounds: --count N' <= 10^12 and --shard I/N with N <= 10^6, so that N' * N (the
+// shard arithmetic of suite/fuzz.cpp) stays below 10^18 < 2^63 - 1.
+constexpr long kMaxFuzzCount = 1'000'000'000'000L;
+constexpr long kMaxFuzzShards = 1'000'000L;
+static_assert(kMaxFuzzCount <= INT64_MAX / (kMaxFuzzShards + 1), "count * shard overflows");
+
+// `s` for a message: in quotes, at most about 80 characters (then "..." and its length),
+// control bytes and non-ASCII bytes escaped as \xNN.
+std::string quoted_input(std::string_view s, std::size_t shown = 80);
+
 // --seed S: 0 to 2^62.
 CLI::Option* add_seed_option(CLI::App& cmd, std::uint64_t& seed, const std::string& help);
 

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "fdh/gen/families.hpp"
+#include "fdh/io/atomic_file.hpp"
 #include "fdh/suite/fuzz.hpp"
 
 namespace fdh::verify {
@@ -20,10 +21,13 @@ case; distinct cases are written to DIR/M/F/<hash>.vf in the native format,
 with exact's verdict as the truth and a comment saying what M answered.)";
 
 const char* const kFuzzFooter =
-    R"(The same seed and shard always give the same cases. Progress is saved after
-every chunk of cases, in DIR/.fuzz/: a run that is killed and started again
-with the same arguments continues where it stopped, losing no case. On a
-terminal, a progress line shows cases done, rate and cases found.)";
+    R"(The same seed and shard always give the same cases. Progress is saved in
+DIR/.fuzz/ as cases are done: a run killed and started again with the same
+--method, --family, --seed, --count and --shard (any --chunk and --threads)
+continues where it stopped and ends with exactly the cases of an uninterrupted
+run. A second run on DIR while one runs, or a run with other options while DIR
+holds an unfinished run, stops with exit status 2. On a terminal, a progress
+line shows cases done, rate and cases found.)";
 
 struct FuzzCommandOptions {
   FuzzOptions run;
@@ -49,19 +53,20 @@ std::string wrapped(const std::vector<std::string>& words, std::size_t width) {
   return out + line;
 }
 
-// --shard I/N with 1 <= I <= N.
+// --shard I/N with 1 <= I <= N <= kMaxFuzzShards (digits only, so no overflow: at most 7).
 CLI::Validator shard_validator() {
   return CLI::Validator(
       [](std::string& s) -> std::string {
         const std::size_t slash = s.find('/');
         const auto digits = [](const std::string& d) {
-          return !d.empty() && d.size() < 9 && d.find_first_not_of("0123456789") == d.npos;
+          return !d.empty() && d.size() <= 7 && d.find_first_not_of("0123456789") == d.npos;
         };
         if (slash != s.npos && digits(s.substr(0, slash)) && digits(s.substr(slash + 1))) {
-          const int i = std::stoi(s.substr(0, slash)), n = std::stoi(s.substr(slash + 1));
-          if (i >= 1 && i <= n) return {};
+          const long i = std::stol(s.substr(0, slash)), n = std::stol(s.substr(slash + 1));
+          if (i >= 1 && i <= n && n <= kMaxFuzzShards) return {};
         }
-        return "takes I/N with 1 <= I <= N, not '" + s + "'";
+        return "takes I/N with 1 <= I <= N <= " + std::to_string(kMaxFuzzShards) + ", not " +
+               quoted_input(s);
       },
       "");
 }
@@ -91,6 +96,7 @@ void print_summary(const FuzzOptions& opt, const FuzzSummary& s, bool json, std:
 
 int run_fuzz_command(FuzzCommandOptions& o, const Io& io) {
   FuzzOptions& opt = o.run;
+  check_output_dir(opt.out_dir);
   if (!o.shard.empty()) {
     const std::size_t slash = o.shard.find('/');
     opt.shard = std::stoi(o.shard.substr(0, slash)) - 1;  // checked by shard_validator
@@ -125,11 +131,11 @@ Command add_fuzz(CLI::App& app) {
       ->type_name("DIR");
   add_seed_option(*cmd, opt.seed, "run seed (default 1); case i is drawn from seed (S, i)");
   cmd->add_option("--count", opt.count,
-                  "cases in the whole run, all shards together (default\n10000)")
+                  "cases in the whole run, all shards together (default\n10000; at most 10^12)")
       ->type_name("N")
-      ->check(CLI::Range(0L, 1L << 40));
+      ->check(CLI::Range(0L, kMaxFuzzCount));
   cmd->add_option("--shard", o->shard,
-                  "run only shard I of N (1 <= I <= N): cases\n"
+                  "run only shard I of N (1 <= I <= N <= 10^6): cases\n"
                   "[(I-1)N'/N, I N'/N) of the N' cases. The shards of one seed\n"
                   "together are exactly the unsharded run; merge them by\n"
                   "copying their DIRs into one (file names are content hashes)")
@@ -138,7 +144,7 @@ Command add_fuzz(CLI::App& app) {
   cmd->add_option("--threads", opt.threads, "worker processes (default: every core)")
       ->type_name("T")
       ->check(CLI::Range(1, 1024));
-  cmd->add_option("--chunk", opt.chunk, "cases per checkpoint step (default 500)")
+  cmd->add_option("--chunk", opt.chunk, "cases per checkpoint step (default 500); may differ when resuming")
       ->type_name("N")
       ->check(CLI::Range(1, 1 << 20));
   cmd->add_flag("--json", o->json, "print the summary as one JSON object");

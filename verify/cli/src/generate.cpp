@@ -1,7 +1,6 @@
 // fdhcert generate: a file of queries from one generator family, for classify and benchmarks
 // (for instance robust against float-cubic on generic moving queries).
 #include <memory>
-#include <sstream>
 
 #include "commands.hpp"
 #include "fdh/gen/families.hpp"
@@ -36,15 +35,17 @@ struct GenerateOptions {
 };
 
 int run_generate(const GenerateOptions& o, const Io& io) {
+  check_output_path(o.file);
   const Family* family = family_named(o.family);  // checked by CLI11
-  std::ostringstream os;
+  AtomicFile file(o.file);  // written as generated, published whole by commit()
+  std::ostream& os = file.stream();
   os << "# fdhcert generate " << o.family << " --count " << o.count << " --seed " << o.seed << "\n";
   for (long i = 0; i < o.count; ++i) {
     Query q = generate(*family, case_seed(o.seed, i)).query;
     q.id = o.family + "/" + std::to_string(i);
     write_native(os, q);
   }
-  write_file_atomically(o.file, os.str());
+  file.commit();
   io.out << "wrote " << o.count << " " << o.family << " queries to " << o.file << "\n";
   return 0;
 }

@@ -3,6 +3,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "fdh/io/atomic_file.hpp"
 #include "fdh/suite/report_document.hpp"
 #include "suite_commands.hpp"
 
@@ -34,6 +35,7 @@ samples (a quick certificate, 100 queries per family and point): for a first
 look, not for the committed report.)";
 
 int run_report(const CertifyOptions& opt, const Io& io) {
+  check_output_dir(opt.out_dir, report_outputs());
   const Report report = make_report(
       opt, [&](std::string_view step) { io.out << "report: " << step << " ..." << std::endl; });
   io.out << "report: charts ..." << std::endl;

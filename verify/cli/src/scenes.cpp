@@ -3,6 +3,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "fdh/io/atomic_file.hpp"
 #include "fdh/suite/scene_report.hpp"
 #include "suite_commands.hpp"
 
@@ -26,6 +27,7 @@ struct ScenesOptions {
 };
 
 int run_scenes(const ScenesOptions& o, const Io& io) {
+  check_output_dir(o.out_dir);  // and each scene's outputs, in run_scene_folder, before any run
   const auto runs = run_scene_folder(o.scenes, o.out_dir, [&](const SceneFolderRun& r) {
     io.out << scene_summary_line(r) << std::endl;
   });

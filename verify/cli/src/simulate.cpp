@@ -57,6 +57,7 @@ cloth::Scene read_scene_as_asked(const SimulateOptions& o) {
   std::string why;
   if (!o.thickness.empty()) scene.thickness = *parse_double(o.thickness, why);  // checked
   if (!o.self.empty()) scene.self_collision = o.self == "on";
+  if (o.grid || !o.thickness.empty()) check_scene(scene, o.scene_path);  // the overrides too
   return scene;
 }
 
@@ -155,7 +156,15 @@ void print_counts(std::ostream& out, const SimulateOptions& o, const cloth::Scen
   if (!o.obj_dir.empty()) out << "frames         " << o.obj_dir << "/frame_*.obj\n";
 }
 
+// Every output checked before the scene is read or run: one bad path writes nothing.
+void check_outputs(const SimulateOptions& o) {
+  if (!o.png.empty()) check_output_path(o.png);
+  if (!o.record.empty()) check_output_path(o.record);
+  if (!o.obj_dir.empty()) check_output_dir(o.obj_dir);
+}
+
 int run_simulate(SimulateOptions& o, const Io& io) {
+  check_outputs(o);
   o.run.check = !o.no_check;
   const cloth::Scene scene = read_scene_as_asked(o);
   Outputs outputs(o, scene);
@@ -179,7 +188,7 @@ CLI::Validator length_validator() {
       [](std::string& s) -> std::string {
         std::string why;
         const std::optional<double> t = parse_double(s, why);
-        return t && *t >= 0 ? "" : "takes a length >= 0 in m, not '" + s + "'";
+        return t && *t >= 0 ? "" : "takes a length >= 0 in m, not " + quoted_input(s);
       },
       "");
 }

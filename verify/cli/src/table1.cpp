@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "fdh/io/atomic_file.hpp"
 #include "fdh/io/scene_file.hpp"
 #include "fdh/suite/table1.hpp"
 #include "suite_commands.hpp"
@@ -43,6 +44,7 @@ struct Table1Options {
 };
 
 int run_table1(const Table1Options& o, const Io& io) {
+  if (!o.out_dir.empty()) check_output_dir(o.out_dir, table1_outputs());
   const cloth::Scene scene = read_scene(o.scene);
   const bool progress = !o.json && &io.err == &std::cerr && ::isatty(STDERR_FILENO);
   const Table1 t = measure_table1(scene, o.scene, o.frames, [&](const Table1Cell& c) {

@@ -39,11 +39,18 @@ std::string case_file_text(const Query& q, const std::vector<std::string>& comme
 std::vector<std::string> list_query_files(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (fs::is_regular_file(path, ec)) return {path};
-  if (!fs::is_directory(path, ec)) throw InputError(path, 0, "no such file or folder");
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st)) throw InputError(path, 0, "no such file or folder");
+  // A file, a FIFO or a device: the reader takes it or refuses it (InputFile).
+  if (!fs::is_directory(st)) return {path};
   std::vector<std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(path))
-    if (e.is_regular_file() && e.path().extension() == ".vf") files.push_back(e.path().string());
+  fs::recursive_directory_iterator it(path, ec), end;
+  for (; !ec && it != end; it.increment(ec)) {
+    std::error_code entry;  // a broken link is no query file, and no reason to stop
+    if (it->is_regular_file(entry) && it->path().extension() == ".vf")
+      files.push_back(it->path().string());
+  }
+  if (ec) throw InputError(path, 0, "cannot list the folder: " + ec.message());
   std::sort(files.begin(), files.end());
   return files;
 }

@@ -1,19 +1,23 @@
 #include "fdh/io/charts.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
-extern char** environ;
+#include "fdh/io/atomic_file.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -54,27 +58,69 @@ class ScriptFile {
   std::string path_;
 };
 
-// gnuplot SCRIPT, its standard output sent to standard error; throws unless it exits with 0.
-void run_gnuplot(const std::string& script, const std::string& what) {
+// The folder of a chart and its file name.
+std::pair<std::string, std::string> split_stem(const std::string& stem) {
+  const fs::path p(stem);
+  const std::string dir = p.parent_path().empty() ? "." : p.parent_path().string();
+  return {dir, p.filename().string()};
+}
+
+// Runs gnuplot SCRIPT in folder DIR (so that the folder's name never enters a script), its
+// standard output sent to standard error. The child is an argument list (fork and execvp, no
+// shell) and is killed when fdhcert dies (PR_SET_PDEATHSIG). Throws unless it exits with 0.
+void run_gnuplot(const std::string& script, const std::string& dir, const std::string& what) {
   const ScriptFile file(script);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, STDERR_FILENO, STDOUT_FILENO);
-  std::string prog = "gnuplot", arg = file.path();
+  std::string prog = "gnuplot", arg = fs::absolute(file.path()).string();
   char* argv[] = {prog.data(), arg.data(), nullptr};
-  pid_t pid = 0;
-  const int rc = ::posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (rc != 0)
-    throw std::runtime_error(
-        fmt::format("cannot run gnuplot ({}; Debian package gnuplot-nox)", std::strerror(rc)));
+  int report[2];  // the child's errno if it cannot start gnuplot; closed by a successful exec
+  if (::pipe2(report, O_CLOEXEC) != 0)
+    throw std::runtime_error(std::string("cannot run gnuplot: ") + std::strerror(errno));
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    const int why = errno;
+    ::close(report[0]), ::close(report[1]);
+    throw std::runtime_error(std::string("cannot run gnuplot: ") + std::strerror(why));
+  }
+  if (pid == 0) {  // the child: async-signal-safe calls only
+    ::close(report[0]);
+    int why = 0;
+    if (::prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || ::getppid() != parent)
+      why = ::getppid() != parent ? ESRCH : errno;
+    else if (::dup2(STDERR_FILENO, STDOUT_FILENO) < 0 || ::chdir(dir.c_str()) != 0)
+      why = errno;
+    else
+      ::execvp(argv[0], argv), why = errno;
+    [[maybe_unused]] const ssize_t n = ::write(report[1], &why, sizeof why);
+    ::_exit(127);
+  }
+  ::close(report[1]);
+  int why = 0;
+  ssize_t got;
+  while ((got = ::read(report[0], &why, sizeof why)) < 0 && errno == EINTR) {
+  }
+  ::close(report[0]);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0)
     if (errno != EINTR) throw std::runtime_error("lost the gnuplot process");
+  if (got == sizeof why)
+    throw std::runtime_error(fmt::format(
+        "cannot run gnuplot in {} ({}; Debian package gnuplot-nox)", dir, std::strerror(why)));
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw std::runtime_error(
         fmt::format("gnuplot failed drawing {} (is Debian's gnuplot-nox installed?)", what));
 }
+
+// The temporary files gnuplot draws into, beside the chart; removed unless renamed into place.
+struct ChartTemps {
+  std::vector<std::pair<std::string, std::string>> files;  // (temporary, final), in the folder
+  ~ChartTemps() {
+    for (const auto& f : files) {
+      std::error_code ec;
+      fs::remove(f.first, ec);
+    }
+  }
+};
 
 }  // namespace
 
@@ -90,15 +136,32 @@ std::string gnuplot_quote(std::string_view s) {
 }
 
 void draw_chart(const Chart& chart) {
+  const auto [dir, name] = split_stem(chart.stem);
+  static std::atomic<unsigned long> serial{0};
+  const std::string tag = fmt::format(".tmp.{}.{}", ::getpid(), serial++);
+  ChartTemps temps;
   std::string script;
   for (const auto& [terminal, extension] :
-       {std::pair<const char*, const char*>{"pngcairo", "png"}, {"svg dynamic", "svg"}})
+       {std::pair<const char*, const char*>{"pngcairo", "png"}, {"svg dynamic", "svg"}}) {
+    const std::string final_name = name + "." + extension, temp_name = final_name + tag;
+    check_output_path((fs::path(dir) / final_name).string());
+    temps.files.emplace_back((fs::path(dir) / temp_name).string(),
+                             (fs::path(dir) / final_name).string());
     script += fmt::format(
         "reset\nset datafile separator ','\nset grid\nset terminal {} size {},{}\n"
         "set output {}\n{}\nunset output\n",
-        terminal, chart.width, chart.height, gnuplot_quote(chart.stem + "." + extension),
-        chart.commands);
-  run_gnuplot(script, chart.stem);
+        terminal, chart.width, chart.height, gnuplot_quote(temp_name), chart.commands);
+  }
+  run_gnuplot(script, dir, name);
+  for (auto& [temp, final_path] : temps.files) {
+    check_output_path(final_path);
+    std::error_code ec;
+    if (!fs::is_regular_file(temp, ec) || fs::file_size(temp, ec) == 0)
+      throw std::runtime_error(final_path + ": gnuplot wrote no chart");
+    if (std::rename(temp.c_str(), final_path.c_str()) != 0)
+      throw std::runtime_error(final_path + ": cannot write file: " + std::strerror(errno));
+    temp.clear();
+  }
 }
 
 }  // namespace fdh::verify

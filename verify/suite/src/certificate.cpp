@@ -7,6 +7,7 @@
 
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/suite/certify.hpp"
+#include "fdh/suite/scene_report.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -150,7 +151,7 @@ std::string certificate_json(const Certificate& c) {
       {"promises", promises_json(c)},
       {"exact_equals_stored_truth", {{"queries", c.truths}, {"violations", c.truth_violations}}},
       {"first_violation", c.first_violation}};
-  return j.dump(2) + "\n";
+  return json_text(j, "certificate.json");
 }
 
 std::string certificate_markdown(const Certificate& c) {

@@ -39,7 +39,7 @@ std::string per_method(const std::string& data, const std::vector<std::string>& 
 }
 
 Chart speed_chart(const fs::path& dir, const Measurements& m) {
-  const std::string data = (dir / "data/speed_accuracy.csv").string();
+  const std::string data = "data/speed_accuracy.csv";  // gnuplot runs in the folder
   const std::vector<std::string> methods = drawing_order(m.speed);
   const auto panel = [&](const std::string& y) {
     return per_method(data, methods, "strcol(1)", "$4", y, "points pt 7 ps 1.2");
@@ -55,12 +55,11 @@ Chart speed_chart(const fs::path& dir, const Measurements& m) {
                       "set ylabel 'error rate (FP + FN) and the Pareto front'\nplot {}, \\\n"
                       "     {} skip 1 using 3:4 with steps lw 2 lc rgb 'black' title 'Pareto "
                       "front'\nunset multiplot",
-                      panel("6"), panel("5"), panel("($5+$6)"),
-                      gnuplot_quote((dir / "data/pareto.csv").string()))};
+                      panel("6"), panel("5"), panel("($5+$6)"), gnuplot_quote("data/pareto.csv"))};
 }
 
 Chart stability_chart(const fs::path& dir, const Measurements& m) {
-  const std::string data = (dir / "data/stability.csv").string();
+  const std::string data = "data/stability.csv";
   const std::vector<std::string> methods = drawing_order(m.stability);
   std::set<std::string> measured;
   for (const StabilityRow& r : m.stability) measured.insert(r.sweep);
@@ -99,7 +98,7 @@ Chart kdop_chart(const fs::path& dir, const Measurements& m) {
                       "     '' skip 1 using 8:5:(sprintf('%d', $1)) with labels offset 0,1 "
                       "notitle",
                       fmt::join(ks, ", "), fmt::join(grids, ", "),
-                      gnuplot_quote((dir / "data/kdop_tree.csv").string()))};
+                      gnuplot_quote("data/kdop_tree.csv"))};
 }
 
 }  // namespace

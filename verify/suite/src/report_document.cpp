@@ -155,9 +155,18 @@ std::string report_markdown(const Report& report) {
   return fmt::to_string(out);
 }
 
+std::vector<std::string> report_outputs() {
+  return {"certificate.json",   "certificate.md",     "data/speed_accuracy.csv",
+          "data/pareto.csv",    "data/stability.csv", "data/kdop_tree.csv",
+          "speed_accuracy.png", "speed_accuracy.svg", "stability.png",
+          "stability.svg",      "kdop_k.png",         "kdop_k.svg",
+          "report.md"};
+}
+
 void write_report(const Report& report) {
   const fs::path dir(report.certificate.options.out_dir);
   const Measurements& m = report.measurements;
+  check_output_dir(dir.string(), report_outputs());
   fs::create_directories(dir / "data");
   write_certificate(report.certificate);
   write_file_atomically((dir / "data/speed_accuracy.csv").string(), speed_accuracy_csv(m.speed));

@@ -4,7 +4,10 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <optional>
+#include <stdexcept>
 
 #include "fdh/cloth/cloth.hpp"
 #include "fdh/io/atomic_file.hpp"
@@ -22,6 +25,22 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
+// The JSON pointer of the first non-finite number in j, if any.
+std::optional<std::string> non_finite_at(const json& j, const std::string& at) {
+  if (j.is_number_float()) {
+    if (std::isfinite(j.get<double>())) return std::nullopt;
+    return at.empty() ? "/" : at;
+  }
+  if (j.is_object()) {
+    for (const auto& [key, value] : j.items())
+      if (auto p = non_finite_at(value, at + "/" + key)) return p;
+  } else if (j.is_array()) {
+    for (std::size_t i = 0; i < j.size(); ++i)
+      if (auto p = non_finite_at(j[i], at + "/" + std::to_string(i))) return p;
+  }
+  return std::nullopt;
+}
+
 // Times and energies to six significant digits, as simulate has always printed them.
 json times_json(const SceneRun& r) {
   const double per = r.frames ? 1e3 / r.frames : 0;  // s summed -> ms per frame
@@ -38,6 +57,15 @@ json counted(bool yes, long n) {
 }
 
 }  // namespace
+
+std::string json_text(const json& j, const std::string& what) {
+  if (const std::optional<std::string> at = non_finite_at(j, ""))
+    throw std::runtime_error(what +
+                             ": refusing to write a non-finite number (NaN or infinity) "
+                             "into JSON at " +
+                             *at + "; the run's values left the finite range");
+  return j.dump(2) + "\n";
+}
 
 json scene_run_json(const cloth::Scene& scene, const SceneRunOptions& opt, const SceneRun& r) {
   return {{"scene", scene.name},
@@ -87,6 +115,12 @@ std::vector<SceneFolderRun> run_scene_folder(
     const std::string& scene_dir, const std::string& out_dir,
     const std::function<void(const SceneFolderRun&)>& done) {
   const std::vector<std::string> files = scene_files(scene_dir);
+  std::vector<std::string> outputs;
+  for (const std::string& file : files) {
+    const std::string stem = fs::path(file).stem().string();
+    outputs.insert(outputs.end(), {stem + ".png", stem + ".json"});
+  }
+  check_output_dir(out_dir, outputs);  // before any scene runs
   fs::create_directories(out_dir);
   std::vector<SceneFolderRun> runs;
   for (const std::string& file : files) {
@@ -98,7 +132,7 @@ std::vector<SceneFolderRun> run_scene_folder(
     r.png = stem.string() + ".png";
     r.json = stem.string() + ".json";
     write_scene_png(r.png, r.scene, r.run);
-    write_file_atomically(r.json, scene_run_json(r.scene, r.options, r.run).dump(2) + "\n");
+    write_file_atomically(r.json, json_text(scene_run_json(r.scene, r.options, r.run), r.json));
     if (done) done(r);
     runs.push_back(std::move(r));
   }

@@ -61,10 +61,13 @@ void accuracy_block(Out to, const Table1& t) {
   for (const Table1Cell& c : t.cells) {
     const double paper = c.paper_ms();
     const SceneRun& r = c.run;
-    fmt::format_to(to, "{:<16}{:<4}{:<7}{:>9.4f}{:>8}{:>10}{:>7}{:>7}{:>8}{:>10}{:>19.2f}\n",
-                   c.method, c.k, grid_name(c.grid), r.ms_per_frame(),
+    fmt::format_to(to, "{:<16}{:<4}{:<7}{:>9.4f}{:>8}{:>10}{:>7}{:>7}{:>8}{:>10}{:>19}\n", c.method,
+                   c.k, grid_name(c.grid), r.ms_per_frame(),
                    paper < 0 ? std::string("-") : fmt::format("{:.2f}", paper), r.candidates, r.fp,
-                   r.fn, r.audit.inside, r.audit.crossing, r.time.collision() / r.time.springs);
+                   r.fn, r.audit.inside, r.audit.crossing,
+                   r.time.springs > 0  // a ratio only where it is finite
+                       ? fmt::format("{:.2f}", r.time.collision() / r.time.springs)
+                       : std::string("-"));
   }
 }
 
@@ -171,8 +174,13 @@ std::string table1_csv(const Table1& t) {
   return fmt::to_string(out);
 }
 
+std::vector<std::string> table1_outputs() {
+  return {"table1.md", "data/table1.csv", "table1.png", "table1.svg"};
+}
+
 void write_table1(const Table1& t, const std::string& dir) {
   const fs::path d(dir);
+  check_output_dir(dir, table1_outputs());
   fs::create_directories(d / "data");
   const std::string data = (d / "data" / "table1.csv").string();
   write_file_atomically(data, table1_csv(t));
@@ -181,7 +189,7 @@ void write_table1(const Table1& t, const std::string& dir) {
       fmt::format("# Table 1, measured\n\nWritten by `fdhcert table1 --out {}`.\n\n"
                   "![ms per frame against particles](table1.svg)\n\n```\n{}```\n",
                   dir, table1_text(t)));
-  draw_chart({(d / "table1").string(), 900, 600, chart_commands(data)});
+  draw_chart({(d / "table1").string(), 900, 600, chart_commands("data/table1.csv")});
 }
 
 }  // namespace fdh::verify

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <stdexcept>
 #include <vector>
 
 #include "fdh/bvh.hpp"
@@ -27,6 +28,22 @@ struct ClothSpec {
   Vec3 wind = {0, 0, 0};                    // air velocity, m/s: the damping pulls v towards it
   std::vector<std::array<double, 2>> pins;  // (u, v) in [0,1]²: the nearest particle is fixed
 };
+
+// Cloth::stable_dt() of the cloth `spec` makes, without building it (the grid's pattern of
+// springs gives each particle's Σ_j k_ij); for checking a scene before a run.
+double stable_dt(const ClothSpec& spec);
+
+// A run whose positions or velocities left the finite range (kMaxMagnitude): thrown by
+// Simulation::step() so that no inf or nan reaches an output. A std::runtime_error, so the CLI
+// reports it with exit status 2.
+class Diverged : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// |coordinate| of a position (m) or velocity (m/s) past which a run has diverged. A run within
+// the scene ranges of docs/limits.md stays far below it, and every energy stays finite.
+inline constexpr double kMaxMagnitude = 1e30;
 
 struct Spring {
   int i, j;

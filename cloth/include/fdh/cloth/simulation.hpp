@@ -48,6 +48,8 @@ class Simulation {
              CcdTest self_exact = nullptr);
   ~Simulation();
 
+  // Throws Diverged (naming the frame and the particle) when a position or a velocity is no
+  // longer finite or passes kMaxMagnitude.
   void step();
 
   const Scene& scene() const { return scene_; }
@@ -85,6 +87,7 @@ class Simulation {
   std::vector<std::pair<int, int>> pairs_;
   std::vector<NarrowQuery> queries_;
   int collisions_ = 0;
+  long frame_ = 0;
   FrameTimes times_;
 };
 

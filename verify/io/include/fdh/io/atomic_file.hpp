@@ -1,34 +1,52 @@
 // Files are written whole: a temporary file beside the target, then a rename. A reader (or a
-// crash) never sees half a file.
+// crash) never sees half a file. Only regular files are ever replaced: an existing device,
+// FIFO, socket or folder at an output path is refused, never renamed over.
 #pragma once
 
+#include <memory>
+#include <ostream>
 #include <string>
+#include <vector>
 
 namespace fdh::verify {
 
-// Throws std::runtime_error naming the path when the file cannot be written.
+// Throws std::runtime_error naming the path and the system's reason when the file cannot be
+// written, or when the path exists and is not a regular file. Leaves no temporary file.
 void write_file_atomically(const std::string& path, const std::string& content);
 
-}  // namespace fdh::verify
+// Checks, before a run writes anything, that `path` can take an output file: it is absent or a
+// regular file (a symbolic link is judged by its target), and its folder exists and is
+// writable, or, with `folder_made_by_run`, the folder is absent (the run creates it) under a
+// writable folder. Throws std::runtime_error naming the path and what is wrong.
+void check_output_path(const std::string& path, bool folder_made_by_run = false);
 
-#include <fstream>
+// Checks that `dir` can take a run's outputs: it is a writable folder, or it is absent and can
+// be created (the nearest existing ancestor is a writable folder). `files` are checked as with
+// check_output_path inside it (they may name subfolders, such as "data/a.csv").
+void check_output_dir(const std::string& dir, const std::vector<std::string>& files = {});
 
-namespace fdh::verify {
+// "Out of memory" style text for an errno value.
+std::string system_reason(int errno_value);
 
 // A file written piece by piece but published whole: stream() writes to a temporary file
 // beside `path`; commit() renames it into place. Destroyed uncommitted, it leaves nothing.
+// Every write is checked; commit() throws std::runtime_error with the path and the system's
+// reason when any write, the flush or the close failed.
 class AtomicFile {
  public:
   explicit AtomicFile(std::string path);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
-  std::ofstream& stream() { return out_; }
-  void commit();  // throws std::runtime_error naming the path
+  std::ostream& stream();
+  void commit();
+
+  class Buffer;  // a std::streambuf over the temporary file's descriptor
 
  private:
   std::string path_, tmp_;
-  std::ofstream out_;
+  std::unique_ptr<Buffer> buf_;
+  std::unique_ptr<std::ostream> out_;
   bool committed_ = false;
 };
 

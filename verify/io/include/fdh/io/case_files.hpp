@@ -16,7 +16,8 @@ std::string case_hash(const Query& q);
 std::string case_file_text(const Query& q, const std::vector<std::string>& comments);
 
 // The query files under `path`: the file itself, or every *.vf below a folder, sorted.
-// Throws InputError for a path that does not exist.
+// Anything else (a FIFO, a device) is returned as given, for the reader to take or refuse.
+// Throws InputError for a path that does not exist or a folder that cannot be listed.
 std::vector<std::string> list_query_files(const std::string& path);
 
 }  // namespace fdh::verify

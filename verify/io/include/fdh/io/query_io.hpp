@@ -1,6 +1,8 @@
-// Query files: the native text format and the CCD benchmark's CSV (docs/formats.md).
+// Query files: the native text format and the CCD benchmark's CSV (docs/formats.md), read within
+// the bounds of docs/limits.md.
 #pragma once
 
+#include <cstdio>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -10,6 +12,30 @@
 
 namespace fdh::verify {
 
+// A text input read line by line within the bounds of docs/limits.md: the file's size
+// (FDH_MAX_FILE_BYTES) and each line's length (FDH_MAX_LINE_BYTES). A folder is refused; a
+// FIFO or a character device is read as a stream, the same bounds counting as it goes (so
+// /dev/zero stops at its first line's bound). Throws InputError.
+class InputFile {
+ public:
+  explicit InputFile(const std::string& path);
+  ~InputFile();
+  InputFile(const InputFile&) = delete;
+  InputFile& operator=(const InputFile&) = delete;
+
+  // The next line without its '\n' and a final '\r'; false at the end of the file.
+  bool next(std::string& line);
+  // The number of the line last read (1-based).
+  long line() const { return line_; }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::FILE* f_ = nullptr;
+  long line_ = 0;
+  long long bytes_ = 0, max_line_ = 0, max_bytes_ = 0;
+};
+
 // Native: `vf|ee <id> <24 numbers> [truth]` per line, `#` comments. Throws InputError.
 std::vector<Query> read_native(const std::string& path);
 
@@ -17,8 +43,13 @@ std::vector<Query> read_native(const std::string& path);
 // double. Throws InputError.
 std::vector<Query> read_benchmark_csv(const std::string& path, QueryKind kind);
 
-// By extension: .csv is the benchmark format, anything else native. A CSV's kind is `kind` if
-// given, else taken from a `vertex-face` or `edge-edge` folder in its path.
+// The kind a CSV's folder gives it: its parent folder named exactly `vertex-face` or
+// `edge-edge`, else none.
+std::optional<QueryKind> kind_from_folder(const std::string& path);
+
+// By extension: .csv is the benchmark format, anything else native. A CSV's kind comes from its
+// folder (kind_from_folder), else from `kind`; a folder and a `kind` that disagree, or neither,
+// is an InputError.
 std::vector<Query> read_query_file(const std::string& path,
                                    std::optional<QueryKind> kind = std::nullopt);
 
@@ -26,7 +57,7 @@ std::vector<Query> read_query_file(const std::string& path,
 void write_native(std::ostream& os, const Query& q);
 
 // Parses one number of the native format: decimal (correctly rounded) or hex-float, finite.
-// Returns nullopt and sets `why` when it is not one.
+// Returns nullopt and sets `why` (the token quoted, see quote()) when it is not one.
 std::optional<double> parse_double(const std::string& token, std::string& why);
 
 }  // namespace fdh::verify

@@ -6,11 +6,28 @@
 // cases are written (each whole, by rename) before the chunk's done-marker is, so a run killed
 // at any moment and restarted loses no case and repeats at most the unfinished chunks.
 // Workers are processes, not threads: RapidCheck's generators keep global state.
+//
+// What a run keeps in OUT/.fuzz/ (fdhcert's own folder; nothing else in OUT is touched but the
+// case files):
+//   lock            held (flock) for the whole run by the run and its workers: a second run on
+//                   the same OUT waits briefly for a killed run's workers to die, then refuses.
+//   tmp/            every temporary file of every run, and nothing else. A case file or marker
+//                   is written there, synced, then renamed into place; a run starts by emptying
+//                   tmp/ (under the lock, so no live run owns anything in it). A user's files,
+//                   whatever their names, are never removed.
+//   RUN/manifest    RUN is method.family.seedS.countN.shardIofS; the manifest records those
+//                   parameters and is written before any case.
+//   RUN/cases-B-E   done-marker of cases [B, E): `<disagreements> <case file>...`. Markers name
+//                   case ranges, not chunk numbers, so a run resumed with any --chunk or
+//                   --threads runs exactly the cases no marker covers.
+// A run refuses to start while OUT holds an unfinished run with other parameters (method,
+// family, seed, count, shard): resuming it with those would not end with its cases.
 #pragma once
 
 #include <cstdint>
 #include <ostream>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 namespace fdh::verify {
@@ -26,6 +43,9 @@ struct FuzzOptions {
   int chunk = 500;  // cases per checkpoint step
   std::string out_dir;
   bool progress = false;  // a live progress line on `progress_stream`
+  // How long to wait for OUT's lock before refusing: a killed run's workers die within
+  // moments of it, and hold the lock until they have.
+  double lock_wait_seconds = 3;
 };
 
 struct FuzzSummary {
@@ -36,11 +56,21 @@ struct FuzzSummary {
   std::set<std::string> distinct;  // file paths of the distinct shrunk cases
 };
 
-// Throws std::invalid_argument for an unknown method or family, std::runtime_error for I/O
-// failures.
+// The run cannot start on this OUT: another run holds it, or OUT holds an unfinished run with
+// other parameters. The message says which and what to do (fdhcert: exit status 2).
+struct FuzzRefused : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Throws std::invalid_argument for an unknown method or family or an impossible count or
+// shard, FuzzRefused as above, std::runtime_error for I/O failures (naming the path).
 FuzzSummary run_fuzz(const FuzzOptions& opt, std::ostream& progress_stream);
 
 // The seed of case i of a run: splitmix64 of (seed, i).
 std::uint64_t case_seed(std::uint64_t seed, long i);
+
+// The first case of shard `shard` (0-based) of `shards` over `count` cases: count·shard/shards,
+// without overflow for any count >= 0 and 0 <= shard <= shards.
+long shard_begin(long count, int shard, int shards);
 
 }  // namespace fdh::verify

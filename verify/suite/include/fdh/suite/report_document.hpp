@@ -38,6 +38,9 @@ Report make_report(const CertifyOptions& options, const Progress& progress = {})
 // std::runtime_error when a file cannot be written or gnuplot fails.
 void write_report(const Report& report);
 
+// The files write_report writes, relative to its folder: for check_output_dir before the run.
+std::vector<std::string> report_outputs();
+
 std::string report_markdown(const Report& report);
 
 // The charts from the data files in <dir>/data (written by write_report).

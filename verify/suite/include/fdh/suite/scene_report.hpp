@@ -44,6 +44,11 @@ std::vector<SceneFolderRun> run_scene_folder(
 // audit (inside, crossing, self-crossing).
 std::string scene_summary_line(const SceneFolderRun& r);
 
+// j as text (two-space indented, then a newline), the one way every JSON output is written.
+// JSON has no NaN or infinity (nlohmann would write null silently): a non-finite number
+// anywhere in j throws std::runtime_error naming its place (a JSON pointer) and `what`.
+std::string json_text(const nlohmann::ordered_json& j, const std::string& what);
+
 // v to six significant digits: the precision of every time and energy in the JSON outputs.
 double six_digits(double v);
 

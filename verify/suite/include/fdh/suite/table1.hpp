@@ -54,4 +54,7 @@ std::string table1_csv(const Table1& t);
 // std::runtime_error when a file cannot be written or gnuplot fails.
 void write_table1(const Table1& t, const std::string& dir);
 
+// The files write_table1 writes, relative to its folder: for check_output_dir before the run.
+std::vector<std::string> table1_outputs();
+
 }  // namespace fdh::verify
