@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "fdh/cli/cli.hpp"
+#include "fdh/suite/build_info.hpp"
 
 #include "temp_dir.hpp"
 
@@ -85,6 +86,21 @@ TEST(Certify, AWrongTruthOnAMovingQueryIsAViolation) {
   EXPECT_EQ(c.truth_violations, 1);
   EXPECT_EQ(moving(c, &PromiseCheck::violations), 0);
   EXPECT_NE(c.first_violation.find("rising.vf:1"), std::string::npos) << c.first_violation;
+}
+
+// The certificate names the commit the binary was built from, wherever it runs: here from a
+// folder that is no git checkout at all.
+TEST(Certify, RecordsTheCommitOfTheBuildNotOfTheWorkingDirectory) {
+  const fs::path away = fresh_temp_dir("certify_elsewhere"), out = away / "out";
+  const fs::path here = fs::current_path();
+  fs::current_path(away);
+  CertifyOptions o = small(FDH_SOURCE_DIR "/corpus", out);
+  o.per_family = 1;
+  o.soups = 1;
+  o.scene_frames = 1;
+  const Certificate c = certify(o);
+  fs::current_path(here);
+  EXPECT_EQ(c.commit, build_commit());
 }
 
 }  // namespace

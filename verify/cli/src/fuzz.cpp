@@ -144,7 +144,8 @@ Command add_fuzz(CLI::App& app) {
   cmd->add_option("--threads", opt.threads, "worker processes (default: every core)")
       ->type_name("T")
       ->check(CLI::Range(1, 1024));
-  cmd->add_option("--chunk", opt.chunk, "cases per checkpoint step (default 500); may differ when resuming")
+  cmd->add_option("--chunk", opt.chunk,
+                  "cases per checkpoint step (default 500); may differ when resuming")
       ->type_name("N")
       ->check(CLI::Range(1, 1 << 20));
   cmd->add_flag("--json", o->json, "print the summary as one JSON object");
