@@ -82,6 +82,8 @@ class EnvGuard {
 
 using Args = std::vector<std::string>;
 
+// The catalogue itself: one row per class of bad input. A table, so longer than a function
+// should be; each row is read alone.
 const std::vector<Row>& rows() {
   static const std::vector<Row> r = {
       // Files that are not there, or not files.

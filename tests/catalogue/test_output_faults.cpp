@@ -139,6 +139,8 @@ OutFaultChild out_fault_cmd(const fs::path& dir, std::vector<std::string> args) 
   return c;
 }
 
+// The catalogue itself: one row per output fault. A table, so longer than a function should be;
+// each row is read alone.
 std::vector<OutFaultRow> out_fault_catalogue() {
   const std::string vf = kData + "static.vf";
   const std::vector<std::string> fuzz = {"fuzz",     "--method", "robust",
