@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "fdh/cli/cli.hpp"
@@ -43,13 +44,38 @@ TEST(Measurements, TheParetoFrontRunsFastestFirstWithFallingError) {
   EXPECT_EQ(front[1].method, "a");
   EXPECT_EQ(front[2].method, "c");
   EXPECT_EQ(pareto_csv(front),
-            "method,family,ns_per_query,error_rate\nb,f,1,0.6\na,f,5,0.5\nc,f,9,0\n");
+            "method,family,ns_per_query,error_rate,kind\nb,f,1,0.6,static\na,f,5,0.5,static\n"
+            "c,f,9,0,static\n");
+}
+
+TEST(Measurements, EachKindOfFamilyHasAParetoFrontOfItsOwn) {
+  std::vector<SpeedAccuracyRow> rows = {{"a", "f", 10, 5, 0.25, 0.25},
+                                        {"b", "f", 10, 1, 0.3, 0.3},
+                                        {"c", "g", 10, 900, 0, 0},
+                                        {"d", "g", 10, 50, 0.1, 0}};
+  rows[2].kind = rows[3].kind = "moving";
+  const auto fronts = pareto_fronts(rows);
+  ASSERT_EQ(fronts.size(), 4u);  // one front over both would drop c (slower than a, b and d)
+  EXPECT_EQ(fronts[0].method, "b");
+  EXPECT_EQ(fronts[1].method, "a");
+  EXPECT_EQ(fronts[2].method, "d");
+  EXPECT_EQ(fronts[3].method, "c");
+}
+
+TEST(Measurements, SpeedAccuracyMeasuresTheMovingFamiliesForTheMethodsThatDecideThem) {
+  std::set<std::string> moving;
+  for (const SpeedAccuracyRow& r : speed_accuracy(2, 1))
+    if (r.kind == "moving") moving.insert(r.method);
+  for (const Method& m : all_methods())
+    EXPECT_EQ(moving.count(m.name), m.test[std::size_t(Decision::VertexFaceCcd)] ? 1u : 0u)
+        << m.name;
 }
 
 TEST(Measurements, DataFilesHaveAHeaderAndOneLinePerRow) {
   const std::vector<SpeedAccuracyRow> speed = {{"robust", "angled", 100, 12.5, 0, 0.25}};
   EXPECT_EQ(speed_accuracy_csv(speed),
-            "method,family,queries,ns_per_query,fp_rate,fn_rate\nrobust,angled,100,12.5,0,0.25\n");
+            "method,family,queries,ns_per_query,fp_rate,fn_rate,kind\n"
+            "robust,angled,100,12.5,0,0.25,static\n");
   const std::vector<StabilityRow> stab = {{"edge", 3, "linear-system", 0.125}};
   EXPECT_EQ(stability_csv(stab),
             "sweep,parameter,method,failure_rate\nedge,3,linear-system,0.125\n");
@@ -72,10 +98,10 @@ TEST(Measurements, StabilityMeasuresEveryMethodButTheTwin) {
     EXPECT_GE(r.failure_rate, 0);
     EXPECT_LE(r.failure_rate, 1);
   }
-  const auto sweeps = stability_sweeps();
-  EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [&](const StabilityRow& r) {
-    return r.sweep == sweeps.back().name && r.parameter == sweeps.back().last;
-  }));
+  for (const StabilitySweep& sw : stability_sweeps())
+    EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [&](const StabilityRow& r) {
+      return r.sweep == sw.name && r.parameter == sw.last;
+    })) << sw.name;
 }
 
 Certificate two_promises() {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <iterator>
 #include <random>
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "fdh/check/checker.hpp"
@@ -65,42 +67,116 @@ Query through(Sampler& s, const Tri3& t, const Vec3& x) {
   return make(t, x + dir, x - s.uniform(0.2, 1) * dir);
 }
 
-Query sample(const std::string& sweep, int p, Sampler& s) {
+Query angle_query(int p, Sampler& s) {
+  const Tri3 t = triangle(s);
+  const Vec3 x = t.at(s.uniform(-0.25, 1.25), s.uniform(-0.25, 1.25));
+  const Vec3 along = unit(t.e - t.d);
   const double tiny = std::ldexp(1.0, -p);
-  if (sweep == "angle") {
-    const Tri3 t = triangle(s);
-    const Vec3 x = t.at(s.uniform(-0.25, 1.25), s.uniform(-0.25, 1.25));
-    const Vec3 along = unit(t.e - t.d);
-    const Vec3 dir = std::cos(tiny) * along - std::sin(tiny) * t.n();
-    return make(t, x - s.uniform(0.1, 1) * dir, x + s.uniform(0.1, 1) * dir);
-  }
-  if (sweep == "edge") {
-    const Tri3 t = triangle(s);
-    const Vec3 v[3] = {t.d, t.e, t.f};
-    const int i = int(s.uniform(0, 3)) % 3;
-    const Vec3 a = v[i], b = v[(i + 1) % 3];
-    const Vec3 out = unit(cross(b - a, t.n()));
-    const Vec3 x = a + s.uniform(0.05, 0.95) * (b - a) + (s.coin() ? tiny : -tiny) * out;
-    return through(s, t, x);
-  }
-  if (sweep == "magnitude") {
-    const Tri3 t0 = triangle(s);
-    const Query q = through(s, t0, t0.at(s.uniform(-0.25, 1.25), s.uniform(-0.25, 1.25)));
-    const Vec3 shift =
-        std::ldexp(1.0, p) * Vec3{s.uniform(0.5, 1), -s.uniform(0.5, 1), s.uniform(0.5, 1)};
-    Query moved = q;
-    for (Vec3& x : moved.x) x += shift;
-    return moved;
-  }
-  // aspect: F lies 2^-p |DE| off the line DE.
+  const Vec3 dir = std::cos(tiny) * along - std::sin(tiny) * t.n();
+  return make(t, x - s.uniform(0.1, 1) * dir, x + s.uniform(0.1, 1) * dir);
+}
+
+Query edge_query(int p, Sampler& s) {
+  const Tri3 t = triangle(s);
+  const Vec3 v[3] = {t.d, t.e, t.f};
+  const int i = int(s.uniform(0, 3)) % 3;
+  const Vec3 a = v[i], b = v[(i + 1) % 3];
+  const Vec3 out = unit(cross(b - a, t.n()));
+  const double tiny = std::ldexp(1.0, -p);
+  const Vec3 x = a + s.uniform(0.05, 0.95) * (b - a) + (s.coin() ? tiny : -tiny) * out;
+  return through(s, t, x);
+}
+
+Query magnitude_query(int p, Sampler& s) {
+  const Tri3 t0 = triangle(s);
+  const Query q = through(s, t0, t0.at(s.uniform(-0.25, 1.25), s.uniform(-0.25, 1.25)));
+  const Vec3 shift =
+      std::ldexp(1.0, p) * Vec3{s.uniform(0.5, 1), -s.uniform(0.5, 1), s.uniform(0.5, 1)};
+  Query moved = q;
+  for (Vec3& x : moved.x) x += shift;
+  return moved;
+}
+
+// F lies 2^-p |DE| off the line DE.
+Query aspect_query(int p, Sampler& s) {
   Tri3 t{s.point(1), s.point(1), {}};
   const double len = norm(t.e - t.d);
   const Vec3 off = unit(cross(t.e - t.d, s.unit()));
-  t.f = t.d + s.uniform(-0.25, 1.25) * (t.e - t.d) + (tiny * len) * off;
+  t.f = t.d + s.uniform(-0.25, 1.25) * (t.e - t.d) + (std::ldexp(1.0, -p) * len) * off;
   const Vec3 x = t.at(s.uniform(-0.25, 1.25), s.uniform(-0.25, 1.25));
   const Vec3 up = cross(t.e - t.d, off);  // the plane's normal, computed without F
   const Vec3 dir = s.uniform(0.2, 1) * unit(up) + s.uniform(-0.5, 0.5) * unit(t.e - t.d);
   return make(t, x + dir, x - s.uniform(0.2, 1) * dir);
+}
+
+// A dyadic value m/16 with m in [lo, hi]: products of two stay exact.
+double sixteenths(Sampler& s, int lo, int hi) {
+  return std::floor(s.uniform(lo, hi + 1)) / 16;
+}
+
+// The axes permuted and flipped at random, and a dyadic shift: exact, so the tiny offsets the
+// constructions below place survive.
+Query shuffled(Query q, Sampler& s) {
+  int axis[3] = {0, 1, 2};
+  std::shuffle(axis, axis + 3, std::mt19937_64(std::uint64_t(s.uniform(0, 1) * 1e18)));
+  const double sign[3] = {s.coin() ? 1.0 : -1.0, s.coin() ? 1.0 : -1.0, s.coin() ? 1.0 : -1.0};
+  const double shift[3] = {sixteenths(s, -16, 16), sixteenths(s, -16, 16), sixteenths(s, -16, 16)};
+  for (Vec3& x : q.x) {
+    const Vec3 v = x;
+    x = {sign[0] * v[axis[0]] + shift[0], sign[1] * v[axis[1]] + shift[1],
+         sign[2] * v[axis[2]] + shift[2]};
+  }
+  return q;
+}
+
+// D and E stay on y = -1, z = 0 while F(t) = (0, 1, 2k(t - 1/2)) tilts the plane about DE; the
+// plane's height over P is then k (t - 1/2) (c + k (t - 1/2)), and P's height
+// c k (t - 1/2) + eps, so P's signed distance is eps - k^2 (t - 1/2)^2 (times a positive
+// factor): a double root at t = 1/2 when eps = 0. eps = +2^-p dips through the face and
+// back (inside: P passes (x, c - 1) at t = 1/2); eps = -2^-p misses by 2^-p. P's heights
+// are about 1/2, so past p = 53 eps rounds away and the dip is an exact tangency.
+Query tangency_query(int p, Sampler& s) {
+  const double k = sixteenths(s, 8, 16), c = sixteenths(s, 12, 20);
+  const double x = sixteenths(s, -4, 4), eps = (s.coin() ? 1 : -1) * std::ldexp(1.0, -p);
+  const double width = sixteenths(s, 16, 24);
+  Query q;
+  q.x = {Vec3{x, -1 + c - k / 2, -c * k / 2 + eps},
+         Vec3{-width, -1, 0},
+         Vec3{width, -1, 0},
+         Vec3{0, 1, -k},
+         Vec3{x, -1 + c + k / 2, c * k / 2 + eps},
+         Vec3{-width, -1, 0},
+         Vec3{width, -1, 0},
+         Vec3{0, 1, k}};
+  return shuffled(q, s);
+}
+
+// Every point a dyadic height within 2^-p of z = 0 at both ends, while P sweeps across the
+// triangle's edge and the triangle slides: the coplanarity cubic's coefficients are all of the
+// order of 2^-p.
+Query coplanar_query(int p, Sampler& s) {
+  const double eps = std::ldexp(1.0, -p);
+  const auto z = [&] { return sixteenths(s, -16, 16) * eps; };
+  const auto xy = [&](int lo, int hi) { return sixteenths(s, lo, hi); };
+  const Vec3 slide{(s.coin() ? 1 : -1) * xy(1, 4), xy(-4, 4), 0};  // never still: a CCD query
+  Query q;
+  q.x[1] = {-1, -1, z()};
+  q.x[2] = {1, -1, z()};
+  q.x[3] = {0, 1, z()};
+  for (int i = 1; i < 4; ++i) q.x[i + 4] = q.x[i] + slide + Vec3{0, 0, z() - q.x[i].z};
+  q.x[0] = {xy(-24, 24), xy(-40, -20), z()};  // below the edge DE
+  q.x[4] = {xy(-24, 24), xy(-12, 8), z()};    // across it, inside the slid triangle or not
+  return shuffled(q, s);
+}
+
+Query sample(const std::string& sweep, int p, Sampler& s) {
+  using Make = Query (*)(int, Sampler&);
+  static const std::vector<std::pair<std::string, Make>> makers = {
+      {"angle", angle_query},   {"edge", edge_query},         {"magnitude", magnitude_query},
+      {"aspect", aspect_query}, {"tangency", tangency_query}, {"coplanar", coplanar_query}};
+  for (const auto& [name, make_query] : makers)
+    if (name == sweep) return make_query(p, s);
+  throw std::logic_error("no stability sweep named " + sweep);
 }
 
 // failure[m][p]: the share of the queries of each p that methods[m] applies to and gets
@@ -137,10 +213,12 @@ std::vector<std::vector<double>> sweep_rates(const StabilitySweep& sw,
 
 const std::vector<StabilitySweep>& stability_sweeps() {
   static const std::vector<StabilitySweep> sweeps = {
-      {"angle", 60, "motion-to-plane angle 2^{-p}: p"},
-      {"edge", 64, "distance of the crossing from an edge 2^{-p}: p"},
-      {"magnitude", 40, "distance from the origin 2^{p}: p"},
-      {"aspect", 60, "triangle height / base 2^{-p}: p"}};
+      {"angle", 60, "motion-to-plane angle 2^{-p}: p", false},
+      {"edge", 64, "distance of the crossing from an edge 2^{-p}: p", false},
+      {"magnitude", 40, "distance from the origin 2^{p}: p", false},
+      {"aspect", 60, "triangle height / base 2^{-p}: p", false},
+      {"tangency", 56, "moving: depth of a tangential dip 2^{-p}: p", true},
+      {"coplanar", 60, "moving: distance of all four points from one plane 2^{-p}: p", true}};
   return sweeps;
 }
 

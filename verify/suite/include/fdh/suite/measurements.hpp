@@ -14,16 +14,21 @@ struct SpeedAccuracyRow {
   std::string method, family;
   long queries = 0;
   double ns_per_query = 0, fp_rate = 0, fn_rate = 0;
+  std::string kind = "static";  // the family's queries: "static" or "moving"
   double error_rate() const { return fp_rate + fn_rate; }
 };
 
-// Every method of the registry on `per_family` queries of every static generator family; a
-// method is measured on the queries it applies to, and has no row where it applies to none.
+// Every method of the registry on `per_family` queries of every generator family, static and
+// moving; a method is measured on the queries it applies to, and has no row where it applies
+// to none (the paper's readings have no moving rows).
 std::vector<SpeedAccuracyRow> speed_accuracy(long per_family, std::uint64_t seed);
 
 // The lower-left envelope of `rows`: the points no other point beats in both time and error
 // rate, fastest first.
 std::vector<SpeedAccuracyRow> pareto_front(const std::vector<SpeedAccuracyRow>& rows);
+// The front of each kind of `rows` on its own (static, then moving): a moving query costs
+// another order of time, so one front over both would hide the static one.
+std::vector<SpeedAccuracyRow> pareto_fronts(const std::vector<SpeedAccuracyRow>& rows);
 
 // For one sweep and one value of its parameter: the share of queries a method gets wrong.
 struct StabilityRow {
@@ -38,6 +43,7 @@ struct StabilitySweep {
   const char* name;
   int last;
   const char* axis;
+  bool moving;  // its queries are moving vertex-face ones (CCD); else static
 };
 const std::vector<StabilitySweep>& stability_sweeps();
 
@@ -48,6 +54,10 @@ const std::vector<StabilitySweep>& stability_sweeps();
 //   edge       the path crosses the plane 2^-p from an edge, inside or out (p = 0..64)
 //   magnitude  the whole query moved 2^p from the origin (p = 0..40)
 //   aspect     the triangle's height over its base is 2^-p (p = 0..60)
+//   tangency   (moving) a point meets a tilting triangle's plane at a double root: it dips
+//              2^-p through the face and back, or stays 2^-p short of it (p = 0..56)
+//   coplanar   (moving) all four points stay within 2^-p of one plane while the point sweeps
+//              across the triangle's edge (p = 0..60)
 // Rows run sweep by sweep, and within a sweep method by method, so each curve is contiguous.
 std::vector<StabilityRow> stability(long per_point, std::uint64_t seed);
 
@@ -64,9 +74,9 @@ struct KdopTreeRow {
 std::vector<KdopTreeRow> kdop_tree(int grid);
 
 // The data files, header line first:
-//   method,family,queries,ns_per_query,fp_rate,fn_rate
+//   method,family,queries,ns_per_query,fp_rate,fn_rate,kind
 std::string speed_accuracy_csv(const std::vector<SpeedAccuracyRow>& rows);
-//   method,family,ns_per_query,error_rate
+//   method,family,ns_per_query,error_rate,kind
 std::string pareto_csv(const std::vector<SpeedAccuracyRow>& front);
 //   sweep,parameter,method,failure_rate
 std::string stability_csv(const std::vector<StabilityRow>& rows);
