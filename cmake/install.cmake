@@ -1,0 +1,37 @@
+# The installed CMake package: `cmake --install BUILD --prefix P` puts the libraries, their public
+# headers and fdhcertConfig.cmake (with its version file) under P, and
+# `find_package(fdhcert)` then gives
+#   fdhcert::fast       floating point only (Eigen): k-DOPs, the FDH tree, the point-triangle
+#                       and CCD methods
+#   fdhcert::cloth      the mass-spring cloth on fast
+#   fdhcert::reference  the exact twins (CGAL and GMP, linked privately)
+# fast and cloth are one export set that needs Eigen alone; reference is a second one, loaded
+# when CGAL is found, so that a project using fast never needs (or links) CGAL.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(FDH_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/fdhcert)
+set_target_properties(fdh_fast PROPERTIES EXPORT_NAME fast)
+set_target_properties(fdh_cloth PROPERTIES EXPORT_NAME cloth)
+set_target_properties(fdh_reference PROPERTIES EXPORT_NAME reference)
+
+install(TARGETS fdh_fast fdh_cloth EXPORT fdhcertFast
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(TARGETS fdh_reference EXPORT fdhcertReference
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(TARGETS fdhcert RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+foreach(dir fast cloth reference)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endforeach()
+install(EXPORT fdhcertFast NAMESPACE fdhcert:: FILE fdhcertFastTargets.cmake
+        DESTINATION ${FDH_CMAKE_DIR})
+install(EXPORT fdhcertReference NAMESPACE fdhcert:: FILE fdhcertReferenceTargets.cmake
+        DESTINATION ${FDH_CMAKE_DIR})
+
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/fdhcertConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/fdhcertConfig.cmake INSTALL_DESTINATION ${FDH_CMAKE_DIR})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/fdhcertConfigVersion.cmake
+  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/fdhcertConfig.cmake
+              ${PROJECT_BINARY_DIR}/fdhcertConfigVersion.cmake
+        DESTINATION ${FDH_CMAKE_DIR})
