@@ -1,0 +1,94 @@
+// classify, as the program does it: files through the fdhcert program itself (in-process), and
+// arrays through the same classification and the same JSON, so the tallies are the CLI's.
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "bindings.hpp"
+#include "fdh/check/classify.hpp"
+#include "fdh/cli/cli.hpp"
+#include "fdh/suite/report.hpp"
+
+namespace fdh::python {
+namespace {
+
+py::object to_python(const std::string& json_text) {
+  return py::module_::import("json").attr("loads")(json_text);
+}
+
+std::string comma_list(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : ",") + n;
+  return s;
+}
+
+// The program's words for what went wrong, without its "fdhcert: error: " prefix.
+std::string program_message(std::string message) {
+  for (const char* prefix : {"fdhcert: error: ", "fdhcert: "})
+    if (message.rfind(prefix, 0) == 0) message.erase(0, std::string(prefix).size());
+  while (!message.empty() && message.back() == '\n') message.pop_back();
+  return message;
+}
+
+// `fdhcert classify --json` on the files; bad input raises InputError with its message.
+py::object classify_files(const std::vector<std::string>& files,
+                          const std::vector<std::string>& methods, const std::string& kind,
+                          int gate) {
+  if (files.empty()) throw py::value_error("classify needs at least one file");
+  std::vector<std::string> args = {"classify", "--json"};
+  if (!methods.empty()) args.insert(args.end(), {"--methods", comma_list(methods)});
+  if (!kind.empty()) args.insert(args.end(), {"--kind", kind});
+  if (gate) args.insert(args.end(), {"--gate", std::to_string(gate)});
+  args.push_back("--");
+  args.insert(args.end(), files.begin(), files.end());
+  std::ostringstream out, err;
+  int status = 0;
+  {
+    py::gil_scoped_release release;
+    status = verify::run_cli(args, out, err);
+  }
+  if (status != 0) throw BadInput(program_message(err.str()));
+  return to_python(out.str());
+}
+
+// The same tallies for queries held in an array: one "file" named "<array>".
+py::object classify_arrays(const Points& a, const std::string& kind, py::object truth,
+                           const std::vector<std::string>& methods) {
+  std::vector<Query> qs = queries_of(a, kind_named(kind));
+  if (!truth.is_none()) {
+    const auto t = truth.cast<py::array_t<int, py::array::c_style | py::array::forcecast>>();
+    if (t.ndim() != 1 || std::size_t(t.shape(0)) != qs.size())
+      throw py::value_error("truth must hold one 0 or 1 per query");
+    for (std::size_t i = 0; i < qs.size(); ++i) {
+      const int v = t.at(py::ssize_t(i));
+      if (v != 0 && v != 1) throw py::value_error("truth of query " + qs[i].id + " is not 0 or 1");
+      qs[i].truth = v;
+    }
+  }
+  for (Query& q : qs) q.file = "<array>";
+  const std::vector<verify::Method> ms =
+      methods.empty() ? verify::all_methods() : verify::select_methods(methods);
+  verify::Classification c;
+  {
+    py::gil_scoped_release release;
+    c = verify::classify(qs, ms);
+  }
+  const auto j = verify::classification_json({{"<array>", c}}, c, {});
+  return to_python(j.dump());
+}
+
+}  // namespace
+
+void add_classify(py::module_& m) {
+  m.def("classify", &classify_files, py::arg("files"),
+        py::arg("methods") = std::vector<std::string>{}, py::arg("kind") = "",
+        py::arg("gate") = 0,
+        "`fdhcert classify --json` on query files (native .vf or benchmark .csv): a dict of "
+        "tallies per method, in total and per file. kind: 'vf' or 'ee' for CSVs; gate: a k.");
+  m.def("classify_arrays", &classify_arrays, py::arg("queries"),
+        py::arg("kind") = "vertex-face", py::arg("truth") = py::none(),
+        py::arg("methods") = std::vector<std::string>{},
+        "The same tallies for an N×8×3 array of one kind, against `truth` (N zeros and ones) "
+        "or, without it, the exact twin.");
+}
+
+}  // namespace fdh::python
