@@ -74,8 +74,9 @@ class Certifier {
 
   // The FDH tree of each certified k culls no pair whose exact k-DOPs overlap.
   void check_soups(const Soup& a, const Soup& b) {
-    for (BoxCheck& box : c_.boxes) {
-      if (!is_valid_k(box.k)) continue;
+    for (std::size_t i = 0; i < c_.boxes.size(); ++i) {
+      BoxCheck& box = c_.boxes[i];
+      if (!is_valid_k(box.k) || !boxes_[i].builds_tree) continue;  // a plug-in's: no tree
       with_k(box.k, [&](auto kc) {
         constexpr int K = decltype(kc)::value;
         const Bvh<K> ta(a.tris, a.x0, a.x1), tb(b.tris, b.x0);
