@@ -11,11 +11,13 @@
 #define WRONG_ABI 5         /* abi_version 99 */
 #define TAKEN_NAME 6        /* calls itself "robust" */
 #define BROKEN_PROMISE 7    /* promises exact answers, answers 0 */
+#define LARGE_GARBAGE 8     /* vertex_face_ccd returns 7 where a point starts at |x| >= 1e20 */
 #define MAGIC 0.375         /* no probe query has it */
 
 static int vertex_face(const double x[8][3]) {
   if (FAULT == CRASH_WHEN_PROBED || (FAULT == CRASH_ON_MAGIC && x[0][0] == MAGIC)) raise(SIGSEGV);
   if (FAULT == GARBAGE_ON_MAGIC && x[0][0] == MAGIC) return 7;
+  if (FAULT == LARGE_GARBAGE && fabs(x[0][0]) >= 1e20) return 7;
   return FAULT == BROKEN_PROMISE ? 0 : 1;
 }
 

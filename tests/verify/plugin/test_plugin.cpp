@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -14,6 +15,7 @@
 
 #include "fdh/check/registry.hpp"
 #include "fdh/cli/cli.hpp"
+#include "fdh/io/query_io.hpp"
 #include "temp_dir.hpp"
 #include "test_data.hpp"
 
@@ -161,7 +163,10 @@ TEST(Plugin, AProbedCrashOrGarbageBoxIsReportedWithExitThree) {
   EXPECT_EQ(crash.out, "");
   EXPECT_TRUE(has(crash.err,
                   "fdhcert: plug-in crash-when-probed crashed (SIGSEGV) in vertex_face_ccd on "
-                  "query 'probe: a segment through a triangle'"))
+                  "query 'probe/through-triangle': vf probe/through-triangle 0x1p-2 0x1p-2 "
+                  "0x1p+0 0x0p+0 0x0p+0 0x0p+0 0x1p+0 0x0p+0 0x0p+0 0x0p+0 0x1p+0 0x0p+0 0x1p-2 "
+                  "0x1p-2 -0x1p+0 0x0p+0 0x0p+0 0x0p+0 0x1p+0 0x0p+0 0x0p+0 0x0p+0 0x1p+0 "
+                  "0x0p+0\n"))
       << crash.err;
   const PluginRun bad_box = fdhcert({"certify", "--plugin", faulty("nan-kdop")});
   EXPECT_EQ(bad_box.status, 3);
@@ -169,6 +174,33 @@ TEST(Plugin, AProbedCrashOrGarbageBoxIsReportedWithExitThree) {
                   "fdhcert: plug-in nan-kdop returned slab 0 = [-1e+300, nan] (garbage: "
                   "not finite, or lo > hi) in kdop (k = 6) on 1 points"))
       << bad_box.err;
+}
+
+// A query without FILE:LINE (the probe's, the generators') is named by a line of a query file
+// that asks it again, every coordinate exact.
+TEST(Plugin, AGeneratedQueryIsNamedByAQueryLineThatReadsBackExactly) {
+  const PluginRun r =
+      fdhcert({"classify", kData + "static.vf", "--plugin", faulty("large-garbage")});
+  EXPECT_EQ(r.status, 3);
+  const std::string head =
+      "fdhcert: plug-in large-garbage returned 7 (garbage: not 0 or 1) in vertex_face_ccd on "
+      "query 'probe/extreme-coordinates': ";
+  ASSERT_EQ(r.err.rfind(head, 0), 0u) << r.err;
+  const fs::path file = fresh_temp_dir("plugin_line") / "asked.vf";
+  std::ofstream(file) << r.err.substr(head.size());
+  const std::vector<Query> qs = read_native(file.string());
+  ASSERT_EQ(qs.size(), 1u);
+  EXPECT_EQ(qs[0].id, "probe/extreme-coordinates");
+  const std::array<Vec3, 8> x = {{{1e30, 0.1, -0.0},
+                                  {0, 0, 0},
+                                  {-1e30, 0, 0},
+                                  {0, 1, 0},
+                                  {-1e30, -1e30, 5e-324},
+                                  {0, 0, 0},
+                                  {1, 0, 0},
+                                  {0, 1, 0}}};
+  EXPECT_EQ(qs[0].x, x);
+  EXPECT_TRUE(std::signbit(qs[0].x[0].z));
 }
 
 TEST(Plugin, GarbageOnAQueryNamesItsFileAndLine) {

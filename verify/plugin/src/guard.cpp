@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cstdint>
 #include <cstring>
 #include <string>
 
@@ -34,6 +35,9 @@ const char* signal_name(int sig) {
   return "a signal";
 }
 
+constexpr const char* kHexDigits[16] = {"0", "1", "2", "3", "4", "5", "6", "7",
+                                        "8", "9", "a", "b", "c", "d", "e", "f"};
+
 // A message built inside a signal handler: no allocation, only write(2) at the end.
 class SignalText {
  public:
@@ -47,6 +51,26 @@ class SignalText {
     do digits[d++] = char('0' + v % 10), v /= 10;
     while (v);
     while (d > 0 && n_ < sizeof buf_) buf_[n_++] = digits[--d];
+    return *this;
+  }
+  // v in C99 hex-float ("-0x1.8p+3"), exactly, as the native query format reads it.
+  SignalText& hex(double v) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    if (bits >> 63) *this << "-";
+    const int biased = int((bits >> 52) & 0x7ff);
+    std::uint64_t mantissa = bits & ((std::uint64_t(1) << 52) - 1);
+    if (biased == 0x7ff) return *this << (mantissa ? "nan" : "inf");
+    *this << (biased ? "0x1" : "0x0");
+    if (mantissa) {
+      *this << ".";
+      for (int shift = 48; mantissa; shift -= 4) {  // 13 digits, the trailing zeros left out
+        *this << kHexDigits[(mantissa >> shift) & 0xf];
+        mantissa &= (std::uint64_t(1) << shift) - 1;
+      }
+    }
+    const int exponent = biased ? biased - 1023 : (bits << 1 ? -1022 : 0);
+    *this << (exponent < 0 ? "p-" : "p+") << (unsigned long)(exponent < 0 ? -exponent : exponent);
     return *this;
   }
   std::string str() const { return std::string(buf_, n_); }
@@ -68,9 +92,16 @@ void add_where(SignalText& t, const CallSite& s) {
   t << "in " << s.function;
   if (s.query && !s.query->file.empty())
     t << " on query " << s.query->file.c_str() << ":" << (unsigned long)(s.query->line);
-  else if (s.query)
-    t << " on query '" << s.query->id.c_str() << "'";
-  else if (s.points)
+  else if (s.query) {  // a generated query: the line of a query file that asks it again
+    const char* kind = s.query->kind == QueryKind::EdgeEdge ? "ee " : "vf ";
+    t << " on query '" << s.query->id.c_str() << "': " << kind << s.query->id.c_str();
+    for (const Vec3& p : s.query->x) {
+      t << " ";
+      t.hex(p.x) << " ";
+      t.hex(p.y) << " ";
+      t.hex(p.z);
+    }
+  } else if (s.points)
     t << " (k = " << (unsigned long)(s.k) << ") on " << (unsigned long)(s.points) << " points";
 }
 

@@ -21,29 +21,27 @@ namespace {
 Query probe_query(QueryKind kind, const char* id, std::array<Vec3, 8> x) {
   Query q;
   q.kind = kind;
-  q.id = std::string("probe: ") + id;
+  q.id = std::string("probe/") + id;
   q.x = x;
   return q;
 }
 
-// Ordinary inputs of every decision: a hit, a miss, a degenerate one, large coordinates.
+// Ordinary inputs of every decision: a hit, a miss, a degenerate one, extreme coordinates.
 std::vector<Query> probe_queries() {
   const Vec3 d{0, 0, 0}, e{1, 0, 0}, f{0, 1, 0};
   const QueryKind vf = QueryKind::VertexFace, ee = QueryKind::EdgeEdge;
   return {
-      probe_query(vf, "a segment through a triangle",
-                  {{{.25, .25, 1}, d, e, f, {.25, .25, -1}, d, e, f}}),
-      probe_query(vf, "a segment beside a triangle", {{{2, 2, 1}, d, e, f, {2, 2, -1}, d, e, f}}),
-      probe_query(vf, "every point at the origin", {}),
-      probe_query(vf, "a triangle rising through a point",
+      probe_query(vf, "through-triangle", {{{.25, .25, 1}, d, e, f, {.25, .25, -1}, d, e, f}}),
+      probe_query(vf, "beside-triangle", {{{2, 2, 1}, d, e, f, {2, 2, -1}, d, e, f}}),
+      probe_query(vf, "all-at-origin", {}),
+      probe_query(vf, "triangle-rising-through-point",
                   {{{.25, .25, .5}, d, e, f, {.25, .25, .5}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}}}),
-      probe_query(vf, "large coordinates",
-                  {{{1e30, 1e30, 1e30}, d, {-1e30, 0, 0}, f, {-1e30, -1e30, -1e30}, d, e, f}}),
-      probe_query(ee, "two edges crossing",
+      probe_query(vf, "extreme-coordinates",
+                  {{{1e30, 0.1, -0.0}, d, {-1e30, 0, 0}, f, {-1e30, -1e30, 5e-324}, d, e, f}}),
+      probe_query(ee, "edges-crossing",
                   {{d, e, {.5, -1, 1}, {.5, 1, 1}, d, e, {.5, -1, -1}, {.5, 1, -1}}}),
-      probe_query(ee, "two edges apart",
-                  {{d, e, {0, 5, 1}, {1, 5, 1}, d, e, {0, 5, 2}, {1, 5, 2}}}),
-      probe_query(ee, "every point at the origin", {}),
+      probe_query(ee, "edges-apart", {{d, e, {0, 5, 1}, {1, 5, 1}, d, e, {0, 5, 2}, {1, 5, 2}}}),
+      probe_query(ee, "all-at-origin", {}),
   };
 }
 
