@@ -12,6 +12,7 @@
 #define TAKEN_NAME 6        /* calls itself "robust" */
 #define BROKEN_PROMISE 7    /* promises exact answers, answers 0 */
 #define LARGE_GARBAGE 8     /* vertex_face_ccd returns 7 where a point starts at |x| >= 1e20 */
+#define PATH_NAME 9         /* calls itself ".." */
 #define MAGIC 0.375         /* no probe query has it */
 
 static int vertex_face(const double x[8][3]) {
@@ -29,7 +30,9 @@ static void kdop(int k, const double (*p)[3], size_t n, double* lo, double* hi) 
 const struct fdh_plugin* fdh_plugin_v1(void) {
   static const struct fdh_plugin p = {
       .abi_version = FAULT == WRONG_ABI ? 99 : FDH_PLUGIN_ABI_VERSION,
-      .name = FAULT == TAKEN_NAME ? "robust" : NAME,
+      .name = FAULT == TAKEN_NAME  ? "robust"
+              : FAULT == PATH_NAME ? ".."
+                                   : NAME,
       .promise = FAULT == BROKEN_PROMISE ? FDH_PROMISE_EXACT : FDH_PROMISE_CONSERVATIVE,
       .vertex_face_ccd = vertex_face,
       .kdop_ks = FDH_KDOP_6,

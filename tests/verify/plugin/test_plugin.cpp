@@ -146,6 +146,7 @@ TEST(Plugin, APlugInThatCannotBeUsedIsRefusedWithExitTwo) {
       {FDH_NO_PLUGIN, "exports no fdh_plugin_v1"},
       {faulty("wrong-abi"), "ABI version 99, but this fdhcert takes 1"},
       {faulty("taken-name"), "method name 'robust' is taken"},
+      {faulty("path-name"), "its name is not a letter or digit, then"},
   };
   for (const auto& [file, words] : bad) {
     const PluginRun r = fdhcert({"classify", kData + "static.vf", "--plugin", file});

@@ -33,8 +33,10 @@ using LoadedPtr = std::shared_ptr<const Loaded>;
   throw PluginLoadError("plug-in " + path + ": " + why + " (docs/plugins.md)");
 }
 
+// A letter or digit, then letters, digits and . _ + -: never a path like "..", since fuzz makes
+// folders of method names.
 bool is_name(const char* s) {
-  if (!s) return false;
+  if (!s || !std::isalnum(static_cast<unsigned char>(s[0]))) return false;
   std::size_t n = 0;
   for (; s[n]; ++n)
     if (n >= 40 || !(std::isalnum(static_cast<unsigned char>(s[n])) || std::strchr("._+-", s[n])))
@@ -60,7 +62,8 @@ fdh_plugin entry_struct(const std::string& path) {
   if (p->abi_version != FDH_PLUGIN_ABI_VERSION)
     refuse(path, "ABI version " + std::to_string(p->abi_version) + ", but this fdhcert takes " +
                      std::to_string(FDH_PLUGIN_ABI_VERSION));
-  if (!is_name(p->name)) refuse(path, "its name is not 1-40 of a-z A-Z 0-9 . _ + -");
+  if (!is_name(p->name))
+    refuse(path, "its name is not a letter or digit, then up to 39 of a-z A-Z 0-9 . _ + -");
   if (p->promise < FDH_PROMISE_NONE || p->promise > FDH_PROMISE_EXACT)
     refuse(path, "promise " + std::to_string(p->promise) + " is none of 0, 1, 2");
   if ((p->kdop_ks & ~0xfu) || (p->kdop_ks != 0) != (p->kdop != nullptr))

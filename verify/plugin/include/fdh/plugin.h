@@ -54,7 +54,8 @@ typedef void (*fdh_kdop_fn)(int k, const double (*points)[3], size_t n, double* 
 
 struct fdh_plugin {
   int abi_version;     /* FDH_PLUGIN_ABI_VERSION */
-  const char* name;    /* the method's name: 1-40 of a-z A-Z 0-9 . _ + -, no built-in's */
+  const char* name;    /* the method's name: a letter or digit, then up to 39 of a-z A-Z 0-9 . _
+                          + -; not a built-in method's */
   const char* summary; /* one line for tables and certificates, or NULL */
   int promise;         /* an fdh_promise, for the three query functions */
   /* Any of these may be NULL: the method then makes no such decision (n/a). */
