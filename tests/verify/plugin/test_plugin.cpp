@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include "cli_run.hpp"
 #include "fdh/check/registry.hpp"
 #include "fdh/cli/cli.hpp"
 #include "fdh/io/query_io.hpp"
@@ -23,17 +24,6 @@ namespace fdh::verify {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct PluginRun {
-  int status;
-  std::string out, err;
-};
-
-PluginRun fdhcert(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int status = run_cli(args, out, err);
-  return {status, out.str(), err.str()};
-}
 
 std::string faulty(const std::string& fault) {
   return std::string(FDH_FAULTY_PLUGINS) + "/" + fault + ".so";
@@ -72,7 +62,7 @@ TEST(Plugin, ClassifyShowsTheExampleBesideTheBuiltInMethods) {
     std::vector<std::string> args = {
         "classify", kData + "static.vf", kData + "moving.vf", beside.string(), "--json", "--check"};
     args.insert(args.end(), order.begin(), order.end());
-    const PluginRun r = fdhcert(args);
+    const CliRun r = fdhcert(args);
     ASSERT_EQ(r.status, 0) << r.err;
     const nlohmann::json j = nlohmann::json::parse(r.out);
     // Conservative: it misses no hit of the exact twin, and says hit at least as often.
@@ -88,7 +78,7 @@ TEST(Plugin, ClassifyShowsTheExampleBesideTheBuiltInMethods) {
 TEST(Plugin, CertifyListsTheExampleLikeABuiltInMethod) {
   const fs::path out = fresh_temp_dir("plugin_certify"), corpus = fresh_temp_dir("plugin_corpus");
   fs::copy(FDH_SOURCE_DIR "/corpus/queries", corpus / "queries");
-  const PluginRun r =
+  const CliRun r =
       fdhcert({"certify", "--quick", "--plugin", FDH_EXAMPLE_PLUGIN, "--corpus", corpus.string(),
                "--out", out.string(), "--per-family", "10", "--soups", "1", kData + "moving.vf"});
   ASSERT_EQ(r.status, 0) << r.err;
@@ -113,7 +103,7 @@ TEST(Plugin, CertifyListsTheExampleLikeABuiltInMethod) {
 // A plug-in that breaks its promise fails the certificate like a built-in method would.
 TEST(Plugin, CertifyCatchesAPlugInThatBreaksItsPromise) {
   const fs::path out = fresh_temp_dir("plugin_broken"), corpus = fresh_temp_dir("plugin_none");
-  const PluginRun r =
+  const CliRun r =
       fdhcert({"certify", "--plugin", faulty("broken-promise"), "--corpus", corpus.string(),
                "--out", out.string(), "--per-family", "5", "--soups", "0", kData + "static.vf"});
   EXPECT_EQ(r.status, 1) << r.err;
@@ -121,15 +111,15 @@ TEST(Plugin, CertifyCatchesAPlugInThatBreaksItsPromise) {
 }
 
 TEST(Plugin, ReplayAndFuzzRunThePlugIn) {
-  const PluginRun replay = fdhcert({"replay", FDH_SOURCE_DIR "/corpus/counterexamples", "--plugin",
-                                    FDH_EXAMPLE_PLUGIN, "--methods", "aabb", "--json"});
+  const CliRun replay = fdhcert({"replay", FDH_SOURCE_DIR "/corpus/counterexamples", "--plugin",
+                                 FDH_EXAMPLE_PLUGIN, "--methods", "aabb", "--json"});
   ASSERT_EQ(replay.status, 0) << replay.err;
   EXPECT_TRUE(nlohmann::json::parse(replay.out)["methods"].contains("aabb"));
 
   const fs::path out = fresh_temp_dir("plugin_fuzz");
-  const PluginRun fuzz = fdhcert({"fuzz", "--plugin", FDH_EXAMPLE_PLUGIN, "--method", "aabb",
-                                  "--family", "parallel-cross", "--count", "40", "--threads", "1",
-                                  "--out", out.string(), "--json"});
+  const CliRun fuzz = fdhcert({"fuzz", "--plugin", FDH_EXAMPLE_PLUGIN, "--method", "aabb",
+                               "--family", "parallel-cross", "--count", "40", "--threads", "1",
+                               "--out", out.string(), "--json"});
   ASSERT_EQ(fuzz.status, 0) << fuzz.err;
   const nlohmann::json s = nlohmann::json::parse(fuzz.out);
   EXPECT_EQ(s["method"], "aabb");
@@ -149,7 +139,7 @@ TEST(Plugin, APlugInThatCannotBeUsedIsRefusedWithExitTwo) {
       {faulty("path-name"), "its name is not a letter or digit, then"},
   };
   for (const auto& [file, words] : bad) {
-    const PluginRun r = fdhcert({"classify", kData + "static.vf", "--plugin", file});
+    const CliRun r = fdhcert({"classify", kData + "static.vf", "--plugin", file});
     EXPECT_EQ(r.status, 2) << file;
     EXPECT_EQ(r.out, "");
     EXPECT_TRUE(has(r.err, "fdhcert: plug-in " + file + ": " + words)) << r.err;
@@ -158,7 +148,7 @@ TEST(Plugin, APlugInThatCannotBeUsedIsRefusedWithExitTwo) {
 
 // The probe runs the plug-in in a child first: this process lives on and says what happened.
 TEST(Plugin, AProbedCrashOrGarbageBoxIsReportedWithExitThree) {
-  const PluginRun crash =
+  const CliRun crash =
       fdhcert({"classify", kData + "static.vf", "--plugin", faulty("crash-when-probed")});
   EXPECT_EQ(crash.status, 3);
   EXPECT_EQ(crash.out, "");
@@ -169,7 +159,7 @@ TEST(Plugin, AProbedCrashOrGarbageBoxIsReportedWithExitThree) {
                   "0x1p-2 -0x1p+0 0x0p+0 0x0p+0 0x0p+0 0x1p+0 0x0p+0 0x0p+0 0x0p+0 0x1p+0 "
                   "0x0p+0\n"))
       << crash.err;
-  const PluginRun bad_box = fdhcert({"certify", "--plugin", faulty("nan-kdop")});
+  const CliRun bad_box = fdhcert({"certify", "--plugin", faulty("nan-kdop")});
   EXPECT_EQ(bad_box.status, 3);
   EXPECT_TRUE(has(bad_box.err,
                   "fdhcert: plug-in nan-kdop returned slab 0 = [-1e+300, nan] (garbage: "
@@ -180,8 +170,7 @@ TEST(Plugin, AProbedCrashOrGarbageBoxIsReportedWithExitThree) {
 // A query without FILE:LINE (the probe's, the generators') is named by a line of a query file
 // that asks it again, every coordinate exact.
 TEST(Plugin, AGeneratedQueryIsNamedByAQueryLineThatReadsBackExactly) {
-  const PluginRun r =
-      fdhcert({"classify", kData + "static.vf", "--plugin", faulty("large-garbage")});
+  const CliRun r = fdhcert({"classify", kData + "static.vf", "--plugin", faulty("large-garbage")});
   EXPECT_EQ(r.status, 3);
   const std::string head =
       "fdhcert: plug-in large-garbage returned 7 (garbage: not 0 or 1) in vertex_face_ccd on "
@@ -206,7 +195,7 @@ TEST(Plugin, AGeneratedQueryIsNamedByAQueryLineThatReadsBackExactly) {
 
 TEST(Plugin, GarbageOnAQueryNamesItsFileAndLine) {
   const fs::path file = magic_queries("plugin_garbage");
-  const PluginRun r = fdhcert({"classify", file.string(), "--plugin", faulty("garbage-on-magic")});
+  const CliRun r = fdhcert({"classify", file.string(), "--plugin", faulty("garbage-on-magic")});
   EXPECT_EQ(r.status, 3);
   EXPECT_EQ(r.out, "");
   EXPECT_TRUE(has(r.err,
