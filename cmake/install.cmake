@@ -20,6 +20,9 @@ install(TARGETS fdh_fast fdh_cloth EXPORT fdhcertFast
 install(TARGETS fdh_reference EXPORT fdhcertReference
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS fdhcert RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The plug-in ABI (docs/plugins.md): plain C, for users' shared libraries.
+install(FILES ${PROJECT_SOURCE_DIR}/verify/plugin/include/fdh/plugin.h
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/fdh)
 foreach(dir fast cloth reference)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()

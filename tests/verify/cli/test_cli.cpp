@@ -9,23 +9,13 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli_run.hpp"
 #include "temp_dir.hpp"
 
 namespace fdh::verify {
 namespace {
 
 using Json = nlohmann::json;
-
-struct CliRun {
-  int status;
-  std::string out, err;
-};
-
-CliRun fdhcert(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int status = run_cli(args, out, err);
-  return {status, out.str(), err.str()};
-}
 
 bool file_exists(const std::string& p) {
   return std::ifstream(p).good();

@@ -97,9 +97,8 @@ Method all_kinds(std::string name, std::string summary, Promise promise, Test po
       point_triangle};
 }
 
-}  // namespace
-
-std::vector<Method> all_methods(int gate_k) {
+// The methods of this project, in all_methods()'s order.
+std::vector<Method> built_in_methods(int gate_k) {
   if (gate_k != 0 && !is_valid_k(gate_k))
     throw std::invalid_argument("--gate takes 6, 14, 18 or 26, not " + std::to_string(gate_k));
   const auto paper = [gate_k](Test t) { return gate_k ? gated(t, gate_k) : on_query(t); };
@@ -140,6 +139,48 @@ std::vector<Method> all_methods(int gate_k) {
        {},
        &linear_system},
   };
+}
+
+// add_methods()'s: read by every run, written only while a command line is parsed.
+std::vector<Method>& added_methods() {
+  static std::vector<Method> methods;
+  return methods;
+}
+std::vector<BoxMethod>& added_boxes() {
+  static std::vector<BoxMethod> boxes;
+  return boxes;
+}
+
+}  // namespace
+
+std::vector<Method> all_methods(int gate_k) {
+  std::vector<Method> all = built_in_methods(gate_k);
+  all.insert(all.end(), added_methods().begin(), added_methods().end());
+  return all;
+}
+
+void add_methods(std::vector<Method> methods, std::vector<BoxMethod> boxes) {
+  std::vector<Method> taken = all_methods();
+  std::vector<BoxMethod> taken_boxes = all_box_methods();
+  for (const Method& m : methods) {
+    for (const Method& o : taken)
+      if (o.name == m.name) throw std::invalid_argument("method name '" + m.name + "' is taken");
+    taken.push_back(m);
+  }
+  for (const BoxMethod& b : boxes) {
+    for (const BoxMethod& o : taken_boxes)
+      if (o.name == b.name && o.k == b.k)
+        throw std::invalid_argument("k-DOP method name '" + b.name +
+                                    "' (k = " + std::to_string(b.k) + ") is taken");
+    taken_boxes.push_back(b);
+  }
+  for (Method& m : methods) added_methods().push_back(std::move(m));
+  for (BoxMethod& b : boxes) added_boxes().push_back(std::move(b));
+}
+
+void remove_added_methods() {
+  added_methods().clear();
+  added_boxes().clear();
 }
 
 std::vector<Method> promised_methods(int gate_k) {
@@ -197,6 +238,7 @@ BoxMethod fdh_box() {
   m.name = "fdh";
   m.summary = "fast/'s k-DOP: one outward push per diagonal slab (kdop.hpp)";
   m.k = K;
+  m.builds_tree = true;
   m.build = [](const Vec3* pts, std::size_t n, double* lo, double* hi) {
     const Kdop<K> box = kdop_of<K>(pts, n);
     std::copy(box.lo.begin(), box.lo.end(), lo);
@@ -214,7 +256,9 @@ BoxMethod fdh_box() {
 }  // namespace
 
 std::vector<BoxMethod> all_box_methods() {
-  return {fdh_box<6>(), fdh_box<14>(), fdh_box<18>(), fdh_box<26>()};
+  std::vector<BoxMethod> all = {fdh_box<6>(), fdh_box<14>(), fdh_box<18>(), fdh_box<26>()};
+  all.insert(all.end(), added_boxes().begin(), added_boxes().end());
+  return all;
 }
 
 }  // namespace fdh::verify

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fdh/io/atomic_file.hpp"
+#include "plugin_option.hpp"
 #include "suite_commands.hpp"
 
 namespace fdh::verify {
@@ -77,6 +78,7 @@ Command add_certify(CLI::App& app) {
   opt->out_dir = "certificate";
   CLI::App* cmd = add_command(app, "certify", kCertifyAbout, kCertifyFooter);
   add_certify_options(*cmd, *opt);
+  add_plugin_option(*cmd);
   return {cmd, [opt](const Io& io) { return run_certify(*opt, io); }};
 }
 

@@ -9,6 +9,7 @@
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
 #include "fdh/suite/report.hpp"
+#include "plugin_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -157,6 +158,7 @@ Command add_classify(CLI::App& app) {
                   "(\"moving\" for a moving query) and earliest contact time\n"
                   "(a rational, or lo..hi)")
       ->type_name("FILE");
+  add_plugin_option(*cmd);
   cmd->add_flag("--check", o->check,
                 "exit 1 if exact disagrees with a file's truth, or a method\n"
                 "that promises exact answers (robust) with exact, on any query");

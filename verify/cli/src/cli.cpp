@@ -9,6 +9,8 @@
 
 #include "commands.hpp"
 #include "fdh/io/input_error.hpp"
+#include "fdh/plugin/loader.hpp"
+#include "plugin_option.hpp"
 #include "suite_commands.hpp"
 
 namespace fdh::verify {
@@ -19,7 +21,8 @@ const char* const kFooter =
     "Run 'fdhcert <command> --help' for the options of a command.\n"
     "Exit status: 0 success, 1 a check or certificate failed, 2 bad input or usage,\n"
     "a bound passed, or an output (standard output included) that could not be\n"
-    "written; every output path is checked before a run starts (docs/limits.md).";
+    "written; every output path is checked before a run starts (docs/limits.md);\n"
+    "3 a --plugin crashed or answered garbage (docs/plugins.md).";
 
 // fdhcert's help layout: the usage line first, then the description (as the help texts read
 // before CLI11); the command list shows the first line of each command's description.
@@ -132,6 +135,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   app.require_subcommand(1);
   app.footer(kFooter);
   app.add_subcommand("help", "this text")->group("")->allow_extras();  // hidden
+  const PluginScope plugins;  // --plugin's methods, for this run only
   const std::vector<Command> commands = add_commands(app);
   const Io io{out, err};
   if (args.empty()) {
@@ -146,6 +150,9 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     err << "fdhcert: " << e.what() << "\n";
   } catch (const InputError& e) {
     err << "fdhcert: error: " << e.what() << "\n";
+  } catch (const PluginFailure& e) {  // a plug-in crashed when probed, or answered garbage
+    err << "fdhcert: " << e.what() << "\n";
+    return kPluginFailureStatus;
   } catch (const std::runtime_error& e) {  // I/O failures while writing output
     err << "fdhcert: error: " << e.what() << "\n";
   } catch (const std::bad_alloc&) {  // an error, not an abort (docs/limits.md)

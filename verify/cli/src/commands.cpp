@@ -25,14 +25,20 @@ std::string quoted_input(std::string_view s, std::size_t shown) {
 
 CLI::Option* add_methods_option(CLI::App& cmd, std::vector<std::string>& names,
                                 const std::string& help) {
-  std::vector<std::string> known;
-  for (const Method& m : all_methods()) known.push_back(m.name);
+  // Checked when parsing ends, so that a --plugin's methods count wherever it stands.
+  const CLI::Validator known_method(
+      [](std::string& s) {
+        std::vector<std::string> known;
+        for (const Method& m : all_methods()) known.push_back(m.name);
+        return one_of(known)(s);
+      },
+      "");
   // One word per --methods (not the files after it), split at commas.
   return cmd.add_option("--methods", names, help)
       ->delimiter(',')
       ->allow_extra_args(false)
       ->type_name("LIST")
-      ->check(one_of(known));
+      ->check(known_method);
 }
 
 CLI::Validator one_of(std::vector<std::string> choices) {

@@ -8,6 +8,7 @@
 #include "fdh/gen/families.hpp"
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/suite/fuzz.hpp"
+#include "plugin_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -148,6 +149,7 @@ Command add_fuzz(CLI::App& app) {
                   "cases per checkpoint step (default 500); may differ when resuming")
       ->type_name("N")
       ->check(CLI::Range(1, 1 << 20));
+  add_plugin_option(*cmd);
   cmd->add_flag("--json", o->json, "print the summary as one JSON object");
   return {cmd, [o](const Io& io) { return run_fuzz_command(*o, io); }};
 }

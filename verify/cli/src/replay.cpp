@@ -8,6 +8,7 @@
 #include "fdh/io/case_files.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
+#include "plugin_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -108,6 +109,7 @@ Command add_replay(CLI::App& app) {
   CLI::App* cmd = add_command(app, "replay", kReplayAbout, kReplayFooter);
   cmd->add_option("PATH", o->paths, "a case file, or a folder of them")->required();
   add_methods_option(*cmd, o->methods, "comma-separated methods (default: all)");
+  add_plugin_option(*cmd);
   cmd->add_flag("--json", o->json, "print one JSON object (below)");
   return {cmd, [o](const Io& io) { return run_replay(*o, io); }};
 }

@@ -88,11 +88,13 @@ void properties_markdown(Out to, const Certificate& c) {
   for (const BoxCheck& b : c.boxes)
     fmt::format_to(to, "| float FDH contains the exact FDH | `{}` | {} | {} boxes | {} |\n",
                    b.method, b.k, b.boxes, b.box_violations);
-  for (const BoxCheck& b : c.boxes)
+  for (const BoxCheck& b : c.boxes) {
+    if (!b.tree) continue;  // a plug-in's boxes: fast/'s tree is not made of them
     fmt::format_to(to,
                    "| tree traversal finds every exactly overlapping pair | `{}` | {} | {} tree "
                    "pairs, {} overlapping primitive pairs | {} |\n",
                    b.method, b.k, b.soup_pairs, b.exact_pairs, b.cull_violations);
+  }
   for (const PromiseCheck& p : c.promises)
     fmt::format_to(to, "| {} verdict {} | `{}` | – | {} queries{} | {} |\n", to_string(p.decision),
                    promise_words(p.promise), p.method, p.checked,
@@ -133,6 +135,7 @@ std::string certificate_json(const Certificate& c) {
   for (const BoxCheck& b : c.boxes) {
     boxes[box_key(boxes, b)] = {
         {"method", b.method}, {"boxes", b.boxes}, {"violations", b.box_violations}};
+    if (!b.tree) continue;
     culls[box_key(culls, b)] = {{"method", b.method},
                                 {"soup_pairs", b.soup_pairs},
                                 {"exact_overlapping_pairs", b.exact_pairs},

@@ -35,7 +35,10 @@ class Certifier {
     for (const Method& m : methods_)
       for (const Decision d : kQueryDecisions)
         if (m.test[std::size_t(d)]) c_.promises.push_back({m.name, d, m.promise});
-    for (const BoxMethod& b : boxes_) c_.boxes.push_back({b.name, b.k});
+    for (const BoxMethod& b : boxes_) {
+      c_.boxes.push_back({b.name, b.k});
+      c_.boxes.back().tree = b.builds_tree;
+    }
   }
 
   void check_query(const Query& q) {
@@ -75,7 +78,7 @@ class Certifier {
   // The FDH tree of each certified k culls no pair whose exact k-DOPs overlap.
   void check_soups(const Soup& a, const Soup& b) {
     for (BoxCheck& box : c_.boxes) {
-      if (!is_valid_k(box.k)) continue;
+      if (!is_valid_k(box.k) || !box.tree) continue;
       with_k(box.k, [&](auto kc) {
         constexpr int K = decltype(kc)::value;
         const Bvh<K> ta(a.tris, a.x0, a.x1), tb(b.tris, b.x0);

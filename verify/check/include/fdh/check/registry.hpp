@@ -74,6 +74,8 @@ struct BoxMethod {
   std::string name, summary;
   int k = 0;
   Promise promise = Promise::Conservative;
+  // fast/'s FDH tree is made of these boxes: certify checks its traversal too.
+  bool builds_tree = false;
   std::function<void(const Vec3* pts, std::size_t n, double* lo, double* hi)> build;
   std::function<bool(const double* lo_a, const double* hi_a, const double* lo_b,
                      const double* hi_b)>
@@ -81,9 +83,10 @@ struct BoxMethod {
 };
 
 // Every query method: the twin first, then robust, float-cubic, paper-literal,
-// paper-intended, linear-system. With gate_k > 0 the methods that test no bounding volume of
-// their own say "hit" only when the k-DOP of the particle's sweep overlaps the triangle's, as
-// they would inside the FDH tree. Throws std::invalid_argument for a bad gate_k.
+// paper-intended, linear-system; then the added ones (add_methods). With gate_k > 0 the methods
+// that test no bounding volume of their own say "hit" only when the k-DOP of the particle's sweep
+// overlaps the triangle's, as they would inside the FDH tree. Throws std::invalid_argument for a
+// bad gate_k.
 std::vector<Method> all_methods(int gate_k = 0);
 
 // The methods the checker holds to a promise (Exact or Conservative), the twin itself left out.
@@ -98,8 +101,16 @@ std::vector<Method> select_methods(const std::vector<std::string>& names, int ga
 std::vector<std::string> narrow_phase_names();
 PointTriangleTest narrow_phase_named(const std::string& name);
 
-// The k-DOP methods for each certified k (6, 14, 18, 26).
+// The k-DOP methods for each certified k (6, 14, 18, 26), then the added ones.
 std::vector<BoxMethod> all_box_methods();
 inline constexpr std::array<int, 4> kCertifiedK = {6, 14, 18, 26};
+
+// Methods added at run time (plug-ins, verify/plugin/): all_methods() and all_box_methods()
+// return them after the built-in ones, for this process and the workers it forks. A name that
+// is already taken (query methods and k-DOP methods of one k are separate) throws
+// std::invalid_argument naming it; nothing is added then.
+void add_methods(std::vector<Method> methods, std::vector<BoxMethod> boxes);
+// Forgets every added method (the end of one command run, in-process).
+void remove_added_methods();
 
 }  // namespace fdh::verify

@@ -41,6 +41,7 @@ struct BoxCheck {
   int k = 0;
   long boxes = 0, box_violations = 0;
   long soup_pairs = 0, exact_pairs = 0, cull_violations = 0;
+  bool tree = true;  // fast/'s FDH tree is made of these boxes (not a plug-in's): the soup check
 };
 
 struct Certificate {

@@ -1,0 +1,47 @@
+// Calling into a plug-in: while one of its functions runs, the process knows which plug-in,
+// function and query it is, so that a crash (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT) prints
+//   fdhcert: plug-in NAME crashed (SIGSEGV) in FUNCTION on query FILE:LINE
+// and ends the process with kPluginFailureStatus instead of dying without a word. Outside a
+// plug-in call the handlers hand the signal back to whatever handled it before.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "fdh/query.hpp"
+
+namespace fdh::verify::plugin {
+
+// One call into a plug-in: what a message about it names.
+struct CallSite {
+  const char* plugin = "";       // the plug-in's name
+  const char* function = "";     // "point_triangle", "vertex_face_ccd", "edge_edge_ccd", "kdop"
+  const Query* query = nullptr;  // the query asked, for the query functions
+  int k = 0;                     // the k-DOP's k and
+  std::size_t points = 0;        // its number of points, for kdop
+};
+
+// "in vertex_face_ccd on query FILE:LINE" (or on query 'ID' for a generated query; "in kdop (k =
+// 18) on 8 points"): the words of every message about a call.
+std::string where(const CallSite& site);
+
+// Installs the crash handlers (once; later calls do nothing) and an alternate signal stack, so
+// that a plug-in's stack overflow is reported too.
+void install_crash_handlers();
+
+// Where a crash is reported: standard error (2) unless the probe's child says otherwise.
+void set_crash_report_fd(int fd);
+
+// Marks the calling thread as inside `site` for the object's lifetime.
+class InCall {
+ public:
+  explicit InCall(const CallSite& site);
+  ~InCall();
+  InCall(const InCall&) = delete;
+  InCall& operator=(const InCall&) = delete;
+
+ private:
+  const CallSite* outer_;
+};
+
+}  // namespace fdh::verify::plugin

@@ -1,0 +1,178 @@
+#include "fdh/plugin/loader.hpp"
+
+#include <dlfcn.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include "fdh/check/registry.hpp"
+#include "fdh/plugin.h"
+#include "guard.hpp"
+#include "probe.hpp"
+
+namespace fdh::verify {
+namespace {
+
+using plugin::CallSite;
+using plugin::InCall;
+
+// A loaded plug-in: its struct, copied, and its name. The library stays loaded for the process
+// (its functions are in the registry until the run ends).
+struct Loaded {
+  std::string path, name;
+  fdh_plugin api{};
+};
+using LoadedPtr = std::shared_ptr<const Loaded>;
+
+[[noreturn]] void refuse(const std::string& path, const std::string& why) {
+  throw PluginLoadError("plug-in " + path + ": " + why + " (docs/plugins.md)");
+}
+
+// A letter or digit, then letters, digits and . _ + -: never a path like "..", since fuzz makes
+// folders of method names.
+bool is_name(const char* s) {
+  if (!s || !std::isalnum(static_cast<unsigned char>(s[0]))) return false;
+  std::size_t n = 0;
+  for (; s[n]; ++n)
+    if (n >= 40 || !(std::isalnum(static_cast<unsigned char>(s[n])) || std::strchr("._+-", s[n])))
+      return false;
+  return n > 0;
+}
+
+// The struct the entry point returns, checked field by field.
+fdh_plugin entry_struct(const std::string& path) {
+  // A file path, never a name for dlopen to search for.
+  const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
+  void* lib = ::dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!lib) refuse(path, std::string("cannot load: ") + ::dlerror());
+  const auto entry = reinterpret_cast<const fdh_plugin* (*)()>(::dlsym(lib, "fdh_plugin_v1"));
+  if (!entry) refuse(path, "exports no fdh_plugin_v1 (an fdhcert plug-in must)");
+  const CallSite site{path.c_str(), "fdh_plugin_v1"};
+  const fdh_plugin* p = nullptr;
+  {
+    const InCall in(site);
+    p = entry();
+  }
+  if (!p) refuse(path, "fdh_plugin_v1 returned NULL");
+  if (p->abi_version != FDH_PLUGIN_ABI_VERSION)
+    refuse(path, "ABI version " + std::to_string(p->abi_version) + ", but this fdhcert takes " +
+                     std::to_string(FDH_PLUGIN_ABI_VERSION));
+  if (!is_name(p->name))
+    refuse(path, "its name is not a letter or digit, then up to 39 of a-z A-Z 0-9 . _ + -");
+  if (p->promise < FDH_PROMISE_NONE || p->promise > FDH_PROMISE_EXACT)
+    refuse(path, "promise " + std::to_string(p->promise) + " is none of 0, 1, 2");
+  if ((p->kdop_ks & ~0xfu) || (p->kdop_ks != 0) != (p->kdop != nullptr))
+    refuse(path, "kdop_ks must name the k of a kdop builder (FDH_KDOP_* bits), and only then");
+  if (!p->point_triangle && !p->vertex_face_ccd && !p->edge_edge_ccd && !p->kdop)
+    refuse(path, "it has no function");
+  return *p;
+}
+
+// A query function as a registry test: the 8 points in, 0 or 1 out, anything else garbage.
+QueryTest query_test(const LoadedPtr& p, fdh_query_fn f, const char* function) {
+  return [p, f, function](const Query& q) {
+    double x[8][3];
+    for (int i = 0; i < 8; ++i) x[i][0] = q.x[i].x, x[i][1] = q.x[i].y, x[i][2] = q.x[i].z;
+    const CallSite site{p->name.c_str(), function, &q};
+    int r;
+    {
+      const InCall in(site);
+      r = f(x);
+    }
+    if (r != 0 && r != 1)
+      throw PluginFailure("plug-in " + p->name + " returned " + std::to_string(r) +
+                          " (garbage: not 0 or 1) " + plugin::where(site));
+    return r == 1;
+  };
+}
+
+Method query_method(const LoadedPtr& p) {
+  Method m;
+  m.name = p->name;
+  m.summary = std::string(p->api.summary ? p->api.summary : "") + " (plug-in " + p->path + ")";
+  m.promise = Promise(p->api.promise == FDH_PROMISE_EXACT          ? Promise::Exact
+                      : p->api.promise == FDH_PROMISE_CONSERVATIVE ? Promise::Conservative
+                                                                   : Promise::None);
+  const fdh_plugin& a = p->api;
+  // A still triangle is a moving one that stays: the CCD decides when there is no static test.
+  if (a.point_triangle || a.vertex_face_ccd)
+    m.test[std::size_t(Decision::PointTriangle)] =
+        a.point_triangle ? query_test(p, a.point_triangle, "point_triangle")
+                         : query_test(p, a.vertex_face_ccd, "vertex_face_ccd");
+  if (a.vertex_face_ccd)
+    m.test[std::size_t(Decision::VertexFaceCcd)] =
+        query_test(p, a.vertex_face_ccd, "vertex_face_ccd");
+  if (a.edge_edge_ccd)
+    m.test[std::size_t(Decision::EdgeEdgeCcd)] = query_test(p, a.edge_edge_ccd, "edge_edge_ccd");
+  return m;
+}
+
+// `v` in the fewest digits that read back as v.
+std::string shortest(double v) {
+  char text[32];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    if (std::strtod(text, nullptr) == v || std::isnan(v)) break;
+  }
+  return text;
+}
+
+// The builder for one k; garbage is a slab with NaN or lo > hi.
+BoxMethod box_method(const LoadedPtr& p, int k) {
+  BoxMethod b;
+  b.name = p->name;
+  b.summary = std::string(p->api.summary ? p->api.summary : "") + " (plug-in " + p->path + ")";
+  b.k = k;
+  b.promise = Promise::Conservative;
+  b.build = [p, k](const Vec3* pts, std::size_t n, double* lo, double* hi) {
+    std::vector<double> xyz;
+    for (std::size_t i = 0; i < n; ++i) xyz.insert(xyz.end(), {pts[i].x, pts[i].y, pts[i].z});
+    const CallSite site{p->name.c_str(), "kdop", nullptr, k, n};
+    {
+      const InCall in(site);
+      p->api.kdop(k, reinterpret_cast<const double(*)[3]>(xyz.data()), n, lo, hi);
+    }
+    for (int s = 0; s < k / 2; ++s)
+      if (!std::isfinite(lo[s]) || !std::isfinite(hi[s]) || lo[s] > hi[s])
+        throw PluginFailure("plug-in " + p->name + " returned slab " + std::to_string(s) + " = [" +
+                            shortest(lo[s]) + ", " + shortest(hi[s]) +
+                            "] (garbage: not finite, or lo > hi) " + plugin::where(site));
+  };
+  // Closed slabs, as fdh::overlap: touching counts.
+  b.overlap = [k](const double* la, const double* ha, const double* lb, const double* hb) {
+    for (int s = 0; s < k / 2; ++s)
+      if (ha[s] < lb[s] || hb[s] < la[s]) return false;
+    return true;
+  };
+  return b;
+}
+
+}  // namespace
+
+void load_plugin(const std::string& path) {
+  plugin::install_crash_handlers();
+  auto loaded = std::make_shared<Loaded>();
+  loaded->path = path;
+  loaded->api = entry_struct(path);
+  loaded->name = loaded->api.name;
+  const LoadedPtr p = loaded;
+  std::vector<Method> methods;
+  if (p->api.point_triangle || p->api.vertex_face_ccd || p->api.edge_edge_ccd)
+    methods.push_back(query_method(p));
+  std::vector<BoxMethod> boxes;
+  for (int i = 0; i < 4; ++i)
+    if (p->api.kdop_ks & (1u << i)) boxes.push_back(box_method(p, kCertifiedK[std::size_t(i)]));
+  try {
+    add_methods(methods, boxes);  // a taken name is refused before the probe
+  } catch (const std::invalid_argument& e) {
+    refuse(path, std::string(e.what()) + ": rename the plug-in");
+  }
+  plugin::probe(p->name, methods, boxes);
+}
+
+}  // namespace fdh::verify

@@ -1,0 +1,135 @@
+#include "probe.hpp"
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "fdh/plugin/loader.hpp"
+#include "guard.hpp"
+
+namespace fdh::verify::plugin {
+namespace {
+
+Query probe_query(QueryKind kind, const char* id, std::array<Vec3, 8> x) {
+  Query q;
+  q.kind = kind;
+  q.id = std::string("probe/") + id;
+  q.x = x;
+  return q;
+}
+
+// Ordinary inputs of every decision: a hit, a miss, a degenerate one, extreme coordinates.
+std::vector<Query> probe_queries() {
+  const Vec3 d{0, 0, 0}, e{1, 0, 0}, f{0, 1, 0};
+  const QueryKind vf = QueryKind::VertexFace, ee = QueryKind::EdgeEdge;
+  return {
+      probe_query(vf, "through-triangle", {{{.25, .25, 1}, d, e, f, {.25, .25, -1}, d, e, f}}),
+      probe_query(vf, "beside-triangle", {{{2, 2, 1}, d, e, f, {2, 2, -1}, d, e, f}}),
+      probe_query(vf, "all-at-origin", {}),
+      probe_query(vf, "triangle-rising-through-point",
+                  {{{.25, .25, .5}, d, e, f, {.25, .25, .5}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}}}),
+      probe_query(vf, "extreme-coordinates",
+                  {{{1e30, 0.1, -0.0}, d, {-1e30, 0, 0}, f, {-1e30, -1e30, 5e-324}, d, e, f}}),
+      probe_query(ee, "edges-crossing",
+                  {{d, e, {.5, -1, 1}, {.5, 1, 1}, d, e, {.5, -1, -1}, {.5, 1, -1}}}),
+      probe_query(ee, "edges-apart", {{d, e, {0, 5, 1}, {1, 5, 1}, d, e, {0, 5, 2}, {1, 5, 2}}}),
+      probe_query(ee, "all-at-origin", {}),
+  };
+}
+
+void run_probes(const std::vector<Method>& methods, const std::vector<BoxMethod>& boxes) {
+  const std::vector<Query> queries = probe_queries();
+  for (const Method& m : methods)
+    for (const Query& q : queries)
+      if (m.applies_to(q)) m.hit(q);
+  double lo[13], hi[13];
+  for (const BoxMethod& b : boxes)
+    for (const Query& q : queries)
+      for (std::size_t n : {std::size_t(1), std::size_t(3), std::size_t(8)})
+        b.build(q.x.data(), n, lo, hi);
+}
+
+// The child: probes, then says "ok" on `fd` (a plug-in that calls exit() never says it).
+[[noreturn]] void child(int fd, const std::vector<Method>& methods,
+                        const std::vector<BoxMethod>& boxes) {
+  set_crash_report_fd(fd);
+  std::string said = "ok";
+  int status = 0;
+  try {
+    run_probes(methods, boxes);
+  } catch (const std::exception& e) {
+    said = std::string("fdhcert: ") + e.what() + "\n";
+    status = kPluginFailureStatus;
+  }
+  for (std::size_t done = 0; done < said.size();) {
+    const ssize_t w = ::write(fd, said.data() + done, said.size() - done);
+    if (w <= 0) break;
+    done += std::size_t(w);
+  }
+  ::_exit(status);
+}
+
+// Everything the child writes on `fd` until it closes it or `seconds` pass; nullopt on timeout.
+std::optional<std::string> read_until_closed(int fd, double seconds) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  std::string text;
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) return std::nullopt;
+    pollfd p{fd, POLLIN, 0};
+    const int ready = ::poll(&p, 1, int(left.count()));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready <= 0) continue;  // the deadline is checked above
+    char buf[512];
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return text;
+    text.append(buf, std::size_t(n));
+  }
+}
+
+}  // namespace
+
+void probe(const std::string& plugin, const std::vector<Method>& methods,
+           const std::vector<BoxMethod>& boxes, double seconds) {
+  int fds[2];
+  if (::pipe(fds) != 0) throw std::runtime_error("cannot probe plug-in " + plugin + ": no pipe");
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0) throw std::runtime_error("cannot probe plug-in " + plugin + ": no process");
+  if (pid == 0) {
+    ::close(fds[0]);
+    child(fds[1], methods, boxes);
+  }
+  ::close(fds[1]);
+  const std::optional<std::string> said = read_until_closed(fds[0], seconds);
+  ::close(fds[0]);
+  if (!said) ::kill(pid, SIGKILL);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  const std::string what = "plug-in " + plugin;
+  if (!said)
+    throw PluginFailure(what + " did not answer within " + std::to_string(int(seconds)) +
+                        " s when probed on built-in inputs");
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && *said == "ok") return;
+  const std::string prefix = "fdhcert: ";
+  if (WIFEXITED(status) && WEXITSTATUS(status) == kPluginFailureStatus &&
+      said->rfind(prefix, 0) == 0)
+    throw PluginFailure(said->substr(prefix.size(), said->find('\n') - prefix.size()));
+  throw PluginFailure(what + " ended the process (" +
+                      (WIFSIGNALED(status) ? "signal " + std::to_string(WTERMSIG(status))
+                                           : "exit status " + std::to_string(WEXITSTATUS(status))) +
+                      ") when probed on built-in inputs");
+}
+
+}  // namespace fdh::verify::plugin

@@ -1,0 +1,18 @@
+// Probing a plug-in before a run: its functions on a few built-in inputs, in a forked child, so
+// that a plug-in that crashes, answers garbage or hangs on ordinary input is refused before any
+// work starts, with the words of the call that failed.
+#pragma once
+
+#include <vector>
+
+#include "fdh/check/registry.hpp"
+
+namespace fdh::verify::plugin {
+
+// Runs every query test of `methods` and every builder of `boxes` on the built-in inputs in a
+// child process. Throws PluginFailure saying what went wrong when the child crashed, answered
+// garbage, ended early or did not finish within `seconds`.
+void probe(const std::string& plugin, const std::vector<Method>& methods,
+           const std::vector<BoxMethod>& boxes, double seconds = 10);
+
+}  // namespace fdh::verify::plugin
