@@ -1,11 +1,12 @@
 // classify, as the program does it: files through the fdhcert program itself (in-process), and
 // arrays through the same classification and the same JSON, so the tallies are the CLI's.
 #include <nlohmann/json.hpp>
-#include <sstream>
+#include <optional>
 
 #include "bindings.hpp"
 #include "fdh/check/classify.hpp"
-#include "fdh/cli/cli.hpp"
+#include "fdh/io/input_error.hpp"
+#include "fdh/io/query_io.hpp"
 #include "fdh/suite/report.hpp"
 
 namespace fdh::python {
@@ -15,39 +16,30 @@ py::object to_python(const std::string& json_text) {
   return py::module_::import("json").attr("loads")(json_text);
 }
 
-std::string comma_list(const std::vector<std::string>& names) {
-  std::string s;
-  for (const std::string& n : names) s += (s.empty() ? "" : ",") + n;
-  return s;
-}
-
-// The program's words for what went wrong, without its "fdhcert: error: " prefix.
-std::string program_message(std::string message) {
-  for (const char* prefix : {"fdhcert: error: ", "fdhcert: "})
-    if (message.rfind(prefix, 0) == 0) message.erase(0, std::string(prefix).size());
-  while (!message.empty() && message.back() == '\n') message.pop_back();
-  return message;
-}
-
-// `fdhcert classify --json` on the files; bad input raises InputError with its message.
+// `fdhcert classify --json` on the files: each file read and classified as the program does
+// (verify/cli/src/classify.cpp), the files joined into the total; bad input raises InputError
+// with the program's message.
 py::object classify_files(const std::vector<std::string>& files,
                           const std::vector<std::string>& methods, const std::string& kind,
                           int gate) {
   if (files.empty()) throw py::value_error("classify needs at least one file");
-  std::vector<std::string> args = {"classify", "--json"};
-  if (!methods.empty()) args.insert(args.end(), {"--methods", comma_list(methods)});
-  if (!kind.empty()) args.insert(args.end(), {"--kind", kind});
-  if (gate) args.insert(args.end(), {"--gate", std::to_string(gate)});
-  args.push_back("--");
-  args.insert(args.end(), files.begin(), files.end());
-  std::ostringstream out, err;
-  int status = 0;
-  {
+  if (!kind.empty() && kind != "vf" && kind != "ee")
+    throw py::value_error("kind must be 'vf' or 'ee', not '" + kind + "'");
+  std::optional<QueryKind> k;
+  if (!kind.empty()) k = kind == "ee" ? QueryKind::EdgeEdge : QueryKind::VertexFace;
+  const std::vector<verify::Method> ms =
+      methods.empty() ? verify::all_methods(gate) : verify::select_methods(methods, gate);
+  std::vector<verify::FileClassification> per_file;
+  std::vector<verify::Classification> parts;
+  for (const std::string& f : files) {
+    const std::vector<Query> qs = verify::read_query_file(f, k);
+    if (qs.empty()) continue;
     py::gil_scoped_release release;
-    status = verify::run_cli(args, out, err);
+    parts.push_back(verify::classify(qs, ms));
+    per_file.push_back({f, parts.back()});
   }
-  if (status != 0) throw BadInput(program_message(err.str()));
-  return to_python(out.str());
+  if (parts.empty()) throw verify::InputError(files.front(), 0, "no query to classify");
+  return to_python(verify::classification_json(per_file, verify::join(parts), {gate}).dump());
 }
 
 // The same tallies for queries held in an array: one "file" named "<array>".
@@ -80,13 +72,11 @@ py::object classify_arrays(const Points& a, const std::string& kind, py::object 
 
 void add_classify(py::module_& m) {
   m.def("classify", &classify_files, py::arg("files"),
-        py::arg("methods") = std::vector<std::string>{}, py::arg("kind") = "",
-        py::arg("gate") = 0,
+        py::arg("methods") = std::vector<std::string>{}, py::arg("kind") = "", py::arg("gate") = 0,
         "`fdhcert classify --json` on query files (native .vf or benchmark .csv): a dict of "
         "tallies per method, in total and per file. kind: 'vf' or 'ee' for CSVs; gate: a k.");
-  m.def("classify_arrays", &classify_arrays, py::arg("queries"),
-        py::arg("kind") = "vertex-face", py::arg("truth") = py::none(),
-        py::arg("methods") = std::vector<std::string>{},
+  m.def("classify_arrays", &classify_arrays, py::arg("queries"), py::arg("kind") = "vertex-face",
+        py::arg("truth") = py::none(), py::arg("methods") = std::vector<std::string>{},
         "The same tallies for an N×8×3 array of one kind, against `truth` (N zeros and ones) "
         "or, without it, the exact twin.");
 }

@@ -1,7 +1,7 @@
 // k-DOPs of point sets: the conservative float k-DOP of fast/ (it contains the exact FDH of the
 // points), with its slab directions.
-#include "bindings.hpp"
 #include "fdh/kdop.hpp"
+#include "bindings.hpp"
 
 namespace fdh::python {
 namespace {

@@ -1,28 +1,8 @@
 // The module `fdhcert`: errors become Python exceptions carrying the fdhcert program's messages.
 #include <pybind11/pybind11.h>
 
-#include <sstream>
-
 #include "bindings.hpp"
-#include "fdh/cli/cli.hpp"
 #include "fdh/io/input_error.hpp"
-
-namespace fdh::python {
-namespace {
-
-// The program itself, in-process: (exit status, standard output, standard error).
-py::tuple run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  int status = 0;
-  {
-    py::gil_scoped_release release;
-    status = verify::run_cli(args, out, err);
-  }
-  return py::make_tuple(status, out.str(), err.str());
-}
-
-}  // namespace
-}  // namespace fdh::python
 
 PYBIND11_MODULE(fdhcert, m) {
   namespace py = pybind11;
@@ -40,8 +20,6 @@ PYBIND11_MODULE(fdhcert, m) {
       input_error(e.what());
     }
   });
-  m.def("cli", &run, py::arg("args"),
-        "Runs the fdhcert program in-process: (exit status, stdout, stderr).");
   add_queries(m);
   add_kdop(m);
   add_classify(m);

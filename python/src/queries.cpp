@@ -38,8 +38,8 @@ namespace {
 
 // The verdicts of `method` on every query, as its decision `d` asks.
 py::array_t<bool> decide(const Points& a, const std::string& method, verify::Decision d) {
-  const std::vector<Query> qs =
-      queries_of(a, d == verify::Decision::EdgeEdgeCcd ? QueryKind::EdgeEdge : QueryKind::VertexFace);
+  const std::vector<Query> qs = queries_of(
+      a, d == verify::Decision::EdgeEdgeCcd ? QueryKind::EdgeEdge : QueryKind::VertexFace);
   const verify::Method m = verify::select_methods({method}).front();
   const auto& test = m.test[std::size_t(d)];
   if (!test) throw py::value_error(method + " does not decide " + verify::to_string(d));
@@ -74,29 +74,35 @@ py::dict contact_time(const Points& a, const std::string& kind) {
 }  // namespace
 
 void add_queries(py::module_& m) {
-  m.def("methods", [] {
-    std::vector<std::string> names;
-    for (const verify::Method& x : verify::all_methods()) names.push_back(x.name);
-    return names;
-  }, "The query methods of the registry, the exact twin first.");
-  m.def("point_triangle",
-        [](const Points& a, const std::string& method) {
-          return decide(a, method, verify::Decision::PointTriangle);
-        },
-        py::arg("queries"), py::arg("method") = "robust",
-        "Static vertex-face: does B→B' touch the still triangle DEF? N×8×3 → N booleans.");
-  m.def("vertex_face_ccd",
-        [](const Points& a, const std::string& method) {
-          return decide(a, method, verify::Decision::VertexFaceCcd);
-        },
-        py::arg("queries"), py::arg("method") = "robust",
-        "Moving point against moving triangle over the step. N×8×3 → N booleans.");
-  m.def("edge_edge_ccd",
-        [](const Points& a, const std::string& method) {
-          return decide(a, method, verify::Decision::EdgeEdgeCcd);
-        },
-        py::arg("queries"), py::arg("method") = "robust",
-        "Two moving edges over the step. N×8×3 → N booleans.");
+  m.def(
+      "methods",
+      [] {
+        std::vector<std::string> names;
+        for (const verify::Method& x : verify::all_methods()) names.push_back(x.name);
+        return names;
+      },
+      "The query methods of the registry, the exact twin first.");
+  m.def(
+      "point_triangle",
+      [](const Points& a, const std::string& method) {
+        return decide(a, method, verify::Decision::PointTriangle);
+      },
+      py::arg("queries"), py::arg("method") = "robust",
+      "Static vertex-face: does B→B' touch the still triangle DEF? N×8×3 → N booleans.");
+  m.def(
+      "vertex_face_ccd",
+      [](const Points& a, const std::string& method) {
+        return decide(a, method, verify::Decision::VertexFaceCcd);
+      },
+      py::arg("queries"), py::arg("method") = "robust",
+      "Moving point against moving triangle over the step. N×8×3 → N booleans.");
+  m.def(
+      "edge_edge_ccd",
+      [](const Points& a, const std::string& method) {
+        return decide(a, method, verify::Decision::EdgeEdgeCcd);
+      },
+      py::arg("queries"), py::arg("method") = "robust",
+      "Two moving edges over the step. N×8×3 → N booleans.");
   m.def("contact_time", &contact_time, py::arg("query"), py::arg("kind") = "vertex-face",
         "The exact earliest contact of one moving query (8×3): hit, the time as a Fraction "
         "when it is rational, and an isolating interval of Fractions.");

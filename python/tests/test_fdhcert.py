@@ -1,0 +1,161 @@
+"""The Python module against the fdhcert program on the same inputs (ctest python_module)."""
+import csv
+import json
+import os
+import subprocess
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import fdhcert
+
+FDHCERT = os.environ["FDHCERT_BIN"]
+SOURCE = Path(os.environ["FDH_SOURCE_DIR"])
+DATA = SOURCE / "tests" / "data"
+SAMPLE = SOURCE.parent / "shared" / "ccd-sample"
+
+
+def program(*args):
+    return subprocess.run([FDHCERT, *map(str, args)], capture_output=True, text=True)
+
+
+def without_times(tallies):
+    """A classify dict with the timings (which differ from run to run) taken out."""
+    out = json.loads(json.dumps(tallies))
+    for block in [out] + out.get("files", []):
+        for m in block["methods"].values():
+            m.pop("ns_per_query", None)
+    return out
+
+
+def read_vf(path):
+    """The queries of a native file as (kinds, N×8×3 points, truths)."""
+    kinds, points, truths = [], [], []
+    for line in Path(path).read_text().splitlines():
+        f = line.split()
+        if not f or f[0].startswith("#"):
+            continue
+        kinds.append("vertex-face" if f[0] == "vf" else "edge-edge")
+        points.append([float.fromhex(x) if "0x" in x else float(x) for x in f[2:26]])
+        truths.append(int(f[26]) if len(f) > 26 else -1)
+    return kinds, np.array(points).reshape(-1, 8, 3), truths
+
+
+def per_query(path):
+    """The program's per-query verdicts: {method: [0/1/None per query]}."""
+    out = Path(os.environ.get("TMPDIR", "/tmp")) / f"fdhcert-pytest-{os.getpid()}.csv"
+    try:
+        assert program("classify", path, "--per-query", out).returncode == 0
+        rows = list(csv.DictReader(out.open()))
+    finally:
+        out.unlink(missing_ok=True)
+    return {m: [None if r[m] == "n/a" else int(r[m]) for r in rows] for m in fdhcert.methods()}
+
+
+def test_the_registry_lists_the_twin_first_and_robust():
+    assert fdhcert.methods()[0] == "exact"
+    assert "robust" in fdhcert.methods()
+
+
+@pytest.mark.parametrize("name", ["static.vf", "moving.vf"])
+def test_classify_of_files_gives_the_programs_tallies(name):
+    cli = json.loads(program("classify", DATA / name, "--json").stdout)
+    assert without_times(fdhcert.classify([str(DATA / name)])) == without_times(cli)
+
+
+def test_classify_of_arrays_gives_the_programs_tallies():
+    kinds, points, truths = read_vf(DATA / "static.vf")
+    keep = [i for i, t in enumerate(truths) if t >= 0]
+    mine = fdhcert.classify_arrays(points[keep], truth=np.array(truths)[keep])
+    text = "".join(l for l in (DATA / "static.vf").read_text().splitlines(True)
+                   if l.startswith("#") or len(l.split()) > 26 or not l.split())
+    path = Path("/tmp") / f"fdhcert-pytest-{os.getpid()}.vf"
+    path.write_text(text)
+    try:
+        cli = json.loads(program("classify", path, "--json").stdout)
+    finally:
+        path.unlink()
+    for name, tally in cli["methods"].items():
+        for count in ("tp", "tn", "fp", "fn", "na"):
+            assert mine["methods"][name][count] == tally[count], (name, count)
+
+
+@pytest.mark.parametrize("name", ["static.vf", "moving.vf"])
+def test_batched_verdicts_match_the_programs_per_query_verdicts(name):
+    kinds, points, _ = read_vf(DATA / name)
+    expected = per_query(DATA / name)
+    for method in ("exact", "robust", "float-cubic"):
+        for i, kind in enumerate(kinds):
+            one = points[i:i + 1]
+            if kind == "edge-edge":
+                got = fdhcert.edge_edge_ccd(one, method)
+            elif name == "static.vf":
+                got = fdhcert.point_triangle(one, method)
+            else:
+                got = fdhcert.vertex_face_ccd(one, method)
+            assert int(got[0]) == expected[method][i], (method, i)
+
+
+@pytest.mark.skipif(not SAMPLE.is_dir(), reason="no ../shared/ccd-sample")
+def test_robust_equals_exact_on_the_ccd_sample_in_batches():
+    for path in sorted(SAMPLE.glob("*/*/*.csv"))[::4]:
+        # 8 rows per query: x_num,x_den,y_num,y_den,z_num,z_den,truth (exact doubles)
+        rows = [line.split(",") for line in path.read_text().split()]
+        coords = [[float(Fraction(int(r[i]), int(r[i + 1]))) for i in (0, 2, 4)] for r in rows]
+        queries = np.array(coords).reshape(-1, 8, 3)
+        test = fdhcert.edge_edge_ccd if "edge-edge" in str(path) else fdhcert.vertex_face_ccd
+        assert (test(queries, "robust") == test(queries, "exact")).all(), path
+
+
+def test_the_exact_contact_time_is_a_fraction():
+    _, points, _ = read_vf(DATA / "moving.vf")
+    rising = fdhcert.contact_time(points[0], "vertex-face")
+    assert rising == {"hit": True, "time": Fraction(1, 2), "interval": (Fraction(1, 2),) * 2}
+    assert fdhcert.contact_time(points[2], "edge-edge")["hit"] is False
+
+
+@pytest.mark.parametrize("k", [6, 14, 18, 26])
+def test_a_kdop_contains_its_points_exactly(k):
+    pts = np.random.default_rng(k).normal(size=(50, 3)) * 1e3
+    lo, hi, dirs = fdhcert.kdop(pts, k)
+    assert lo.shape == hi.shape == (k // 2,) and dirs.shape == (k // 2, 3)
+    for p in pts:
+        for s, d in enumerate(dirs):
+            dot = sum(Fraction(int(c)) * Fraction(x) for c, x in zip(d, p))
+            assert Fraction(lo[s]) <= dot <= Fraction(hi[s])
+
+
+def test_a_scene_runs_into_arrays():
+    run = fdhcert.simulate(str(SOURCE / "corpus/scenes/table.scene"), frames=20, grid=10,
+                           every=5)
+    assert run["frames"] == [5, 10, 15, 20]
+    assert run["positions"].shape == (4, 100, 3)
+    assert run["triangles"].shape == (2 * 9 * 9, 3)
+    assert (run["positions"][-1] == run["final"]).all()
+    assert run["summary"]["frames"] == 20 and run["summary"]["particles"] == 100
+
+
+def test_bad_input_raises_the_programs_message(tmp_path):
+    bad = tmp_path / "bad.vf"
+    bad.write_text("vf 1\n0 0 0\n")
+    cli = program("classify", bad)
+    assert cli.returncode == 2
+    with pytest.raises(fdhcert.InputError) as e:
+        fdhcert.classify([str(bad)])
+    assert cli.stderr.strip().endswith(str(e.value))
+    assert str(e.value).startswith(f"{bad}:1: ")
+
+
+def test_bad_arrays_raise_value_errors():
+    with pytest.raises(ValueError, match="N×8×3"):
+        fdhcert.vertex_face_ccd(np.zeros((2, 7, 3)))
+    with pytest.raises(ValueError, match="not finite"):
+        fdhcert.point_triangle(np.full((1, 8, 3), np.nan))
+    with pytest.raises(ValueError, match="triangle moves"):
+        fdhcert.point_triangle(np.arange(24.0).reshape(1, 8, 3))
+    with pytest.raises(ValueError, match="k must be"):
+        fdhcert.kdop(np.zeros((3, 3)), 10)
+    with pytest.raises(ValueError, match="paper-intended does not decide"):
+        fdhcert.edge_edge_ccd(np.zeros((1, 8, 3)), "paper-intended")
