@@ -19,20 +19,22 @@ robust, k = 18, writes OUT/NAME.png and OUT/NAME.json (the object of
 simulate --json, docs/formats.md), and prints one line per scene: its grid,
 frames, ms per frame, FP and FN against the exact test, and the exact audit
 (particles inside, crossing edges, self-crossings; - where not audited).
+With --movies, also OUT/NAME-movie.png: the run as an animated PNG.
 `./run verify` runs it into docs/scenes.
 )";
 
 struct ScenesOptions {
   std::string scenes = "corpus/scenes", out_dir = "scenes";
+  bool movies = false;
 };
 
 int run_scenes(const ScenesOptions& o, const Io& io) {
   check_output_dir(o.out_dir);  // and each scene's outputs, in run_scene_folder, before any run
-  const auto runs = run_scene_folder(o.scenes, o.out_dir, [&](const SceneFolderRun& r) {
-    io.out << scene_summary_line(r) << std::endl;
-  });
-  io.out << "scenes: wrote a picture and a JSON for each of " << runs.size() << " scenes to "
-         << o.out_dir << "\n";
+  const auto runs = run_scene_folder(
+      o.scenes, o.out_dir,
+      [&](const SceneFolderRun& r) { io.out << scene_summary_line(r) << std::endl; }, o.movies);
+  io.out << "scenes: wrote a picture" << (o.movies ? ", a movie" : "") << " and a JSON for each of "
+         << runs.size() << " scenes to " << o.out_dir << "\n";
   return 0;
 }
 
@@ -46,6 +48,9 @@ Command add_scenes(CLI::App& app) {
   cmd->add_option("--out", o->out_dir,
                   "where the pictures and JSON go, created if needed (default:\nscenes)")
       ->type_name("DIR");
+  cmd->add_flag("--movies", o->movies,
+                "also render each run to OUT/NAME-movie.png, an animated PNG\n"
+                "(simulate --movie)");
   return {cmd, [o](const Io& io) { return run_scenes(*o, io); }};
 }
 

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "commands.hpp"
 #include "fdh/io/atomic_file.hpp"
@@ -40,7 +41,8 @@ grows), 0.9 times the stable step is used, and the output says so.
 Exit status: 0; 2 for bad input. A scene error names the file and line.)";
 
 struct SimulateOptions {
-  std::string scene_path, obj_dir, png, record;
+  std::string scene_path, obj_dir, png, record, movie;
+  int movie_frames = 60;
   int grid = 0;           // 0: the scene's
   std::string thickness;  // "": the scene's
   std::string self;       // "on", "off" or "": the scene's
@@ -72,6 +74,8 @@ class Outputs {
       std::filesystem::create_directories(o.obj_dir, ec);
       if (ec) throw std::runtime_error(o.obj_dir + ": cannot create folder: " + ec.message());
     }
+    if (!o.movie.empty())
+      movie_.emplace(scene, o.run.frames < 0 ? scene.frames : o.run.frames, o.movie_frames);
     if (!o.record.empty()) {
       recording_ = std::make_unique<AtomicFile>(o.record);
       recording_->stream() << "# fdhcert simulate " << o.scene_path
@@ -81,6 +85,7 @@ class Outputs {
   const TriMesh& obstacles() const { return obstacles_; }
 
   void frame(const cloth::Simulation& sim, int frame) {
+    if (movie_) movie_->frame(sim, frame);
     if (!o_.obj_dir.empty())
       write_obj(o_.obj_dir + fmt::format("/frame_{:05d}.obj", frame),
                 {{"cloth", &sim.cloth().x(), &sim.cloth().triangles(), kClothColour},
@@ -96,12 +101,14 @@ class Outputs {
   void finish(const cloth::Scene& scene, const SceneRun& r) {
     if (recording_) recording_->commit();
     if (!o_.png.empty()) write_scene_png(o_.png, scene, r);
+    if (movie_ && r.frames > 0) movie_->write(o_.movie);
   }
 
  private:
   const SimulateOptions& o_;
   TriMesh obstacles_;
   std::unique_ptr<AtomicFile> recording_;
+  std::optional<SceneMovie> movie_;
 };
 
 // The scene, the step, and the time per frame.
@@ -152,6 +159,7 @@ void print_counts(std::ostream& out, const SimulateOptions& o, const cloth::Scen
         "over the frames\n",
         r.audit.self_crossing);
   if (!o.png.empty()) out << "picture        " << o.png << "\n";
+  if (!o.movie.empty() && r.frames > 0) out << "movie          " << o.movie << "\n";
   if (!o.record.empty()) out << "queries        " << o.record << "\n";
   if (!o.obj_dir.empty()) out << "frames         " << o.obj_dir << "/frame_*.obj\n";
 }
@@ -159,6 +167,7 @@ void print_counts(std::ostream& out, const SimulateOptions& o, const cloth::Scen
 // Every output checked before the scene is read or run: one bad path writes nothing.
 void check_outputs(const SimulateOptions& o) {
   if (!o.png.empty()) check_output_path(o.png);
+  if (!o.movie.empty()) check_output_path(o.movie);
   if (!o.record.empty()) check_output_path(o.record);
   if (!o.obj_dir.empty()) check_output_dir(o.obj_dir);
 }
@@ -230,6 +239,15 @@ void add_output_options(CLI::App& cmd, SimulateOptions& o) {
                  "obstacles), for Blender or ParaView")
       ->type_name("DIR");
   cmd.add_option("--png", o.png, "render the last frame to FILE")->type_name("FILE");
+  cmd.add_option("--movie", o.movie,
+                 "render the run to FILE as an animated PNG (APNG, 480x360,\n"
+                 "20 frames per second, looping; browsers play it)")
+      ->type_name("FILE");
+  cmd.add_option("--movie-frames", o.movie_frames,
+                 "about how many frames the movie shows, evenly spread\n"
+                 "over the run (default 60)")
+      ->type_name("N")
+      ->check(CLI::Range(1, 10000));
   cmd.add_option("--record", o.record,
                  "write every narrow-phase query of the run to FILE in the\n"
                  "native vf format, for `fdhcert classify FILE`")

@@ -47,15 +47,9 @@ Vec3 unit(const Vec3& v) {
   return (1 / norm(v)) * v;
 }
 
-Camera fit_camera(const std::vector<SceneMesh>& meshes, int width, int height) {
-  Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
-  for (const SceneMesh& m : meshes)
-    for (const Vec3& p : *m.x) {
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
-  const Vec3 centre = 0.5 * (lo + hi);
-  const double radius = std::max(0.5 * norm(hi - lo), 1e-9);
+Camera fit_camera(const Framing& view, int width, int height) {
+  const Vec3 centre = view.centre;
+  const double radius = view.radius;
   Camera c;
   c.width = width, c.height = height;
   c.forward = unit(Vec3{-0.55, -0.45, -1.0});  // from front, right and above
@@ -69,66 +63,101 @@ Camera fit_camera(const std::vector<SceneMesh>& meshes, int width, int height) {
 
 }  // namespace
 
-void write_png(const std::string& path, const std::vector<SceneMesh>& meshes, int width,
-               int height) {
-  const Camera cam = fit_camera(meshes, width, height);
-  std::vector<unsigned char> rgb(std::size_t(width) * height * 3);
-  std::vector<double> depth(std::size_t(width) * height, std::numeric_limits<double>::infinity());
-  for (int y = 0; y < height; ++y)  // a soft vertical gradient behind everything
-    for (int x = 0; x < width; ++x) {
-      const double s = 0.75 + 0.2 * y / height;
+namespace {
+
+// The picture's background: a soft vertical gradient.
+void fill_background(Picture& pic) {
+  for (int y = 0; y < pic.height; ++y)
+    for (int x = 0; x < pic.width; ++x) {
+      const double s = 0.75 + 0.2 * y / pic.height;
       for (int k = 0; k < 3; ++k)
-        rgb[(std::size_t(y) * width + x) * 3 + k] = (unsigned char)(255 * s);
+        pic.rgb[(std::size_t(y) * pic.width + x) * 3 + k] = (unsigned char)(255 * s);
     }
+}
+
+// One triangle, flat shaded (two-sided Lambert: a cloth has no inside), into the depth buffer.
+void draw_triangle(Picture& pic, std::vector<double>& depth, const Camera& cam, const Vec3& a,
+                   const Vec3& b, const Vec3& c, const std::array<double, 3>& colour) {
   const Vec3 light = unit(Vec3{0.3, 1.0, 0.6});
-  for (const SceneMesh& m : meshes)
-    for (const Tri& t : *m.tris) {
-      const Vec3 &a = (*m.x)[t[0]], &b = (*m.x)[t[1]], &c = (*m.x)[t[2]];
-      const Vec3 n = cross(b - a, c - a);
-      const double len = norm(n);
-      if (len == 0) continue;
-      // Two-sided Lambert: a cloth has no inside.
-      const double shade = 0.25 + 0.75 * std::fabs(dot(n, light)) / len;
-      const Vec3 p[3] = {cam.project(a), cam.project(b), cam.project(c)};
-      if (p[0].z <= 0 || p[1].z <= 0 || p[2].z <= 0) continue;
-      const int x0 = std::max(0, int(std::floor(std::min({p[0].x, p[1].x, p[2].x}))));
-      const int x1 = std::min(width - 1, int(std::ceil(std::max({p[0].x, p[1].x, p[2].x}))));
-      const int y0 = std::max(0, int(std::floor(std::min({p[0].y, p[1].y, p[2].y}))));
-      const int y1 = std::min(height - 1, int(std::ceil(std::max({p[0].y, p[1].y, p[2].y}))));
-      const double area =
-          (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
-      if (area == 0) continue;
-      for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) {
-          const double px = x + 0.5, py = y + 0.5;
-          // Barycentric weights from edge functions, either winding.
-          const double w0 = ((p[1].x - px) * (p[2].y - py) - (p[2].x - px) * (p[1].y - py)) / area;
-          const double w1 = ((p[2].x - px) * (p[0].y - py) - (p[0].x - px) * (p[2].y - py)) / area;
-          const double w2 = 1 - w0 - w1;
-          if (w0 < 0 || w1 < 0 || w2 < 0) continue;
-          const double z = w0 * p[0].z + w1 * p[1].z + w2 * p[2].z;
-          const std::size_t i = std::size_t(y) * width + x;
-          if (z >= depth[i]) continue;
-          depth[i] = z;
-          for (int k = 0; k < 3; ++k)
-            rgb[i * 3 + k] =
-                (unsigned char)std::lround(255 * std::clamp(shade * m.colour[k], 0.0, 1.0));
-        }
+  const Vec3 n = cross(b - a, c - a);
+  const double len = norm(n);
+  if (len == 0) return;
+  const double shade = 0.25 + 0.75 * std::fabs(dot(n, light)) / len;
+  const Vec3 p[3] = {cam.project(a), cam.project(b), cam.project(c)};
+  if (p[0].z <= 0 || p[1].z <= 0 || p[2].z <= 0) return;
+  const int x0 = std::max(0, int(std::floor(std::min({p[0].x, p[1].x, p[2].x}))));
+  const int x1 = std::min(pic.width - 1, int(std::ceil(std::max({p[0].x, p[1].x, p[2].x}))));
+  const int y0 = std::max(0, int(std::floor(std::min({p[0].y, p[1].y, p[2].y}))));
+  const int y1 = std::min(pic.height - 1, int(std::ceil(std::max({p[0].y, p[1].y, p[2].y}))));
+  const double area = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
+  if (area == 0) return;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      const double px = x + 0.5, py = y + 0.5;
+      // Barycentric weights from edge functions, either winding.
+      const double w0 = ((p[1].x - px) * (p[2].y - py) - (p[2].x - px) * (p[1].y - py)) / area;
+      const double w1 = ((p[2].x - px) * (p[0].y - py) - (p[0].x - px) * (p[2].y - py)) / area;
+      const double w2 = 1 - w0 - w1;
+      if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+      const double z = w0 * p[0].z + w1 * p[1].z + w2 * p[2].z;
+      const std::size_t i = std::size_t(y) * pic.width + x;
+      if (z >= depth[i]) continue;
+      depth[i] = z;
+      for (int k = 0; k < 3; ++k)
+        pic.rgb[i * 3 + k] =
+            (unsigned char)std::lround(255 * std::clamp(shade * colour[k], 0.0, 1.0));
     }
+}
+
+}  // namespace
+
+Framing frame_view(const std::vector<SceneMesh>& meshes) {
+  Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  for (const SceneMesh& m : meshes)
+    for (const Vec3& p : *m.x) {
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+  return {0.5 * (lo + hi), std::max(0.5 * norm(hi - lo), 1e-9)};
+}
+
+Picture render(const std::vector<SceneMesh>& meshes, int width, int height,
+               std::optional<Framing> view) {
+  const Camera cam = fit_camera(view ? *view : frame_view(meshes), width, height);
+  Picture pic{width, height, std::vector<unsigned char>(std::size_t(width) * height * 3)};
+  std::vector<double> depth(std::size_t(width) * height, std::numeric_limits<double>::infinity());
+  fill_background(pic);
+  for (const SceneMesh& m : meshes)
+    for (const Tri& t : *m.tris)
+      draw_triangle(pic, depth, cam, (*m.x)[t[0]], (*m.x)[t[1]], (*m.x)[t[2]], m.colour);
+  return pic;
+}
+
+std::string encode_png(const Picture& pic) {
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
-  image.width = png_uint_32(width);
-  image.height = png_uint_32(height);
+  image.width = png_uint_32(pic.width);
+  image.height = png_uint_32(pic.height);
   image.format = PNG_FORMAT_RGB;
   png_alloc_size_t size = 0;
-  // Into memory first, then written whole.
-  if (!png_image_write_to_memory(&image, nullptr, &size, 0, rgb.data(), 0, nullptr))
-    throw std::runtime_error(path + ": cannot encode PNG: " + image.message);
+  if (!png_image_write_to_memory(&image, nullptr, &size, 0, pic.rgb.data(), 0, nullptr))
+    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
   std::string bytes(size, '\0');
-  if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, rgb.data(), 0, nullptr))
-    throw std::runtime_error(path + ": cannot encode PNG: " + image.message);
+  if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, pic.rgb.data(), 0, nullptr))
+    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
   bytes.resize(size);
-  write_file_atomically(path, bytes);
+  return bytes;
+}
+
+void write_png(const std::string& path, const std::vector<SceneMesh>& meshes, int width,
+               int height) {
+  std::string bytes;
+  try {
+    bytes = encode_png(render(meshes, width, height));
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+  write_file_atomically(path, bytes);  // into memory first, then written whole
 }
 
 }  // namespace fdh::verify

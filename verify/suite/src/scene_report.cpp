@@ -94,12 +94,38 @@ json scene_run_json(const cloth::Scene& scene, const SceneRunOptions& opt, const
           {"energy_end", six_digits(r.energy_end)}};
 }
 
-void write_scene_png(const std::string& path, const cloth::Scene& scene, const SceneRun& run) {
+namespace {
+
+const std::array<double, 3> kCloth = {0.85, 0.25, 0.2}, kObstacles = {0.7, 0.7, 0.65};
+
+TriMesh obstacles_of(const cloth::Scene& scene) {
   TriMesh obstacles;
   for (const auto& o : scene.obstacles) obstacles.append(cloth::obstacle_mesh(o));
+  return obstacles;
+}
+
+}  // namespace
+
+void write_scene_png(const std::string& path, const cloth::Scene& scene, const SceneRun& run) {
+  const TriMesh obstacles = obstacles_of(scene);
   const cloth::Cloth shape(scene.cloth);
-  write_png(path, {{"cloth", &run.final_x, &shape.triangles(), {0.85, 0.25, 0.2}},
-                   {"obstacles", &obstacles.x, &obstacles.tris, {0.7, 0.7, 0.65}}});
+  write_png(path, {{"cloth", &run.final_x, &shape.triangles(), kCloth},
+                   {"obstacles", &obstacles.x, &obstacles.tris, kObstacles}});
+}
+
+SceneMovie::SceneMovie(const cloth::Scene& scene, int frames_in_run, int movie_frames)
+    : obstacles_(obstacles_of(scene)),
+      stride_(std::max(1, frames_in_run / std::max(1, movie_frames))),
+      movie_(480, 360, 20) {}
+
+void SceneMovie::frame(const cloth::Simulation& sim, int frame) {
+  if (frame != 1 && frame % stride_ != 0) return;
+  movie_.add_frame({{"cloth", &sim.cloth().x(), &sim.cloth().triangles(), kCloth},
+                    {"obstacles", &obstacles_.x, &obstacles_.tris, kObstacles}});
+}
+
+void SceneMovie::write(const std::string& path) const {
+  movie_.write(path);
 }
 
 std::vector<std::string> scene_files(const std::string& dir) {
@@ -111,14 +137,16 @@ std::vector<std::string> scene_files(const std::string& dir) {
   return files;
 }
 
-std::vector<SceneFolderRun> run_scene_folder(
-    const std::string& scene_dir, const std::string& out_dir,
-    const std::function<void(const SceneFolderRun&)>& done) {
+std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
+                                             const std::string& out_dir,
+                                             const std::function<void(const SceneFolderRun&)>& done,
+                                             bool movies) {
   const std::vector<std::string> files = scene_files(scene_dir);
   std::vector<std::string> outputs;
   for (const std::string& file : files) {
     const std::string stem = fs::path(file).stem().string();
     outputs.insert(outputs.end(), {stem + ".png", stem + ".json"});
+    if (movies) outputs.push_back(stem + "-movie.png");
   }
   check_output_dir(out_dir, outputs);  // before any scene runs
   fs::create_directories(out_dir);
@@ -127,8 +155,15 @@ std::vector<SceneFolderRun> run_scene_folder(
     SceneFolderRun r;
     r.file = file;
     r.scene = read_scene(r.file);
+    std::optional<SceneMovie> movie;
+    if (movies) {
+      movie.emplace(r.scene, r.scene.frames);
+      r.options.on_frame = [&movie](const cloth::Simulation& sim, int f) { movie->frame(sim, f); };
+    }
     r.run = run_scene(r.scene, r.options);
+    r.options.on_frame = nullptr;
     const fs::path stem = fs::path(out_dir) / fs::path(file).stem();
+    if (movie) movie->write(r.movie = stem.string() + "-movie.png");
     r.png = stem.string() + ".png";
     r.json = stem.string() + ".json";
     write_scene_png(r.png, r.scene, r.run);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,29 @@ struct SceneMesh {
 // One OBJ with one object (`o name`) per mesh.
 void write_obj(const std::string& path, const std::vector<SceneMesh>& meshes);
 
-// A headless render: flat-shaded triangles with a depth buffer, seen from a fixed direction
-// (front, right and above) at a distance that fits every mesh in view.
+// What a picture shows: a sphere around the meshes, seen from a fixed direction (front, right
+// and above) at a distance that fits it in view.
+struct Framing {
+  Vec3 centre;
+  double radius = 1;
+};
+Framing frame_view(const std::vector<SceneMesh>& meshes);
+
+// RGB pixels, row by row from the top.
+struct Picture {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+};
+
+// A headless render: flat-shaded triangles with a depth buffer, framed by `view` (default: the
+// meshes' own, frame_view).
+Picture render(const std::vector<SceneMesh>& meshes, int width, int height,
+               std::optional<Framing> view = std::nullopt);
+
+// The picture as PNG bytes (libpng). Throws std::runtime_error if libpng fails.
+std::string encode_png(const Picture& pic);
+
+// render, encode_png, written whole.
 void write_png(const std::string& path, const std::vector<SceneMesh>& meshes, int width = 640,
                int height = 480);
 

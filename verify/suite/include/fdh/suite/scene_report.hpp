@@ -9,6 +9,8 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "fdh/cloth/scene.hpp"
+#include "fdh/io/movie.hpp"
+#include "fdh/mesh.hpp"
 #include "fdh/suite/scene_run.hpp"
 
 namespace fdh::verify {
@@ -21,6 +23,20 @@ nlohmann::ordered_json scene_run_json(const cloth::Scene& scene, const SceneRunO
 // The last frame of `run` rendered to a PNG: the cloth and the scene's obstacles.
 void write_scene_png(const std::string& path, const cloth::Scene& scene, const SceneRun& run);
 
+// A run as an animated PNG (fdh/io/movie.hpp): the cloth and the obstacles at the first frame
+// and every stride-th after it, about `movie_frames` in all, 480×360 at 20 frames per second.
+class SceneMovie {
+ public:
+  SceneMovie(const cloth::Scene& scene, int frames_in_run, int movie_frames = 60);
+  void frame(const cloth::Simulation& sim, int frame);  // SceneRunOptions::on_frame's
+  void write(const std::string& path) const;            // whole; throws without a frame
+
+ private:
+  TriMesh obstacles_;
+  int stride_;
+  Movie movie_;
+};
+
 // The *.scene files of a folder, sorted by name. Throws InputError when it is not a folder.
 std::vector<std::string> scene_files(const std::string& dir);
 
@@ -30,15 +46,16 @@ struct SceneFolderRun {
   cloth::Scene scene;
   SceneRunOptions options;
   SceneRun run;
-  std::string png, json;  // the files written
+  std::string png, json, movie;  // the files written (movie: "" unless asked for)
 };
 
 // Every *.scene in `scene_dir` (sorted by name), run with simulate's defaults; writes
-// OUT/<name>.png and OUT/<name>.json (the JSON of simulate --json) for each, and calls `done`
-// after each scene. Throws InputError for a bad scene, std::runtime_error for I/O failures.
+// OUT/<name>.png and OUT/<name>.json (the JSON of simulate --json) for each, with `movies`
+// also OUT/<name>-movie.png (SceneMovie), and calls `done` after each scene. Throws InputError
+// for a bad scene, std::runtime_error for I/O failures.
 std::vector<SceneFolderRun> run_scene_folder(
     const std::string& scene_dir, const std::string& out_dir,
-    const std::function<void(const SceneFolderRun&)>& done = {});
+    const std::function<void(const SceneFolderRun&)>& done = {}, bool movies = false);
 
 // One line for people: the scene, its grid and frames, ms per frame, FP and FN, the exact
 // audit (inside, crossing, self-crossing).
