@@ -197,6 +197,7 @@ BoxMethod fdh_box() {
   m.name = "fdh";
   m.summary = "fast/'s k-DOP: one outward push per diagonal slab (kdop.hpp)";
   m.k = K;
+  for (int s = 0; s < K / 2; ++s) m.directions.push_back(Kdop<K>::direction(s));
   m.build = [](const Vec3* pts, std::size_t n, double* lo, double* hi) {
     const Kdop<K> box = kdop_of<K>(pts, n);
     std::copy(box.lo.begin(), box.lo.end(), lo);

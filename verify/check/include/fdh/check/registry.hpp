@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fdh/filtered.hpp"
+#include "fdh/kdop.hpp"
 #include "fdh/point_triangle/robust.hpp"
 #include "fdh/query.hpp"
 #include "fdh/vec3.hpp"
@@ -68,11 +69,13 @@ struct Method {
 bool twin_hit(const Query& q);
 bool twin_hit(const Query& q, Decision d);
 
-// A k-DOP method of a fixed k: builds a box (lo, hi per slab, in fdh::Kdop<k> slab order) and
-// decides overlap of two boxes.
+// A k-DOP method of a fixed k: builds a box (lo, hi per slab) and decides overlap of two boxes.
+// Slab s has the integer direction directions[s] (k = 2 × directions.size()): fdh::Kdop<k>'s
+// order for the project's own, the library's own order for a peer (verify/peers/).
 struct BoxMethod {
   std::string name, summary;
   int k = 0;
+  std::vector<Direction> directions;
   Promise promise = Promise::Conservative;
   std::function<void(const Vec3* pts, std::size_t n, double* lo, double* hi)> build;
   std::function<bool(const double* lo_a, const double* hi_a, const double* lo_b,

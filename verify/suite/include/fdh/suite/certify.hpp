@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fdh/check/registry.hpp"
+#include "fdh/suite/peers.hpp"
 
 namespace fdh::verify {
 
@@ -53,7 +54,10 @@ struct Certificate {
   std::vector<PromiseCheck> promises;     // every (method, query decision) with a promise
   std::vector<BoxCheck> boxes;            // every k-DOP method
   long truths = 0, truth_violations = 0;  // queries with a stored truth: the twin = the truth
-  std::string first_violation;            // what went wrong first, and the file it was saved to
+  // The own k-DOPs beside the peer libraries' boxes (peers.hpp); shrunk cases in out_dir/peers/,
+  // stored ones replayed from corpus_dir/peers/. Only the own rows count as checks here.
+  PeersReport peers;
+  std::string first_violation;  // what went wrong first, and the file it was saved to
 
   bool certified() const { return first_violation.empty(); }
   long checks() const;      // every check counted above
