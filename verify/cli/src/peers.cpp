@@ -5,6 +5,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "fdh/io/atomic_file.hpp"
 #include "fdh/suite/peers.hpp"
 #include "suite_commands.hpp"
 
@@ -55,6 +56,7 @@ void print_table(const PeersReport& r, std::ostream& out) {
 }
 
 int run_peers(PeersCommand& cmd, const Io& io) {
+  if (!cmd.peers.save_dir.empty()) check_output_dir(cmd.peers.save_dir);
   cmd.peers.replay_dir = (std::filesystem::path(cmd.corpus) / "peers").string();
   const PeersReport r = certify_peers(cmd.peers);
   if (cmd.json)
@@ -75,8 +77,8 @@ Command add_peers(CLI::App& app) {
   sub->add_flag("--quick", cmd->peers.quick, "300 cases per property and 1 shrunk case kept");
   add_seed_option(*sub, cmd->peers.seed, "seed of the point sets (default 1)");
   add_number_option(*sub, "--cases", cmd->peers.cases,
-                    "point sets, and pairs, per property (default 5000; 300 with --quick)", "N", 0L,
-                    1L << 30);
+                    "point sets, and pairs, per property (default 20000; 300 with --quick)", "N",
+                    0L, 1L << 30);
   add_number_option(*sub, "--keep", cmd->peers.keep,
                     "shrunk cases saved per method and property (default 3; 1 with --quick)", "N",
                     0, 1000);

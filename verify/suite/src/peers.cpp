@@ -158,7 +158,7 @@ long PeersReport::own_violations() const {
 PeersReport certify_peers(const PeerOptions& options) {
   PeersReport r;
   r.options = options;
-  if (r.options.cases < 0) r.options.cases = options.quick ? 300 : 5000;
+  if (r.options.cases < 0) r.options.cases = options.quick ? 300 : 20000;
   if (r.options.keep < 0) r.options.keep = options.quick ? 1 : 3;
   PeerRun run(r);
   const std::uint64_t stream = r.options.seed * 1000 + 500;

@@ -19,7 +19,7 @@ namespace fdh::verify {
 struct PeerOptions {
   bool quick = false;
   std::uint64_t seed = 1;
-  long cases = -1;         // point sets, and pairs, per property; -1: 300 quick, 5000 full
+  long cases = -1;         // point sets, and pairs, per property; -1: 300 quick, 20000 full
   int keep = -1;           // shrunk cases kept per method and property; -1: 1 quick, 3 full
   std::string save_dir;    // shrunk cases go to <save_dir>/<library>/; empty: not saved
   std::string replay_dir;  // stored cases replayed from here (corpus/peers); empty: none
