@@ -185,6 +185,7 @@ PeerOptions peer_options(const CertifyOptions& o) {
   PeerOptions p;
   p.quick = o.quick;
   p.seed = o.seed;
+  p.cases = o.peer_cases;
   p.save_dir = (fs::path(o.out_dir) / "peers").string();
   p.replay_dir = (fs::path(o.corpus_dir) / "peers").string();
   return p;

@@ -20,6 +20,7 @@ struct CertifyOptions {
   std::uint64_t seed = 1;
   long per_family = -1;  // fuzzed queries per family; -1: 200 quick, 3000 full
   long soups = -1;       // soup pairs for the tree; -1: 30 quick, 300 full
+  long peer_cases = -1;  // point sets, and pairs, per peers property; -1: 300 quick, 20000 full
   // The shipped scenes: frames run per scene (-1: 600 quick, the scene's own full) and the
   // stride between certified frames (-1: 50 quick, 10 full).
   long scene_frames = -1;
