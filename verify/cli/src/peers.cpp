@@ -40,19 +40,22 @@ struct PeersCommand {
   bool json = false;
 };
 
+// overlapping: the pairs whose exact FDHs overlap (where a "disjoint" is a miss).
 void print_table(const PeersReport& r, std::ostream& out) {
+  static constexpr char kLine[] = "{:<9}{:<9}{:<18}{:>4}  {:<12}{:>8}{:>12}{:>11}{:>8}  {}\n";
   out << fmt::format("{} random point sets and {} touching pairs, seed {}\n", r.options.cases,
                      r.options.cases, r.options.seed);
-  out << fmt::format("{:<9}{:<9}{:<18}{:>4}  {:<12}{:>8}{:>11}{:>8}  {}\n", "library", "version",
-                     "method", "k", "property", "checked", "violations", "stored",
-                     "first shrunk case");
+  out << fmt::format(kLine, "library", "version", "method", "k", "property", "checked",
+                     "overlapping", "violations", "stored", "first shrunk case");
   for (const PeerRow& row : r.rows)
-    for (const auto* p : {&row.containment, &row.overlap})
-      out << fmt::format("{:<9}{:<9}{:<18}{:>4}  {:<12}{:>8}{:>11}{:>8}  {}\n", row.library,
-                         row.version.substr(0, 8), row.method, row.k,
-                         p == &row.containment ? "containment" : "overlap", p->checked,
-                         p->violations, fmt::format("{}/{}", p->stored_failing, p->stored),
+    for (const PeerProperty* p : {&row.containment, &row.overlap}) {
+      const bool overlap = p == &row.overlap;
+      out << fmt::format(kLine, row.library, row.version.substr(0, 8), row.method, row.k,
+                         overlap ? "overlap" : "containment", p->checked,
+                         overlap ? std::to_string(p->exact_overlaps) : "-", p->violations,
+                         fmt::format("{}/{}", p->stored_failing, p->stored),
                          p->shrunk.empty() ? "-" : p->shrunk.front());
+    }
 }
 
 int run_peers(PeersCommand& cmd, const Io& io) {
