@@ -8,14 +8,6 @@
 namespace fdh::verify {
 namespace {
 
-TEST(BulletAabb, IsDoubleWithItsVersion) {
-  const PeerLibrary bullet = peer_library("bullet");
-  EXPECT_EQ(bullet.version, "3.24");
-  EXPECT_EQ(bullet.precision, "double");
-  ASSERT_EQ(bullet.methods.size(), 3u);
-  for (const BoxMethod& m : bullet.methods) EXPECT_EQ(m.k, 6) << m.name;
-}
-
 // Coordinates with few bits: centre and half extent are exact, so every box is the exact AABB,
 // and sets sharing a corner overlap.
 TEST(BulletAabb, DyadicBoxesAreExact) {

@@ -8,17 +8,6 @@
 namespace fdh::verify {
 namespace {
 
-TEST(FclKdop, IsDoubleWithItsVersion) {
-  const PeerLibrary fcl = peer_library("fcl");
-  EXPECT_EQ(fcl.version, "0.7.0");
-  EXPECT_EQ(fcl.precision, "double");
-  ASSERT_EQ(fcl.methods.size(), 3u);
-  for (const BoxMethod& m : fcl.methods) {
-    EXPECT_EQ(m.directions.size() * 2, std::size_t(m.k)) << m.name;
-    EXPECT_EQ(m.promise, Promise::None) << m.name;
-  }
-}
-
 // A point with small integer coordinates: every projection is exact, so slab s of its box is
 // the point's projection on the adapter's direction s (distinct for each of FCL's directions).
 TEST(FclKdop, SlabsFollowFclsDirectionsInItsOrder) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "fdh/io/case_files.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
 
@@ -112,19 +113,9 @@ PeerCase read_peer_case(const std::string& path) {
 }
 
 std::vector<std::string> list_peer_case_files(const std::string& dir) {
-  namespace fs = std::filesystem;
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return {};
-  std::vector<std::string> files;
-  fs::recursive_directory_iterator it(dir, ec), end;
-  for (; !ec && it != end; it.increment(ec)) {
-    std::error_code entry;
-    if (it->is_regular_file(entry) && it->path().extension() == ".txt")
-      files.push_back(it->path().string());
-  }
-  if (ec) throw InputError(dir, 0, "cannot list the folder: " + ec.message());
-  std::sort(files.begin(), files.end());
-  return files;
+  if (!std::filesystem::is_directory(dir, ec)) return {};
+  return files_below(dir, ".txt");
 }
 
 }  // namespace fdh::verify

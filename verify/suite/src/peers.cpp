@@ -137,22 +137,21 @@ class PeerRun {
 
 }  // namespace
 
-long PeersReport::own_checks() const {
+// The sum of two counts of both properties over the own rows.
+long PeersReport::own_sum(long PeerProperty::*first, long PeerProperty::*second) const {
   long n = 0;
   for (const PeerRow& row : rows)
     if (row.promise != Promise::None)
-      n += row.containment.checked + row.overlap.checked + row.containment.stored +
-           row.overlap.stored;
+      for (const PeerProperty* p : {&row.containment, &row.overlap}) n += p->*first + p->*second;
   return n;
 }
 
+long PeersReport::own_checks() const {
+  return own_sum(&PeerProperty::checked, &PeerProperty::stored);
+}
+
 long PeersReport::own_violations() const {
-  long n = 0;
-  for (const PeerRow& row : rows)
-    if (row.promise != Promise::None)
-      n += row.containment.violations + row.overlap.violations + row.containment.stored_failing +
-           row.overlap.stored_failing;
-  return n;
+  return own_sum(&PeerProperty::violations, &PeerProperty::stored_failing);
 }
 
 PeersReport certify_peers(const PeerOptions& options) {

@@ -46,8 +46,11 @@ struct PeersReport {
   std::vector<PeerRow> rows;        // the project's own k-DOPs first, then each peer's methods
   std::string first_own_violation;  // an own row's first violation and its saved case, or ""
 
-  long own_checks() const;
-  long own_violations() const;
+  long own_checks() const;      // cases checked and stored cases replayed, on the own rows
+  long own_violations() const;  // their violations and stored cases failing
+
+ private:
+  long own_sum(long PeerProperty::*first, long PeerProperty::*second) const;
 };
 
 // Throws InputError for a bad stored case, std::runtime_error when a case cannot be saved.
