@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -324,6 +325,18 @@ TEST(Cli, PeersPrintsEveryRowAndSavesShrunkCases) {
   const CliRun j = fdhcert({"peers", "--cases", "5", "--keep", "0", "--json", "--out", out});
   EXPECT_EQ(j.status, 0) << j.err;
   EXPECT_EQ(Json::parse(j.out)["rows"][0]["library"], "fdhcert");
+}
+
+// A bad stored peer case: FILE:LINE, exit status 2, nothing on out.
+TEST(Cli, PeersRefusesABadStoredCase) {
+  const auto corpus = fresh_temp_dir("cli_peers_bad");
+  std::filesystem::create_directories(corpus / "peers" / "fcl");
+  std::ofstream(corpus / "peers" / "fcl" / "bad.txt") << "peer fcl kdop16 containment\na 1 2\n";
+  const CliRun r = fdhcert({"peers", "--cases", "1", "--keep", "0", "--out",
+                            (corpus / "out").string(), "--corpus", corpus.string()});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("bad.txt:2: a point is `a|b x y z`"), std::string::npos) << r.err;
 }
 
 }  // namespace
