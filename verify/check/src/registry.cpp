@@ -197,7 +197,6 @@ BoxMethod fdh_box() {
   m.name = "fdh";
   m.summary = "fast/'s k-DOP: one outward push per diagonal slab (kdop.hpp)";
   m.k = K;
-  for (int s = 0; s < K / 2; ++s) m.directions.push_back(Kdop<K>::direction(s));
   m.build = [](const Vec3* pts, std::size_t n, double* lo, double* hi) {
     const Kdop<K> box = kdop_of<K>(pts, n);
     std::copy(box.lo.begin(), box.lo.end(), lo);
@@ -213,6 +212,13 @@ BoxMethod fdh_box() {
 }
 
 }  // namespace
+
+std::vector<Direction> slab_directions(const BoxMethod& m) {
+  if (!m.directions.empty()) return m.directions;
+  std::vector<Direction> dirs;
+  for (int s = 0; s < m.k / 2; ++s) dirs.push_back(slab_direction(m.k, s));
+  return dirs;
+}
 
 std::vector<BoxMethod> all_box_methods() {
   return {fdh_box<6>(), fdh_box<14>(), fdh_box<18>(), fdh_box<26>()};

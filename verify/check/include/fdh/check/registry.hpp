@@ -70,8 +70,8 @@ bool twin_hit(const Query& q);
 bool twin_hit(const Query& q, Decision d);
 
 // A k-DOP method of a fixed k: builds a box (lo, hi per slab) and decides overlap of two boxes.
-// Slab s has the integer direction directions[s] (k = 2 × directions.size()): fdh::Kdop<k>'s
-// order for the project's own, the library's own order for a peer (verify/peers/).
+// Slab s has the integer direction directions[s] (k = 2 × directions.size()): the library's own
+// order for a peer (verify/peers/); left empty, fdh::Kdop<k>'s (slab_directions below).
 struct BoxMethod {
   std::string name, summary;
   int k = 0;
@@ -82,6 +82,9 @@ struct BoxMethod {
                      const double* hi_b)>
       overlap;
 };
+
+// The slab directions of m's boxes: m.directions, or fdh::Kdop<m.k>'s in its order when empty.
+std::vector<Direction> slab_directions(const BoxMethod& m);
 
 // Every query method: the twin first, then robust, float-cubic, paper-literal,
 // paper-intended, linear-system. With gate_k > 0 the methods that test no bounding volume of
