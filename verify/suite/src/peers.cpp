@@ -34,23 +34,24 @@ struct Entry {
   BoxMethod method;
 };
 
+Entry entry(const std::string& library, const std::string& version, const std::string& precision,
+            std::string method, const BoxMethod& m) {
+  PeerRow row;
+  row.library = library, row.version = version, row.precision = precision;
+  row.method = std::move(method), row.summary = m.summary;
+  row.k = m.k, row.promise = m.promise;
+  return {row, m};
+}
+
+// The registry's k-DOPs (the project's own: "fdh-18"), then each peer library's methods.
 std::vector<Entry> entries() {
   std::vector<Entry> out;
-  for (BoxMethod& m : all_box_methods())
-    out.push_back({{"fdhcert",
-                    build_commit(),
-                    "double",
-                    "fdh-" + std::to_string(m.k),
-                    m.summary,
-                    m.k,
-                    m.promise,
-                    {},
-                    {}},
-                   m});
-  for (PeerLibrary& lib : all_peer_libraries())
-    for (BoxMethod& m : lib.methods)
-      out.push_back(
-          {{lib.name, lib.version, lib.precision, m.name, m.summary, m.k, m.promise, {}, {}}, m});
+  for (const BoxMethod& m : all_box_methods())
+    out.push_back(
+        entry("fdhcert", build_commit(), "double", m.name + "-" + std::to_string(m.k), m));
+  for (const PeerLibrary& lib : all_peer_libraries())
+    for (const BoxMethod& m : lib.methods)
+      out.push_back(entry(lib.name, lib.version, lib.precision, m.name, m));
   return out;
 }
 
