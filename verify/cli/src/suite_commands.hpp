@@ -1,5 +1,5 @@
-// The commands over the suite's long jobs: certify, report, table1, scenes and peers (the pattern of
-// commands.hpp).
+// The commands over the suite's long jobs: certify, report, table1, scenes and peers (the pattern
+// of commands.hpp).
 #pragma once
 
 #include "commands.hpp"
