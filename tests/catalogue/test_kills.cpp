@@ -25,6 +25,7 @@
 #include <thread>
 #include <vector>
 
+#include "fdh/io/peer_case_file.hpp"
 #include "fdh/io/query_io.hpp"
 #include "temp_dir.hpp"
 
@@ -157,6 +158,12 @@ std::vector<std::string> kill_problems(const fs::path& out, std::vector<std::str
     } else if (ext == ".vf") {
       try {
         if (read_native(p.string()).empty()) problem("no query");
+      } catch (const std::exception& e) {
+        problem(std::string("unreadable: ") + e.what());
+      }
+    } else if (ext == ".txt") {  // a shrunk peer case (certify's peers/)
+      try {
+        read_peer_case(p.string());
       } catch (const std::exception& e) {
         problem(std::string("unreadable: ") + e.what());
       }

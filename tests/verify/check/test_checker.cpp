@@ -105,6 +105,34 @@ TEST(Checker, OverlapOfTouchingBoxesIsKept) {
   }
 }
 
+// A box method with its own integer direction (2, -3, 1), as a peer brings: the checker takes
+// the exact extents along it. Two sets apart along it are disjoint exactly; a box that claims
+// an overlap keeps a conservative promise, one that misses a slab's extent does not.
+TEST(Checker, BoxesAlongAnyIntegerDirection) {
+  BoxMethod m;
+  m.k = 2;
+  m.directions = {{2, -3, 1}};
+  m.build = [](const Vec3* p, std::size_t n, double* lo, double* hi) {
+    lo[0] = hi[0] = 2 * p[0].x - 3 * p[0].y + p[0].z;  // exact on small integers
+    for (std::size_t i = 1; i < n; ++i) {
+      const double v = 2 * p[i].x - 3 * p[i].y + p[i].z;
+      lo[0] = std::min(lo[0], v), hi[0] = std::max(hi[0], v);
+    }
+  };
+  m.overlap = [](const double*, const double*, const double*, const double*) { return true; };
+  const std::vector<Vec3> a = {{0, 0, 0}, {1, 0, 0}}, b = {{0, -1, 0}, {3, 0, 0}};
+  EXPECT_EQ(check_box(m, a.data(), a.size()), -1);
+  const Verdicts apart = check_overlap(m, a, b);  // a: [0, 2], b: [3, 6]
+  EXPECT_FALSE(apart.twin);
+  EXPECT_TRUE(apart.kept);
+  const auto build = m.build;
+  m.build = [build](const Vec3* p, std::size_t n, double* lo, double* hi) {
+    build(p, n, lo, hi);
+    hi[0] = std::nextafter(hi[0], 0.0);
+  };
+  EXPECT_EQ(check_box(m, b.data(), b.size()), 0);
+}
+
 TEST(Checker, CulledPairsAreTheExactPairsNotFound) {
   const std::vector<std::pair<int, int>> found = {{2, 0}, {0, 1}}, exact = {{0, 1}, {1, 1}, {2, 0}};
   EXPECT_EQ(culled_pairs(found, exact), (std::vector<std::pair<int, int>>{{1, 1}}));

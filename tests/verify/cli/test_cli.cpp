@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -43,8 +44,8 @@ TEST(Cli, HelpNamesEveryOption) {
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
   const CliRun main = fdhcert({"--help"});
   EXPECT_EQ(main.status, 0);
-  for (const char* cmd :
-       {"classify", "fuzz", "replay", "generate", "certify", "report", "simulate", "table1"})
+  for (const char* cmd : {"classify", "fuzz", "replay", "generate", "certify", "report", "simulate",
+                          "table1", "peers"})
     EXPECT_NE(main.out.find(cmd), std::string::npos) << cmd;
   EXPECT_EQ(fdhcert({"help"}).out, main.out);
   EXPECT_EQ(fdhcert({"help", "classify"}).out, r.out);
@@ -54,8 +55,8 @@ TEST(Cli, HelpNamesEveryOption) {
 
 // Every command's --help goes to out with status 0, even without its required arguments.
 TEST(Cli, EveryCommandHasHelp) {
-  for (const char* cmd :
-       {"classify", "fuzz", "replay", "generate", "certify", "report", "simulate", "table1"}) {
+  for (const char* cmd : {"classify", "fuzz", "replay", "generate", "certify", "report", "simulate",
+                          "table1", "peers"}) {
     const CliRun r = fdhcert({cmd, "--help"});
     EXPECT_EQ(r.status, 0) << cmd << ": " << r.err;
     EXPECT_NE(r.out.find("--"), std::string::npos) << cmd;
@@ -300,6 +301,32 @@ TEST(Cli, SimulateJsonFields) {
                                     "--grid", "6", "--frames", "5", "--json", "--no-check"});
   ASSERT_EQ(unchecked.status, 0) << unchecked.err;
   EXPECT_TRUE(Json::parse(unchecked.out)["inside"].is_null());
+}
+
+// fdhcert peers: a table with the own rows and each peer's, shrunk cases saved under OUT, the
+// corpus's stored cases replayed; --json is certificate.json's "peers" object.
+TEST(Cli, PeersPrintsEveryRowAndSavesShrunkCases) {
+  const std::string out = fresh_temp_dir("cli_peers").string(), corpus = FDH_SOURCE_DIR "/corpus";
+  const CliRun r = fdhcert({"peers", "--cases", "40", "--out", out, "--corpus", corpus});
+  EXPECT_EQ(r.status, 0) << r.err;
+  for (const char* row : {"fdh-18", "kdop16", "kdop24", "dbvt-from-points", "bvh-trimesh-aabb"})
+    EXPECT_NE(r.out.find(row), std::string::npos) << row;
+  EXPECT_NE(r.out.find(out + "/fcl/kdop16-containment-"), std::string::npos) << r.out;
+  const CliRun j = fdhcert({"peers", "--cases", "5", "--keep", "0", "--json", "--out", out});
+  EXPECT_EQ(j.status, 0) << j.err;
+  EXPECT_EQ(Json::parse(j.out)["rows"][0]["library"], "fdhcert");
+}
+
+// A bad stored peer case: FILE:LINE, exit status 2, nothing on out.
+TEST(Cli, PeersRefusesABadStoredCase) {
+  const auto corpus = fresh_temp_dir("cli_peers_bad");
+  std::filesystem::create_directories(corpus / "peers" / "fcl");
+  std::ofstream(corpus / "peers" / "fcl" / "bad.txt") << "peer fcl kdop16 containment\na 1 2\n";
+  const CliRun r = fdhcert({"peers", "--cases", "1", "--keep", "0", "--out",
+                            (corpus / "out").string(), "--corpus", corpus.string()});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("bad.txt:2: a point is `a|b x y z`"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -23,6 +23,7 @@ CertifyOptions small(const fs::path& corpus, const fs::path& out) {
   o.soups = 3;
   o.scene_frames = 500;
   o.scene_stride = 100;
+  o.peer_cases = 60;
   return o;
 }
 
@@ -52,6 +53,13 @@ TEST(Certify, CertifiesTheCommittedCorpusAndCountsEveryCheck) {
   EXPECT_NE(json.find("\"cgal\": \"5."), std::string::npos);
   EXPECT_NE(json.find("\"promises\""), std::string::npos);
   EXPECT_NE(certificate_markdown(c).find("**Certified**"), std::string::npos);
+  // The peers beside the own k-DOPs: the own rows hold, the peers' versions are recorded.
+  EXPECT_EQ(c.peers.own_violations(), 0);
+  EXPECT_EQ(c.peers.rows.front().containment.checked, 60);
+  EXPECT_GT(c.peers.rows.front().containment.stored, 0);  // corpus/peers replayed
+  EXPECT_NE(json.find("\"version\": \"0.7.0\""), std::string::npos);
+  EXPECT_NE(json.find("\"version\": \"3.24\""), std::string::npos);
+  EXPECT_NE(certificate_markdown(c).find("## Peers"), std::string::npos);
 }
 
 TEST(Certify, AWrongStoredTruthIsAViolationSavedAsACorpusFile) {
@@ -61,7 +69,7 @@ TEST(Certify, AWrongStoredTruthIsAViolationSavedAsACorpusFile) {
       << "vf wrong 0.25 0.25 1  0 0 0  1 0 0  0 1 0  0.25 0.25 -1  0 0 0  1 0 0  0 1 0  0\n";
   std::ostringstream so, se;
   const int status = run_cli({"certify", "--corpus", corpus.string(), "--out", out.string(),
-                              "--per-family", "5", "--soups", "1"},
+                              "--per-family", "5", "--soups", "1", "--peer-cases", "20"},
                              so, se);
   EXPECT_EQ(status, 1);
   EXPECT_NE(se.str().find("wrong.vf:1"), std::string::npos) << se.str();

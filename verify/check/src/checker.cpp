@@ -73,18 +73,21 @@ CheckTally check_all(const Method& m, const std::vector<Query>& queries,
 }
 
 int check_box(const BoxMethod& m, const Vec3* pts, std::size_t n) {
-  double lo[13], hi[13];  // at most 13 slabs (k = 26)
-  m.build(pts, n, lo, hi);
-  return exact::first_uncontained_slab(m.k, pts, n, lo, hi);
+  const std::vector<Direction> dirs = slab_directions(m);
+  std::vector<double> lo(dirs.size()), hi(dirs.size());
+  m.build(pts, n, lo.data(), hi.data());
+  return exact::first_uncontained_slab(dirs, pts, n, lo.data(), hi.data());
 }
 
 Verdicts check_overlap(const BoxMethod& m, const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-  double la[13], ha[13], lb[13], hb[13];
-  m.build(a.data(), a.size(), la, ha);
-  m.build(b.data(), b.size(), lb, hb);
+  const std::vector<Direction> dirs = slab_directions(m);
+  const std::size_t slabs = dirs.size();
+  std::vector<double> la(slabs), ha(slabs), lb(slabs), hb(slabs);
+  m.build(a.data(), a.size(), la.data(), ha.data());
+  m.build(b.data(), b.size(), lb.data(), hb.data());
   Verdicts v;
-  v.said = m.overlap(la, ha, lb, hb);
-  v.twin = exact::kdops_overlap(m.k, a.data(), a.size(), b.data(), b.size());
+  v.said = m.overlap(la.data(), ha.data(), lb.data(), hb.data());
+  v.twin = exact::kdops_overlap(dirs, a.data(), a.size(), b.data(), b.size());
   v.kept = keeps_promise(m.promise, v.said, v.twin);
   return v;
 }

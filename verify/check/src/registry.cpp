@@ -255,6 +255,13 @@ BoxMethod fdh_box() {
 
 }  // namespace
 
+std::vector<Direction> slab_directions(const BoxMethod& m) {
+  if (!m.directions.empty()) return m.directions;
+  std::vector<Direction> dirs;
+  for (int s = 0; s < m.k / 2; ++s) dirs.push_back(slab_direction(m.k, s));
+  return dirs;
+}
+
 std::vector<BoxMethod> all_box_methods() {
   std::vector<BoxMethod> all = {fdh_box<6>(), fdh_box<14>(), fdh_box<18>(), fdh_box<26>()};
   all.insert(all.end(), added_boxes().begin(), added_boxes().end());

@@ -23,7 +23,11 @@ under the method's promise, and counts every check:
     query of each decision it makes: static vertex-face, moving vertex-face and
     edge-edge (CCD);
   - the exact twin = the stored truth wherever a query has one (corpus,
-    benchmark CSV).
+    benchmark CSV);
+  - peers (fdhcert peers, docs/peers.md): the own k-DOPs beside FCL's and
+    Bullet's boxes on random and touching point sets; the own rows must show 0,
+    the peers' violations are counted and the first ones shrunk into
+    DIR/peers/<library>/, and CORPUS/peers is replayed.
 The queries: every *.vf under the corpus folder, N fuzzed queries of each
 generator family (static and moving), the narrow-phase queries of every
 shipped scene (CORPUS/scenes/*.scene run with robust; every 10th frame, or
@@ -67,6 +71,11 @@ void add_certify_options(CLI::App& cmd, CertifyOptions& opt) {
       ->type_name("N")
       ->check(count);
   cmd.add_option("--soups", opt.soups, "soup pairs (default 300; 30 with --quick)")
+      ->type_name("N")
+      ->check(count);
+  cmd.add_option("--peer-cases", opt.peer_cases,
+                 "point sets, and touching pairs, per peers property (default 20000; 300 with "
+                 "--quick)")
       ->type_name("N")
       ->check(count);
   cmd.add_option("EXTRA", opt.extra_files,

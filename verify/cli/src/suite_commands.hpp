@@ -1,5 +1,5 @@
-// The commands over the suite's long jobs: certify, report, table1 and scenes (the pattern of
-// commands.hpp).
+// The commands over the suite's long jobs: certify, report, table1, scenes and peers (the pattern
+// of commands.hpp).
 #pragma once
 
 #include "commands.hpp"
@@ -11,6 +11,7 @@ Command add_certify(CLI::App& app);
 Command add_report(CLI::App& app);
 Command add_table1(CLI::App& app);
 Command add_scenes(CLI::App& app);
+Command add_peers(CLI::App& app);
 
 // The options certify and report share: --quick --out --corpus --seed --per-family --soups and
 // the extra query files. --out's default is opt.out_dir as given.

@@ -43,14 +43,20 @@ std::vector<std::string> list_query_files(const std::string& path) {
   if (!fs::exists(st)) throw InputError(path, 0, "no such file or folder");
   // A file, a FIFO or a device: the reader takes it or refuses it (InputFile).
   if (!fs::is_directory(st)) return {path};
+  return files_below(path, ".vf");
+}
+
+std::vector<std::string> files_below(const std::string& dir, const std::string& extension) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
   std::vector<std::string> files;
-  fs::recursive_directory_iterator it(path, ec), end;
+  fs::recursive_directory_iterator it(dir, ec), end;
   for (; !ec && it != end; it.increment(ec)) {
-    std::error_code entry;  // a broken link is no query file, and no reason to stop
-    if (it->is_regular_file(entry) && it->path().extension() == ".vf")
+    std::error_code entry;  // a broken link is no case file, and no reason to stop
+    if (it->is_regular_file(entry) && it->path().extension() == extension)
       files.push_back(it->path().string());
   }
-  if (ec) throw InputError(path, 0, "cannot list the folder: " + ec.message());
+  if (ec) throw InputError(dir, 0, "cannot list the folder: " + ec.message());
   std::sort(files.begin(), files.end());
   return files;
 }

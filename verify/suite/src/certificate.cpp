@@ -153,6 +153,7 @@ std::string certificate_json(const Certificate& c) {
       {"tree_no_false_cull", culls},
       {"promises", promises_json(c)},
       {"exact_equals_stored_truth", {{"queries", c.truths}, {"violations", c.truth_violations}}},
+      {"peers", peers_json(c.peers)},
       {"first_violation", c.first_violation}};
   return json_text(j, "certificate.json");
 }
@@ -168,6 +169,7 @@ std::string certificate_markdown(const Certificate& c) {
       c.commit, c.cgal, c.gmp, mode(c), c.options.seed, c.options.quick ? " --quick" : "");
   inputs_markdown(to, c);
   properties_markdown(to, c);
+  fmt::format_to(to, "\n{}", peers_markdown(c.peers));
   return fmt::to_string(out);
 }
 

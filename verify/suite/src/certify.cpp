@@ -184,6 +184,16 @@ void check_scenes(Certificate& c, Certifier& cert) {
   }
 }
 
+PeerOptions peer_options(const CertifyOptions& o) {
+  PeerOptions p;
+  p.quick = o.quick;
+  p.seed = o.seed;
+  p.cases = o.peer_cases;
+  p.save_dir = (fs::path(o.out_dir) / "peers").string();
+  p.replay_dir = (fs::path(o.corpus_dir) / "peers").string();
+  return p;
+}
+
 }  // namespace
 
 Certificate certify(const CertifyOptions& options) {
@@ -223,6 +233,8 @@ Certificate certify(const CertifyOptions& options) {
       ++c.extra_queries;
       cert.check_query(q);
     }
+  c.peers = certify_peers(peer_options(c.options));
+  if (c.first_violation.empty()) c.first_violation = c.peers.first_own_violation;
   return c;
 }
 

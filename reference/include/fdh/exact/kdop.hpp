@@ -6,16 +6,26 @@
 #include <utility>
 #include <vector>
 
+#include "fdh/kdop.hpp"
 #include "fdh/vec3.hpp"
 
 namespace fdh::exact {
 
-// The first slab (0-based, in fdh::Kdop<k> order) where [lo, hi] fails to contain the exact
+// Slab s of a box has the integer direction dirs[s] and the extent [lo[s], hi[s]]: fdh::Kdop<k>'s
+// slabs in its order, or another library's (verify/peers/).
+
+// The first slab (0-based, in the order of dirs) where [lo, hi] fails to contain the exact
 // extent of the points, or -1 when it contains them all.
+int first_uncontained_slab(const std::vector<Direction>& dirs, const Vec3* pts, std::size_t n,
+                           const double* lo, const double* hi);
+// The same in fdh::Kdop<k> slab order.
 int first_uncontained_slab(int k, const Vec3* pts, std::size_t n, const double* lo,
                            const double* hi);
 
-// Whether the exact k-DOPs of the two point sets overlap (closed slabs).
+// Whether the exact FDHs of the two point sets along dirs (or fdh::Kdop<k>'s) overlap (closed
+// slabs).
+bool kdops_overlap(const std::vector<Direction>& dirs, const Vec3* a, std::size_t na, const Vec3* b,
+                   std::size_t nb);
 bool kdops_overlap(int k, const Vec3* a, std::size_t na, const Vec3* b, std::size_t nb);
 
 // The exact twin of tree traversal, by brute force: every pair (i, j) such that the exact

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fdh/filtered.hpp"
+#include "fdh/kdop.hpp"
 #include "fdh/point_triangle/robust.hpp"
 #include "fdh/query.hpp"
 #include "fdh/vec3.hpp"
@@ -68,11 +69,13 @@ struct Method {
 bool twin_hit(const Query& q);
 bool twin_hit(const Query& q, Decision d);
 
-// A k-DOP method of a fixed k: builds a box (lo, hi per slab, in fdh::Kdop<k> slab order) and
-// decides overlap of two boxes.
+// A k-DOP method of a fixed k: builds a box (lo, hi per slab) and decides overlap of two boxes.
+// Slab s has the integer direction directions[s] (k = 2 × directions.size()): the library's own
+// order for a peer (verify/peers/); left empty, fdh::Kdop<k>'s (slab_directions below).
 struct BoxMethod {
   std::string name, summary;
   int k = 0;
+  std::vector<Direction> directions;
   Promise promise = Promise::Conservative;
   // fast/'s FDH tree is made of these boxes: certify checks its traversal too.
   bool builds_tree = false;
@@ -81,6 +84,9 @@ struct BoxMethod {
                      const double* hi_b)>
       overlap;
 };
+
+// The slab directions of m's boxes: m.directions, or fdh::Kdop<m.k>'s in its order when empty.
+std::vector<Direction> slab_directions(const BoxMethod& m);
 
 // Every query method: the twin first, then robust, float-cubic, paper-literal,
 // paper-intended, linear-system; then the added ones (add_methods). With gate_k > 0 the methods

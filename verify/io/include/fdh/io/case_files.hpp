@@ -20,4 +20,8 @@ std::string case_file_text(const Query& q, const std::vector<std::string>& comme
 // Throws InputError for a path that does not exist or a folder that cannot be listed.
 std::vector<std::string> list_query_files(const std::string& path);
 
+// The regular files named *<extension> below the folder `dir`, sorted. Throws InputError when
+// the folder cannot be listed.
+std::vector<std::string> files_below(const std::string& dir, const std::string& extension);
+
 }  // namespace fdh::verify

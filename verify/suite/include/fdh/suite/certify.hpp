@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fdh/check/registry.hpp"
+#include "fdh/suite/peers.hpp"
 
 namespace fdh::verify {
 
@@ -19,6 +20,7 @@ struct CertifyOptions {
   std::uint64_t seed = 1;
   long per_family = -1;  // fuzzed queries per family; -1: 200 quick, 3000 full
   long soups = -1;       // soup pairs for the tree; -1: 30 quick, 300 full
+  long peer_cases = -1;  // point sets, and pairs, per peers property; -1: 300 quick, 20000 full
   // The shipped scenes: frames run per scene (-1: 600 quick, the scene's own full) and the
   // stride between certified frames (-1: 50 quick, 10 full).
   long scene_frames = -1;
@@ -54,7 +56,10 @@ struct Certificate {
   std::vector<PromiseCheck> promises;     // every (method, query decision) with a promise
   std::vector<BoxCheck> boxes;            // every k-DOP method
   long truths = 0, truth_violations = 0;  // queries with a stored truth: the twin = the truth
-  std::string first_violation;            // what went wrong first, and the file it was saved to
+  // The own k-DOPs beside the peer libraries' boxes (peers.hpp); shrunk cases in out_dir/peers/,
+  // stored ones replayed from corpus_dir/peers/. Only the own rows count as checks here.
+  PeersReport peers;
+  std::string first_violation;  // what went wrong first, and the file it was saved to
 
   bool certified() const { return first_violation.empty(); }
   long checks() const;      // every check counted above
