@@ -5,6 +5,7 @@
 
 #include "fdh/io/atomic_file.hpp"
 #include "plugin_option.hpp"
+#include "progress.hpp"
 #include "suite_commands.hpp"
 
 namespace fdh::verify {
@@ -41,9 +42,15 @@ GMP versions and the git commit. On any violation the first violating case is
 saved in DIR as a corpus file (a .vf query, or an .obj for a tree), named in
 the output, and the exit status is 1.)";
 
-int run_certify(const CertifyOptions& opt, const Io& io) {
+int run_certify(CertifyOptions opt, bool quiet, const Io& io) {
   check_output_dir(opt.out_dir, {"certificate.json", "certificate.md"});
+  ProgressLine progress(io.err, progress_wanted(io, quiet));
+  opt.progress = [&](const std::string& stage, long done, long total) {
+    progress.update("certify: " + stage, done, total,
+                    stage == "generator families" ? "queries" : "");
+  };
   const Certificate c = certify(opt);
+  progress.clear();
   write_certificate(c);
   const std::filesystem::path dir(opt.out_dir);
   io.out << (c.certified() ? "certified" : "VIOLATED") << ": " << c.checks() << " checks, "
@@ -58,7 +65,7 @@ int run_certify(const CertifyOptions& opt, const Io& io) {
 
 }  // namespace
 
-void add_certify_options(CLI::App& cmd, CertifyOptions& opt) {
+void add_certify_options(CLI::App& cmd, CertifyOptions& opt, bool& quiet) {
   const CLI::Range count(0L, 1L << 30);
   cmd.add_flag("--quick", opt.quick, "200 queries per family and 30 soup pairs: under a minute");
   cmd.add_option("--out", opt.out_dir, "where the output goes (default: " + opt.out_dir + ")")
@@ -78,6 +85,7 @@ void add_certify_options(CLI::App& cmd, CertifyOptions& opt) {
                  "--quick)")
       ->type_name("N")
       ->check(count);
+  add_quiet_flag(cmd, quiet);
   cmd.add_option("EXTRA", opt.extra_files,
                  "more query files: native (*.vf) or CCD benchmark CSV (*.csv)");
 }
@@ -86,9 +94,10 @@ Command add_certify(CLI::App& app) {
   auto opt = std::make_shared<CertifyOptions>();
   opt->out_dir = "certificate";
   CLI::App* cmd = add_command(app, "certify", kCertifyAbout, kCertifyFooter);
-  add_certify_options(*cmd, *opt);
+  auto quiet = std::make_shared<bool>(false);
+  add_certify_options(*cmd, *opt, *quiet);
   add_plugin_option(*cmd);
-  return {cmd, [opt](const Io& io) { return run_certify(*opt, io); }};
+  return {cmd, [opt, quiet](const Io& io) { return run_certify(*opt, *quiet, io); }};
 }
 
 }  // namespace fdh::verify

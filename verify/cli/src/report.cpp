@@ -1,10 +1,14 @@
 // fdhcert report: certificate, measurements, charts and report.md in one folder.
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/suite/report_document.hpp"
+#include "plugin_option.hpp"
+#include "progress.hpp"
 #include "suite_commands.hpp"
 
 namespace fdh::verify {
@@ -34,10 +38,18 @@ finds a violation (the report is written all the same). --quick takes smaller
 samples (a quick certificate, 100 queries per family and point): for a first
 look, not for the committed report.)";
 
-int run_report(const CertifyOptions& opt, const Io& io) {
+int run_report(CertifyOptions opt, bool quiet, const Io& io) {
   check_output_dir(opt.out_dir, report_outputs());
-  const Report report = make_report(
-      opt, [&](std::string_view step) { io.out << "report: " << step << " ..." << std::endl; });
+  ProgressLine progress(io.err, progress_wanted(io, quiet));
+  opt.progress = [&](const std::string& stage, long done, long total) {
+    progress.update("report: certify: " + stage, done, total, "");
+  };
+  const Report report = make_report(opt, [&](std::string_view step, long done, long total) {
+    if (done >= 0) return progress.update(fmt::format("report: {}", step), done, total, "");
+    progress.clear();
+    io.out << "report: " << step << " ..." << std::endl;
+  });
+  progress.clear();
   io.out << "report: charts ..." << std::endl;
   write_report(report);
   const Certificate& c = report.certificate;
@@ -56,8 +68,10 @@ Command add_report(CLI::App& app) {
   auto opt = std::make_shared<CertifyOptions>();
   opt->out_dir = "report";
   CLI::App* cmd = add_command(app, "report", kReportAbout, kReportFooter);
-  add_certify_options(*cmd, *opt);
-  return {cmd, [opt](const Io& io) { return run_report(*opt, io); }};
+  auto quiet = std::make_shared<bool>(false);
+  add_certify_options(*cmd, *opt, *quiet);
+  add_plugin_option(*cmd);  // its methods join the certificate, the charts and the tables
+  return {cmd, [opt, quiet](const Io& io) { return run_report(*opt, *quiet, io); }};
 }
 
 }  // namespace fdh::verify

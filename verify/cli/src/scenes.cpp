@@ -5,6 +5,7 @@
 
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/suite/scene_report.hpp"
+#include "progress.hpp"
 #include "suite_commands.hpp"
 
 namespace fdh::verify {
@@ -25,14 +26,22 @@ With --movies, also OUT/NAME-movie.png: the run as an animated PNG.
 
 struct ScenesOptions {
   std::string scenes = "corpus/scenes", out_dir = "scenes";
-  bool movies = false;
+  bool movies = false, quiet = false;
 };
 
 int run_scenes(const ScenesOptions& o, const Io& io) {
   check_output_dir(o.out_dir);  // and each scene's outputs, in run_scene_folder, before any run
-  const auto runs = run_scene_folder(
-      o.scenes, o.out_dir,
-      [&](const SceneFolderRun& r) { io.out << scene_summary_line(r) << std::endl; }, o.movies);
+  ProgressLine progress(io.err, progress_wanted(io, o.quiet));
+  SceneFolderOptions opt;
+  opt.movies = o.movies;
+  opt.frame = [&](const cloth::Scene& scene, int frame) {
+    progress.update("scenes: " + scene.name, frame, scene.frames, "frames");
+  };
+  opt.done = [&](const SceneFolderRun& r) {
+    progress.clear();
+    io.out << scene_summary_line(r) << std::endl;
+  };
+  const auto runs = run_scene_folder(o.scenes, o.out_dir, opt);
   io.out << "scenes: wrote a picture" << (o.movies ? ", a movie" : "") << " and a JSON for each of "
          << runs.size() << " scenes to " << o.out_dir << "\n";
   return 0;
@@ -48,6 +57,7 @@ Command add_scenes(CLI::App& app) {
   cmd->add_option("--out", o->out_dir,
                   "where the pictures and JSON go, created if needed (default:\nscenes)")
       ->type_name("DIR");
+  add_quiet_flag(*cmd, o->quiet);
   cmd->add_flag("--movies", o->movies,
                 "also render each run to OUT/NAME-movie.png, an animated PNG\n"
                 "(simulate --movie)");

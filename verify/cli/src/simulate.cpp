@@ -14,6 +14,7 @@
 #include "fdh/kdop.hpp"
 #include "fdh/suite/scene_report.hpp"
 #include "fdh/suite/scene_run.hpp"
+#include "progress.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -46,7 +47,7 @@ struct SimulateOptions {
   int grid = 0;           // 0: the scene's
   std::string thickness;  // "": the scene's
   std::string self;       // "on", "off" or "": the scene's
-  bool json = false, no_check = false;
+  bool json = false, no_check = false, quiet = false;
   SceneRunOptions run;
 };
 
@@ -177,10 +178,14 @@ int run_simulate(SimulateOptions& o, const Io& io) {
   o.run.check = !o.no_check;
   const cloth::Scene scene = read_scene_as_asked(o);
   Outputs outputs(o, scene);
-  o.run.on_frame = [&outputs](const cloth::Simulation& sim, int frame) {
+  ProgressLine progress(io.err, progress_wanted(io, o.quiet));
+  const long frames = o.run.frames < 0 ? scene.frames : o.run.frames;
+  o.run.on_frame = [&](const cloth::Simulation& sim, int frame) {
     outputs.frame(sim, frame);
+    progress.update("simulate " + scene.name, frame, frames, "frames");
   };
   const SceneRun r = run_scene(scene, o.run);
+  progress.clear();
   outputs.finish(scene, r);
   if (o.json) {
     print_json(io.out, scene_run_json(scene, o.run, r));
@@ -254,6 +259,7 @@ void add_output_options(CLI::App& cmd, SimulateOptions& o) {
       ->type_name("FILE");
   cmd.add_flag("--json", o.json, "print one JSON object instead of the text");
   cmd.add_flag("--no-check", o.no_check, "skip the accuracy count and the audit");
+  add_quiet_flag(cmd, o.quiet);
 }
 
 }  // namespace

@@ -13,8 +13,8 @@ Command add_table1(CLI::App& app);
 Command add_scenes(CLI::App& app);
 Command add_peers(CLI::App& app);
 
-// The options certify and report share: --quick --out --corpus --seed --per-family --soups and
-// the extra query files. --out's default is opt.out_dir as given.
-void add_certify_options(CLI::App& cmd, CertifyOptions& opt);
+// The options certify and report share: --quick --out --corpus --seed --per-family --soups
+// --peer-cases --quiet and the extra query files. --out's default is opt.out_dir as given.
+void add_certify_options(CLI::App& cmd, CertifyOptions& opt, bool& quiet);
 
 }  // namespace fdh::verify

@@ -1,6 +1,6 @@
 // fdhcert table1: the paper's Table 1 (ms per frame of the cloth on the table at four grid
 // sizes) measured on this machine, with the accuracy of each run beside its speed.
-#include <unistd.h>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <iostream>
@@ -9,6 +9,7 @@
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/io/scene_file.hpp"
 #include "fdh/suite/table1.hpp"
+#include "progress.hpp"
 #include "suite_commands.hpp"
 
 namespace fdh::verify {
@@ -40,19 +41,19 @@ const char* const kTable1Footer =
 struct Table1Options {
   std::string scene = "corpus/scenes/table.scene", out_dir;
   int frames = -1;
-  bool json = false;
+  bool json = false, quiet = false;
 };
 
 int run_table1(const Table1Options& o, const Io& io) {
   if (!o.out_dir.empty()) check_output_dir(o.out_dir, table1_outputs());
   const cloth::Scene scene = read_scene(o.scene);
-  const bool progress = !o.json && &io.err == &std::cerr && ::isatty(STDERR_FILENO);
+  ProgressLine progress(io.err, progress_wanted(io, o.quiet));
+  long done = 0;
   const Table1 t = measure_table1(scene, o.scene, o.frames, [&](const Table1Cell& c) {
-    if (progress)
-      io.err << "table1: " << c.method << " k=" << c.k << " " << c.grid << "x" << c.grid << "\r"
-             << std::flush;
+    progress.update("table1", done++, 0, "runs",
+                    fmt::format("now {} k={} {}x{}", c.method, c.k, c.grid, c.grid));
   });
-  if (progress) io.err << std::string(40, ' ') << "\r";
+  progress.clear();
   if (!o.out_dir.empty()) write_table1(t, o.out_dir);
   if (o.json)
     print_json(io.out, table1_json(t));
@@ -71,6 +72,7 @@ Command add_table1(CLI::App& app) {
   add_number_option(*cmd, "--frames", o->frames, "frames per run (default: the scene's)", "F", 1,
                     100000000);
   cmd->add_flag("--json", o->json, "print one JSON object instead of the text (below)");
+  add_quiet_flag(*cmd, o->quiet);
   cmd->add_option("--out", o->out_dir,
                   "also write DIR/table1.md, DIR/data/table1.csv and the chart\n"
                   "DIR/table1.png and .svg (ms per frame against particles)")

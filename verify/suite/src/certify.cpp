@@ -169,6 +169,8 @@ void check_scenes(Certificate& c, Certifier& cert) {
     opt.frames = int(std::min<long>(scene.frames, c.options.scene_frames));
     opt.check = false;  // certified here instead
     opt.on_frame = [&](const cloth::Simulation& sim, int f) {
+      if (c.options.progress && f % 10 == 0)
+        c.options.progress("scene " + scene.name, f, opt.frames);
       if (f % stride) return;
       for (const auto& nq : sim.queries()) {
         Query q = sim.query(nq);
@@ -194,6 +196,55 @@ PeerOptions peer_options(const CertifyOptions& o) {
   return p;
 }
 
+void tell(const Certificate& c, const std::string& stage, long done, long total) {
+  if (c.options.progress) c.options.progress(stage, done, total);
+}
+
+void check_corpus(Certificate& c, Certifier& cert) {
+  const std::vector<std::string> files = list_query_files(c.options.corpus_dir);
+  for (const std::string& f : files) {
+    tell(c, "corpus", c.corpus_files++, long(files.size()));
+    for (const Query& q : read_native(f)) {
+      ++c.corpus_queries;
+      cert.check_query(q);
+    }
+  }
+}
+
+// per_family queries of every family, family j from stream j.
+void check_families(Certificate& c, Certifier& cert) {
+  const long total = long(all_families().size()) * c.options.per_family;
+  std::uint64_t stream = 0;
+  for (const Family& f : all_families()) {
+    (f.moving ? c.moving_families : c.families).push_back(f.name);
+    ++stream;
+    for (long i = 0; i < c.options.per_family; ++i, ++c.fuzzed_queries) {
+      if (i % 100 == 0) tell(c, "generator families", c.fuzzed_queries, total);
+      cert.check_query(generate(f, case_seed(c.options.seed * 1000 + stream, i)).query);
+    }
+  }
+}
+
+void check_soups(Certificate& c, Certifier& cert) {
+  const std::uint64_t s = c.options.seed * 1000 + 999;
+  for (long i = 0; i < c.options.soups; ++i) {
+    tell(c, "tree soups", i, c.options.soups);
+    cert.check_soups(generate_soup(24, case_seed(s, 2 * i)),
+                     generate_soup(24, case_seed(s, 2 * i + 1)));
+  }
+}
+
+void check_extra_files(Certificate& c, Certifier& cert) {
+  long done = 0;
+  for (const std::string& f : c.options.extra_files) {
+    tell(c, "extra files", done++, long(c.options.extra_files.size()));
+    for (const Query& q : read_query_file(f)) {
+      ++c.extra_queries;
+      cert.check_query(q);
+    }
+  }
+}
+
 }  // namespace
 
 Certificate certify(const CertifyOptions& options) {
@@ -207,32 +258,12 @@ Certificate certify(const CertifyOptions& options) {
   c.cgal = exact::cgal_library_version();
   c.gmp = exact::gmp_library_version();
   Certifier cert(c);
-
-  for (const std::string& f : list_query_files(options.corpus_dir)) {
-    ++c.corpus_files;
-    for (const Query& q : read_native(f)) {
-      ++c.corpus_queries;
-      cert.check_query(q);
-    }
-  }
-  std::uint64_t stream = 0;
-  for (const Family& f : all_families()) {
-    (f.moving ? c.moving_families : c.families).push_back(f.name);
-    ++stream;
-    for (long i = 0; i < c.options.per_family; ++i, ++c.fuzzed_queries)
-      cert.check_query(generate(f, case_seed(c.options.seed * 1000 + stream, i)).query);
-  }
+  check_corpus(c, cert);
+  check_families(c, cert);
   check_scenes(c, cert);
-  for (long i = 0; i < c.options.soups; ++i) {
-    const std::uint64_t s = c.options.seed * 1000 + 999;
-    cert.check_soups(generate_soup(24, case_seed(s, 2 * i)),
-                     generate_soup(24, case_seed(s, 2 * i + 1)));
-  }
-  for (const std::string& f : options.extra_files)
-    for (const Query& q : read_query_file(f)) {
-      ++c.extra_queries;
-      cert.check_query(q);
-    }
+  check_soups(c, cert);
+  check_extra_files(c, cert);
+  tell(c, "peers", 0, 0);
   c.peers = certify_peers(peer_options(c.options));
   if (c.first_violation.empty()) c.first_violation = c.peers.first_own_violation;
   return c;

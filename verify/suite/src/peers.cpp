@@ -43,12 +43,13 @@ Entry entry(const std::string& library, const std::string& version, const std::s
   return {row, m};
 }
 
-// The registry's k-DOPs (the project's own: "fdh-18"), then each peer library's methods.
+// The registry's k-DOPs (the project's own, "fdh-18", and any plug-in's, library "plug-in":
+// held to their promise like ours), then each peer library's methods.
 std::vector<Entry> entries() {
   std::vector<Entry> out;
   for (const BoxMethod& m : all_box_methods())
-    out.push_back(
-        entry("fdhcert", build_commit(), "double", m.name + "-" + std::to_string(m.k), m));
+    out.push_back(entry(m.builds_tree ? "fdhcert" : "plug-in", build_commit(), "double",
+                        m.name + "-" + std::to_string(m.k), m));
   for (const PeerLibrary& lib : all_peer_libraries())
     for (const BoxMethod& m : lib.methods)
       out.push_back(entry(lib.name, lib.version, lib.precision, m.name, m));

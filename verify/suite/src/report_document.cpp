@@ -132,7 +132,11 @@ std::string certificate_section(const Certificate& c) {
 
 Report make_report(const CertifyOptions& options, const Progress& progress) {
   const auto step = [&](std::string_view what) {
-    if (progress) progress(what);
+    if (progress) progress(what, -1, -1);
+  };
+  const auto tick = [&](std::string_view what) -> Tick {
+    if (!progress) return {};
+    return [&progress, what](long done, long total) { progress(what, done, total); };
   };
   Report r;
   step("certificate");
@@ -141,10 +145,10 @@ Report make_report(const CertifyOptions& options, const Progress& progress) {
   m.per_family = options.quick ? 100 : 1000;
   m.per_point = options.quick ? 100 : 400;
   step("speed against accuracy");
-  m.speed = speed_accuracy(m.per_family, options.seed);
+  m.speed = speed_accuracy(m.per_family, options.seed, tick("speed against accuracy"));
   m.pareto = pareto_fronts(m.speed);
   step("stability sweeps");
-  m.stability = stability(m.per_point, options.seed);
+  m.stability = stability(m.per_point, options.seed, tick("stability sweeps"));
   step("FDH k");
   for (const int grid : {30, 50, 100}) {
     const std::vector<KdopTreeRow> rows = kdop_tree(grid);

@@ -139,14 +139,13 @@ std::vector<std::string> scene_files(const std::string& dir) {
 
 std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
                                              const std::string& out_dir,
-                                             const std::function<void(const SceneFolderRun&)>& done,
-                                             bool movies) {
+                                             const SceneFolderOptions& opt) {
   const std::vector<std::string> files = scene_files(scene_dir);
   std::vector<std::string> outputs;
   for (const std::string& file : files) {
     const std::string stem = fs::path(file).stem().string();
     outputs.insert(outputs.end(), {stem + ".png", stem + ".json"});
-    if (movies) outputs.push_back(stem + "-movie.png");
+    if (opt.movies) outputs.push_back(stem + "-movie.png");
   }
   check_output_dir(out_dir, outputs);  // before any scene runs
   fs::create_directories(out_dir);
@@ -156,10 +155,11 @@ std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
     r.file = file;
     r.scene = read_scene(r.file);
     std::optional<SceneMovie> movie;
-    if (movies) {
-      movie.emplace(r.scene, r.scene.frames);
-      r.options.on_frame = [&movie](const cloth::Simulation& sim, int f) { movie->frame(sim, f); };
-    }
+    if (opt.movies) movie.emplace(r.scene, r.scene.frames);
+    r.options.on_frame = [&](const cloth::Simulation& sim, int f) {
+      if (movie) movie->frame(sim, f);
+      if (opt.frame) opt.frame(r.scene, f);
+    };
     r.run = run_scene(r.scene, r.options);
     r.options.on_frame = nullptr;
     const fs::path stem = fs::path(out_dir) / fs::path(file).stem();
@@ -168,7 +168,7 @@ std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
     r.json = stem.string() + ".json";
     write_scene_png(r.png, r.scene, r.run);
     write_file_atomically(r.json, json_text(scene_run_json(r.scene, r.options, r.run), r.json));
-    if (done) done(r);
+    if (opt.done) opt.done(r);
     runs.push_back(std::move(r));
   }
   return runs;

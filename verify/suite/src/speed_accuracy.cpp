@@ -12,11 +12,13 @@
 
 namespace fdh::verify {
 
-std::vector<SpeedAccuracyRow> speed_accuracy(long per_family, std::uint64_t seed) {
+std::vector<SpeedAccuracyRow> speed_accuracy(long per_family, std::uint64_t seed,
+                                             const Tick& tick) {
   std::vector<SpeedAccuracyRow> rows;
   const std::vector<Method> methods = all_methods();
   std::uint64_t stream = 0;
   for (const Family& f : all_families()) {
+    if (tick) tick(long(stream), long(all_families().size()));
     ++stream;
     std::vector<Query> qs;
     for (long i = 0; i < per_family; ++i) {

@@ -222,13 +222,15 @@ const std::vector<StabilitySweep>& stability_sweeps() {
   return sweeps;
 }
 
-std::vector<StabilityRow> stability(long per_point, std::uint64_t seed) {
+std::vector<StabilityRow> stability(long per_point, std::uint64_t seed, const Tick& tick) {
   std::vector<Method> methods = all_methods();
   methods.erase(
       std::remove_if(methods.begin(), methods.end(), [](const Method& m) { return m.is_twin; }),
       methods.end());
   std::vector<StabilityRow> rows;
+  long done = 0;
   for (const StabilitySweep& sw : stability_sweeps()) {
+    if (tick) tick(done++, long(stability_sweeps().size()));
     const auto failure = sweep_rates(sw, methods, per_point, seed);
     for (std::size_t m = 0; m < methods.size(); ++m)
       for (std::size_t p = 0; p < failure[m].size(); ++p)

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,9 @@ struct CertifyOptions {
   long scene_frames = -1;
   int scene_stride = -1;
   std::vector<std::string> extra_files;
+  // Called as the work goes: the stage ("corpus", "families", "scene table", ...), how much of
+  // it is done and of how much (0: unknown). For a progress line; may be empty.
+  std::function<void(const std::string& stage, long done, long total)> progress;
 };
 
 // One method's promise on one decision, checked against the exact twin (check/checker.hpp).

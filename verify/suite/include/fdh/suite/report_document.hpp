@@ -26,11 +26,13 @@ struct Report {
   Measurements measurements;
 };
 
-using Progress = std::function<void(std::string_view step)>;
+// progress(step, -1, -1) as a step starts, then progress(step, done, total) as it goes.
+using Progress = std::function<void(std::string_view step, long done, long total)>;
 
 // Certifies (options as for certify; the first violating case is saved in options.out_dir)
 // and measures: 1000 queries per family and 400 per stability point, or 100 and 100 quick.
-// `progress` hears each step's name before it runs.
+// `progress` hears each step as it starts and goes (certify's own progress is
+// options.progress).
 Report make_report(const CertifyOptions& options, const Progress& progress = {});
 
 // Into report.certificate.options.out_dir: certificate.json and .md, data/*.csv, the charts

@@ -49,13 +49,19 @@ struct SceneFolderRun {
   std::string png, json, movie;  // the files written (movie: "" unless asked for)
 };
 
+// What run_scene_folder does beyond the runs: movies, and calls after each frame and scene.
+struct SceneFolderOptions {
+  bool movies = false;  // also OUT/<name>-movie.png (SceneMovie)
+  std::function<void(const cloth::Scene&, int frame)> frame;  // after each frame (progress)
+  std::function<void(const SceneFolderRun&)> done;            // after each scene
+};
+
 // Every *.scene in `scene_dir` (sorted by name), run with simulate's defaults; writes
-// OUT/<name>.png and OUT/<name>.json (the JSON of simulate --json) for each, with `movies`
-// also OUT/<name>-movie.png (SceneMovie), and calls `done` after each scene. Throws InputError
+// OUT/<name>.png and OUT/<name>.json (the JSON of simulate --json) for each. Throws InputError
 // for a bad scene, std::runtime_error for I/O failures.
-std::vector<SceneFolderRun> run_scene_folder(
-    const std::string& scene_dir, const std::string& out_dir,
-    const std::function<void(const SceneFolderRun&)>& done = {}, bool movies = false);
+std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
+                                             const std::string& out_dir,
+                                             const SceneFolderOptions& opt = {});
 
 // One line for people: the scene, its grid and frames, ms per frame, FP and FN, the exact
 // audit (inside, crossing, self-crossing).
