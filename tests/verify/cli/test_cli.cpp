@@ -280,6 +280,26 @@ TEST(Cli, ReplayJsonNamesFailingCases) {
   EXPECT_EQ(j["methods"]["paper-literal"]["cases"].size(), j["cases"].get<std::size_t>());
 }
 
+// Issue 11's "done when": fuzz on a moving family finds, shrinks and stores float-cubic's
+// failures, and replay shows float-cubic failing on each while exact keeps every stored truth.
+TEST(Cli, FuzzFloatCubicOnAMovingFamilyThenReplay) {
+  const std::string dir = fresh_temp_dir("cli_fuzz_moving").string();
+  const CliRun f = fdhcert({"fuzz", "--method", "float-cubic", "--family", "parallel-edges",
+                            "--out", dir, "--count", "300", "--threads", "2", "--json"});
+  ASSERT_EQ(f.status, 0) << f.err;
+  const auto found = nlohmann::ordered_json::parse(f.out);
+  EXPECT_GT(found["disagreements"], 0);
+  ASSERT_GT(found["distinct"], 0);
+  EXPECT_LT(found["distinct"], found["disagreements"]);  // shrinking merged cases
+  const CliRun r = fdhcert({"replay", dir, "--methods", "exact,float-cubic", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  EXPECT_EQ(j["cases"], found["distinct"]);
+  EXPECT_EQ(j["exact_mismatches"].size(), 0u);
+  EXPECT_EQ(j["methods"]["exact"]["failing"], 0);
+  EXPECT_EQ(j["methods"]["float-cubic"]["failing"], j["cases"]);
+}
+
 TEST(Cli, SimulateJsonFields) {
   const CliRun r = fdhcert({"simulate", FDH_SOURCE_DIR "/corpus/scenes/table.scene", "--grid", "6",
                             "--frames", "5", "--json"});

@@ -61,6 +61,53 @@ std::map<std::string, std::string> cases_in(const fs::path& dir) {
   return out;
 }
 
+// fdhcert with these arguments as a child process, its standard output discarded.
+pid_t spawn_fdhcert(const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {FDHCERT_BIN};
+  argv.insert(argv.end(), args.begin(), args.end());
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::vector<char*> a;
+    for (const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
+    a.push_back(nullptr);
+    const int devnull = ::open("/dev/null", O_WRONLY);
+    ::dup2(devnull, 1);
+    ::execv(a[0], a.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// The done-markers (cases-B-E) under out/.fuzz.
+long marker_count(const fs::path& out) {
+  long n = 0;
+  std::error_code ec;
+  for (const auto& e : fs::recursive_directory_iterator(out / ".fuzz", ec))
+    n += e.path().filename().string().rfind("cases-", 0) == 0;
+  return n;
+}
+
+// Runs `fdhcert fuzz args` into `out`, kills it with SIGKILL once `markers` chunks are done,
+// checks that every file left is whole, and runs it again to the end. The markers done before
+// the kill.
+long kill_and_restart(const std::vector<std::string>& args, const fs::path& out, long markers) {
+  const pid_t pid = spawn_fdhcert(args);
+  for (int i = 0; i < 2000 && marker_count(out) < markers; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFSIGNALED(status));
+  const long done_before = marker_count(out);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // workers die with the parent
+  // Every file left behind is whole: a case file parses. Temporaries live in .fuzz/tmp only.
+  for (const auto& [rel, text] : cases_in(out))
+    EXPECT_NO_THROW(read_native((out / rel).string())) << rel;
+  ::waitpid(spawn_fdhcert(args), &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  return done_before;
+}
+
 TEST(Fuzz, FindsShrinksAndStoresCasesThatReplayAsFailures) {
   const fs::path d = fuzz_dir("fuzz_basic");
   std::ostringstream progress;
@@ -102,57 +149,68 @@ TEST(Fuzz, KilledWithSigkillAndRestartedLosesNothing) {
   o.count = 6000;
   const FuzzSummary expected = run_fuzz(o, progress);
 
-  const std::vector<std::string> argv = {
-      FDHCERT_BIN, "fuzz", "--method", "paper-intended", "--family", "parallel-cross",
-      "--seed",    "7",    "--count",  "6000",           "--chunk",  "100",
-      "--threads", "2",    "--out",    killed.string()};
-  const auto start = [&] {
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-      std::vector<char*> a;
-      for (const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
-      a.push_back(nullptr);
-      const int devnull = ::open("/dev/null", O_WRONLY);
-      ::dup2(devnull, 1);
-      ::execv(a[0], a.data());
-      ::_exit(127);
-    }
-    return pid;
-  };
   // Kill it mid-run: once some chunks are done but not all.
-  const pid_t pid = start();
-  const fs::path markers = killed / ".fuzz";
-  const auto count_markers = [&] {
-    long n = 0;
-    std::error_code ec;
-    for (const auto& e : fs::recursive_directory_iterator(markers, ec))
-      n += e.path().filename().string().rfind("cases-", 0) == 0;
-    return n;
-  };
-  for (int i = 0; i < 2000 && count_markers() < 5; ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  ::kill(pid, SIGKILL);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status));
-  const long done_before = count_markers();
+  const long done_before = kill_and_restart(
+      {"fuzz", "--method", "paper-intended", "--family", "parallel-cross", "--seed", "7", "--count",
+       "6000", "--chunk", "100", "--threads", "2", "--out", killed.string()},
+      killed, 5);
   EXPECT_GT(done_before, 0);
   EXPECT_LT(done_before, 60) << "the run finished before it could be killed";
-  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // workers die with the parent
-
-  // Every file left behind is whole: a case file parses. Temporaries live in .fuzz/tmp only.
-  for (const auto& [rel, text] : cases_in(killed))
-    EXPECT_NO_THROW(read_native((killed / rel).string())) << rel;
-
-  const pid_t again = start();
-  ::waitpid(again, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
   EXPECT_EQ(cases_in(killed), cases_in(whole));
   o.out_dir = killed.string();
   const FuzzSummary after = run_fuzz(o, progress);  // all done: reads the markers only
   EXPECT_EQ(after.resumed, 6000);
   EXPECT_EQ(after.disagreements, expected.disagreements);
   EXPECT_EQ(after.distinct.size(), expected.distinct.size());
+}
+
+// The moving half of fuzz keeps the same guarantee: float-cubic on a moving edge-edge family,
+// killed with SIGKILL part way and started again, ends with exactly the uninterrupted run's cases.
+TEST(Fuzz, MovingRunKilledWithSigkillAndRestartedLosesNothing) {
+  const fs::path whole = fuzz_dir("fuzz_moving_whole"), killed = fuzz_dir("fuzz_moving_killed");
+  std::ostringstream progress;
+  FuzzOptions o = options(whole, 2);
+  o.method = "float-cubic";
+  o.family = "parallel-edges";
+  o.count = 2000;
+  o.chunk = 50;
+  const FuzzSummary expected = run_fuzz(o, progress);
+  ASSERT_FALSE(expected.distinct.empty());
+  for (const std::string& f : expected.distinct)
+    EXPECT_EQ(read_native(f).at(0).kind, QueryKind::EdgeEdge) << f;
+
+  const long done_before = kill_and_restart(
+      {"fuzz", "--method", "float-cubic", "--family", "parallel-edges", "--seed", "7", "--count",
+       "2000", "--chunk", "50", "--threads", "2", "--out", killed.string()},
+      killed, 4);
+  EXPECT_GT(done_before, 0);
+  EXPECT_LT(done_before, 40) << "the run finished before it could be killed";
+  EXPECT_EQ(cases_in(killed), cases_in(whole));
+}
+
+// A stored moving case carries the exact CCD contact time and the twin's truth.
+TEST(Fuzz, MovingCasesCarryTheExactContactTime) {
+  const fs::path d = fuzz_dir("fuzz_moving_time");
+  std::ostringstream progress;
+  FuzzOptions o = options(d, 1);
+  o.method = "float-cubic";
+  o.family = "random-linear";
+  o.count = 3000;
+  const FuzzSummary s = run_fuzz(o, progress);
+  ASSERT_FALSE(s.distinct.empty());
+  for (const std::string& f : s.distinct) {
+    std::ifstream in(f);
+    std::string first;
+    std::getline(in, first);
+    const Query q = read_native(f).at(0);
+    ASSERT_TRUE(q.has_truth());
+    EXPECT_EQ(first.rfind("# float-cubic says ", 0), 0u) << first;
+    EXPECT_NE(first.find(q.truth ? ", exact says hit (" : ", exact says no."), std::string::npos)
+        << first;
+    if (q.truth) {
+      EXPECT_NE(first.find("at t "), std::string::npos) << first;
+    }
+  }
 }
 
 // The markers of the run in `out` (names cases-B-E), as paths.

@@ -15,10 +15,14 @@ namespace {
 const char* const kFuzzAbout =
     R"(search a generator family for cases where a method is wrong
 
-Draws N queries from generator family F and runs method M and exact on each.
-Every disagreement is shrunk (RapidCheck's shrink tree, greedy) to a minimal
-case; distinct cases are written to DIR/M/F/<hash>.vf in the native format,
-with exact's verdict as the truth and a comment saying what M answered.)";
+Draws N queries from generator family F (static or moving, vertex-face or
+edge-edge) and checks method M against the exact twin on each it applies to.
+Every disagreement is shrunk to a minimal case: RapidCheck's shrink tree, then
+a greedy pass that stops motion, moves the case toward the origin and
+shortens coordinates while M still fails. Distinct cases are written to
+DIR/M/F/<hash>.vf in the native format, with the twin's verdict as the truth
+and a comment saying what M answered and the exact contact (its time, for a
+moving query).)";
 
 const char* const kFuzzFooter =
     R"(The same seed and shard always give the same cases. Progress is saved in
@@ -35,10 +39,9 @@ struct FuzzCommandOptions {
   bool json = false;
 };
 
-std::vector<std::string> static_family_names() {
+std::vector<std::string> every_family_name() {
   std::vector<std::string> names;
-  for (const Family& f : all_families())
-    if (!f.moving) names.push_back(f.name);
+  for (const Family& f : all_families()) names.push_back(f.name);
   return names;
 }
 
@@ -122,10 +125,10 @@ Command add_fuzz(CLI::App& app) {
   std::vector<std::string> methods;
   for (const Method& m : all_methods()) methods.push_back(m.name);
   cmd->add_option("--method", opt.method, wrapped(methods, 56))->required()->type_name("M");
-  cmd->add_option("--family", opt.family, wrapped(static_family_names(), 56))
+  cmd->add_option("--family", opt.family, wrapped(every_family_name(), 56))
       ->required()
       ->type_name("F")
-      ->check(one_of(static_family_names()));
+      ->check(one_of(every_family_name()));
   cmd->add_option("--out", opt.out_dir, "where the cases go (created if needed)")
       ->required()
       ->type_name("DIR");

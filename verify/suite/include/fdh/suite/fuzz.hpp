@@ -1,5 +1,6 @@
-// fdhcert fuzz: search a generator family for queries where a method disagrees with `exact`,
-// shrink each to a minimal case, and store the distinct ones.
+// fdhcert fuzz: search a generator family (static or moving, vertex-face or edge-edge) for
+// queries where a method disagrees with the exact twin of its decision, shrink each to a minimal
+// case (fdh/gen/families.hpp: shrunk_failure), and store the distinct ones.
 //
 // Case i of a run is drawn from its own seed (seed, i), so a run is the same whatever the
 // number of workers, and a shard is a contiguous range of i. Work goes in chunks; a chunk's
@@ -34,7 +35,7 @@ namespace fdh::verify {
 
 struct FuzzOptions {
   std::string method;
-  std::string family = "angled";  // a static family (fdh/gen/families.hpp)
+  std::string family = "angled";  // any family, static or moving (fdh/gen/families.hpp)
   std::uint64_t seed = 1;
   long count = 10000;  // cases in the whole run, over all shards
   int shard = 0;       // this process runs shard `shard` of `shards` (0-based)
