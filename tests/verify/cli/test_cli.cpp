@@ -257,8 +257,9 @@ TEST(Cli, FuzzJsonSummary) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::ordered_json::parse(r.out);
   EXPECT_EQ(keys(j),
-            (std::vector<std::string>{"method", "family", "seed", "shard", "first", "last", "cases",
-                                      "resumed", "disagreements", "distinct", "files"}));
+            (std::vector<std::string>{"method", "metamorphic", "family", "seed", "shard", "first",
+                                      "last", "cases", "resumed", "disagreements", "distinct",
+                                      "files"}));
   EXPECT_EQ(j["method"], "paper-literal");
   EXPECT_EQ(j["shard"], "1/2");
   EXPECT_EQ(j["first"], 0);

@@ -47,7 +47,17 @@ TEST(Certify, CertifiesTheCommittedCorpusAndCountsEveryCheck) {
   EXPECT_EQ(c.boxes[0].soup_pairs, 3);
   EXPECT_GT(c.boxes[3].boxes, c.corpus_queries);
   EXPECT_GT(c.truths, 50);
+  // Every method of the registry under the metamorphic transforms; promised ones change nothing.
+  ASSERT_EQ(c.metamorphic.size(), all_methods().size());
+  for (const MetamorphicCheck& m : c.metamorphic) {
+    EXPECT_GT(m.checked, 1000) << m.method;
+    if (m.promise != Promise::None) {
+      EXPECT_EQ(m.violations, 0) << m.method;
+    }
+  }
   const std::string json = certificate_json(c);
+  EXPECT_NE(json.find("\"metamorphic\""), std::string::npos);
+  EXPECT_NE(certificate_markdown(c).find("## Metamorphic checks"), std::string::npos);
   EXPECT_NE(json.find("\"certified\": true"), std::string::npos);
   EXPECT_NE(json.find("\"cgal\": \"5."), std::string::npos);
   EXPECT_NE(json.find("\"promises\""), std::string::npos);

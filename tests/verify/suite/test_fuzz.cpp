@@ -21,6 +21,7 @@
 #include <climits>
 #include <thread>
 
+#include "fdh/check/metamorphic.hpp"
 #include "fdh/io/query_io.hpp"
 
 #include "temp_dir.hpp"
@@ -222,6 +223,42 @@ std::vector<fs::path> fuzz_markers_in(const fs::path& out) {
   return v;
 }
 
+// fuzz --metamorphic: cases where the method's verdict changes under a transform, shrunk and
+// stored apart (metamorphic/<method>/<family>) with the transform named; the mode is part of
+// the run's manifest.
+TEST(Fuzz, MetamorphicRunStoresVerdictChangesApart) {
+  const fs::path d = fuzz_dir("fuzz_metamorphic");
+  std::ostringstream progress;
+  FuzzOptions o = options(d, 2);
+  o.method = "linear-system";
+  o.family = "parallel-land";
+  o.count = 300;
+  o.metamorphic = true;
+  const FuzzSummary s = run_fuzz(o, progress);
+  ASSERT_FALSE(s.distinct.empty());
+  const Method m = select_methods({"linear-system"}).front();
+  for (const std::string& f : s.distinct) {
+    EXPECT_NE(f.find("/metamorphic/linear-system/parallel-land/"), std::string::npos) << f;
+    std::ifstream in(f);
+    std::string first;
+    std::getline(in, first);
+    EXPECT_NE(first.find("linear-system says "), std::string::npos) << first;
+    EXPECT_NE(first.find(" after "), std::string::npos) << first;
+    const Query q = read_native(f).at(0);
+    EXPECT_EQ(q.truth, int(twin_hit(q)));
+    EXPECT_TRUE(metamorphic_failure(m, q)) << f;
+  }
+  const fs::path manifest = fuzz_markers_in(d).at(0).parent_path() / "manifest";
+  std::ifstream in(manifest);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("mode metamorphic\n"), std::string::npos) << text.str();
+  // The exact twin, under the same search, changes no verdict.
+  o.method = "exact";
+  o.out_dir = fuzz_dir("fuzz_metamorphic_twin").string();
+  EXPECT_EQ(run_fuzz(o, progress).disagreements, 0);
+}
+
 TEST(Fuzz, ResumedWithAnotherChunkAndThreadsEndsWithTheSameCases) {
   const fs::path whole = fuzz_dir("fuzz_rechunk_whole"), part = fuzz_dir("fuzz_rechunk_part");
   std::ostringstream progress;
@@ -262,6 +299,7 @@ TEST(Fuzz, RefusesToStartBesideAnUnfinishedRunWithOtherOptions) {
            [](FuzzOptions& o) { o.seed = 8; }, [](FuzzOptions& o) { o.count = 1300; },
            [](FuzzOptions& o) { o.method = "paper-literal"; },
            [](FuzzOptions& o) { o.family = "angled"; },
+           [](FuzzOptions& o) { o.metamorphic = true; },
            [](FuzzOptions& o) { o.shard = 1, o.shards = 2; }}) {
     FuzzOptions o = options(d, 1);
     change(o);

@@ -22,7 +22,10 @@ under the method's promise, and counts every check:
     query of each decision it makes: static vertex-face, moving vertex-face and
     edge-edge (CCD);
   - the exact twin = the stored truth wherever a query has one (corpus,
-    benchmark CSV).
+    benchmark CSV);
+  - every method's verdict under each metamorphic transform of each query
+    (time reversal, axis order, translation, velocity, scale, relabelling):
+    counted per method; robust and the twin must change none.
 The queries: every *.vf under the corpus folder, N fuzzed queries of each
 generator family (static and moving), the narrow-phase queries of every
 shipped scene (CORPUS/scenes/*.scene run with robust; every 10th frame, or

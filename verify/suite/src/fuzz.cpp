@@ -183,25 +183,28 @@ struct Params {
   std::uint64_t seed = 0;
   long count = 0;
   int shard = 0, shards = 1;  // shard 0-based
+  bool metamorphic = false;   // recorded only when set: older manifests stay valid
 
   bool operator==(const Params& o) const {
     return method == o.method && family == o.family && seed == o.seed && count == o.count &&
-           shard == o.shard && shards == o.shards;
+           shard == o.shard && shards == o.shards && metamorphic == o.metamorphic;
   }
   std::string folder_name() const {
-    return method + "." + family + ".seed" + std::to_string(seed) + ".count" +
-           std::to_string(count) + ".shard" + std::to_string(shard + 1) + "of" +
-           std::to_string(shards);
+    return (metamorphic ? "metamorphic." : "") + method + "." + family + ".seed" +
+           std::to_string(seed) + ".count" + std::to_string(count) + ".shard" +
+           std::to_string(shard + 1) + "of" + std::to_string(shards);
   }
   std::string options() const {
-    return "--method " + method + " --family " + family + " --seed " + std::to_string(seed) +
-           " --count " + std::to_string(count) + " --shard " + std::to_string(shard + 1) + "/" +
+    return (metamorphic ? "--metamorphic " : "") + std::string("--method ") + method +
+           " --family " + family + " --seed " + std::to_string(seed) + " --count " +
+           std::to_string(count) + " --shard " + std::to_string(shard + 1) + "/" +
            std::to_string(shards);
   }
   std::string manifest() const {
     return "fdhcert fuzz run\nmethod " + method + "\nfamily " + family + "\nseed " +
            std::to_string(seed) + "\ncount " + std::to_string(count) + "\nshard " +
-           std::to_string(shard + 1) + "/" + std::to_string(shards) + "\n";
+           std::to_string(shard + 1) + "/" + std::to_string(shards) + "\n" +
+           (metamorphic ? "mode metamorphic\n" : "");
   }
   long first() const { return shard_begin(count, shard, shards); }
   long last() const { return shard_begin(count, shard + 1, shards); }
@@ -227,6 +230,10 @@ std::optional<Params> read_manifest(const fs::path& file) {
       char slash = 0;
       sh = bool(in >> p.shard >> slash >> p.shards) && slash == '/';
       --p.shard;
+    } else if (key == "mode") {
+      std::string mode;
+      if (!(in >> mode) || mode != "metamorphic") return std::nullopt;
+      p.metamorphic = true;
     } else {
       return std::nullopt;
     }
@@ -336,12 +343,12 @@ Params params_of(const FuzzOptions& opt, const Method& m, const Family& f) {
   if (opt.shards < 1 || opt.shard < 0 || opt.shard >= opt.shards)
     throw std::invalid_argument("--shard I/N needs 1 <= I <= N");
   if (opt.count < 0) throw std::invalid_argument("--count must not be negative");
-  return {m.name, f.name, opt.seed, opt.count, opt.shard, opt.shards};
+  return {m.name, f.name, opt.seed, opt.count, opt.shard, opt.shards, opt.metamorphic};
 }
 
 struct Run {
   const FuzzOptions& opt;
-  FuzzTarget target{select_methods({opt.method}).front()};
+  FuzzTarget target{select_methods({opt.method}).front(), opt.metamorphic};
   const Method& method = target.method;
   const Family& generator = any_family(opt.family);
   std::string family = generator.name;

@@ -2,6 +2,7 @@
 #include "fuzz_target.hpp"
 
 #include "fdh/check/checker.hpp"
+#include "fdh/check/metamorphic.hpp"
 #include "fdh/exact/ccd.hpp"
 #include "fdh/exact/point_triangle.hpp"
 #include "fdh/io/case_files.hpp"
@@ -22,17 +23,24 @@ std::string exact_contact_words(const Query& q) {
 }
 
 bool FuzzTarget::fails(const Query& q) const {
+  if (metamorphic) return metamorphic_failure(method, q).has_value();
   return method.applies_to(q) && !check(method, q).agree();
 }
 
 std::string FuzzTarget::case_folder(const std::string& family) const {
-  return method.name + "/" + family;
+  return (metamorphic ? "metamorphic/" : "") + method.name + "/" + family;
 }
 
 std::string FuzzTarget::case_text(Query q, const std::string& family) const {
+  q.id = case_folder(family);
+  if (metamorphic) {
+    const MetamorphicFailure f = *metamorphic_failure(method, q);
+    q.truth = twin_hit(q);
+    return case_file_text(q, {describe(method, f) + "; exact says " + exact_contact_words(q) + ".",
+                              "Shrunk by fdhcert fuzz --metamorphic from family " + family + "."});
+  }
   const Verdicts v = check(method, q);
   q.truth = v.twin;
-  q.id = case_folder(family);
   return case_file_text(q, {method.name + " says " + (v.said ? "hit" : "no") + ", exact says " +
                                 exact_contact_words(q) + ".",
                             "Shrunk by fdhcert fuzz from family " + family + "."});

@@ -11,16 +11,20 @@ namespace fdh::verify {
 
 struct FuzzTarget {
   Method method;
+  // Look for metamorphic failures (check/metamorphic.hpp) instead of disagreements.
+  bool metamorphic = false;
 
-  // The method applies to q and disagrees with the exact twin there (the checker).
+  // The method applies to q and disagrees with the exact twin there (the checker); or, with
+  // `metamorphic`, its verdict changes under a transform of q.
   bool fails(const Query& q) const;
 
-  // The folder of the cases under OUT: <method>/<family>.
+  // The folder of the cases under OUT: <method>/<family>, or metamorphic/<method>/<family>.
   std::string case_folder(const std::string& family) const;
 
   // The case file of a failing query shrunk from `family`: the twin's verdict as its truth, and
   // comments saying what the method and the twin answer, with the exact contact (kind and time
-  // for a static query, the earliest CCD contact time for a moving one). It depends on the query
+  // for a static query, the earliest CCD contact time for a moving one); a metamorphic case also
+  // names the transform and the method's verdicts before and after it. It depends on the query
   // alone, so that any number of workers and shards write identical files.
   std::string case_text(Query q, const std::string& family) const;
 };
