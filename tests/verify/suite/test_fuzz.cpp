@@ -109,6 +109,20 @@ long kill_and_restart(const std::vector<std::string>& args, const fs::path& out,
   return done_before;
 }
 
+// The run of `o` (already run whole into `whole`) as fdhcert, into `killed`: killed after
+// `markers` chunks and restarted, it ends with exactly the whole run's case files.
+void expect_kill_loses_nothing(const FuzzOptions& o, const fs::path& whole, const fs::path& killed,
+                               long markers) {
+  const long done_before = kill_and_restart(
+      {"fuzz", "--method", o.method, "--family", o.family, "--seed", std::to_string(o.seed),
+       "--count", std::to_string(o.count), "--chunk", std::to_string(o.chunk), "--threads",
+       std::to_string(o.threads), "--out", killed.string()},
+      killed, markers);
+  EXPECT_GT(done_before, 0);
+  EXPECT_LT(done_before, o.count / o.chunk) << "the run finished before it could be killed";
+  EXPECT_EQ(cases_in(killed), cases_in(whole));
+}
+
 TEST(Fuzz, FindsShrinksAndStoresCasesThatReplayAsFailures) {
   const fs::path d = fuzz_dir("fuzz_basic");
   std::ostringstream progress;
@@ -151,13 +165,7 @@ TEST(Fuzz, KilledWithSigkillAndRestartedLosesNothing) {
   const FuzzSummary expected = run_fuzz(o, progress);
 
   // Kill it mid-run: once some chunks are done but not all.
-  const long done_before = kill_and_restart(
-      {"fuzz", "--method", "paper-intended", "--family", "parallel-cross", "--seed", "7", "--count",
-       "6000", "--chunk", "100", "--threads", "2", "--out", killed.string()},
-      killed, 5);
-  EXPECT_GT(done_before, 0);
-  EXPECT_LT(done_before, 60) << "the run finished before it could be killed";
-  EXPECT_EQ(cases_in(killed), cases_in(whole));
+  expect_kill_loses_nothing(o, whole, killed, 5);
   o.out_dir = killed.string();
   const FuzzSummary after = run_fuzz(o, progress);  // all done: reads the markers only
   EXPECT_EQ(after.resumed, 6000);
@@ -180,29 +188,36 @@ TEST(Fuzz, MovingRunKilledWithSigkillAndRestartedLosesNothing) {
   for (const std::string& f : expected.distinct)
     EXPECT_EQ(read_native(f).at(0).kind, QueryKind::EdgeEdge) << f;
 
-  const long done_before = kill_and_restart(
-      {"fuzz", "--method", "float-cubic", "--family", "parallel-edges", "--seed", "7", "--count",
-       "2000", "--chunk", "50", "--threads", "2", "--out", killed.string()},
-      killed, 4);
-  EXPECT_GT(done_before, 0);
-  EXPECT_LT(done_before, 40) << "the run finished before it could be killed";
-  EXPECT_EQ(cases_in(killed), cases_in(whole));
+  expect_kill_loses_nothing(o, whole, killed, 4);
+}
+
+// The distinct case files of a run of `method` on `family` over `count` cases into a fresh
+// folder `name`.
+std::set<std::string> cases_found(const std::string& name, const std::string& method,
+                                  const std::string& family, long count, bool metamorphic) {
+  std::ostringstream progress;
+  FuzzOptions o = options(fuzz_dir(name), 2);
+  o.method = method;
+  o.family = family;
+  o.count = count;
+  o.metamorphic = metamorphic;
+  return run_fuzz(o, progress).distinct;
+}
+
+std::string first_line(const std::string& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  return line;
 }
 
 // A stored moving case carries the exact CCD contact time and the twin's truth.
 TEST(Fuzz, MovingCasesCarryTheExactContactTime) {
-  const fs::path d = fuzz_dir("fuzz_moving_time");
-  std::ostringstream progress;
-  FuzzOptions o = options(d, 1);
-  o.method = "float-cubic";
-  o.family = "random-linear";
-  o.count = 3000;
-  const FuzzSummary s = run_fuzz(o, progress);
-  ASSERT_FALSE(s.distinct.empty());
-  for (const std::string& f : s.distinct) {
-    std::ifstream in(f);
-    std::string first;
-    std::getline(in, first);
+  const std::set<std::string> found =
+      cases_found("fuzz_moving_time", "float-cubic", "random-linear", 3000, false);
+  ASSERT_FALSE(found.empty());
+  for (const std::string& f : found) {
+    const std::string first = first_line(f);
     const Query q = read_native(f).at(0);
     ASSERT_TRUE(q.has_truth());
     EXPECT_EQ(first.rfind("# float-cubic says ", 0), 0u) << first;
@@ -227,36 +242,29 @@ std::vector<fs::path> fuzz_markers_in(const fs::path& out) {
 // stored apart (metamorphic/<method>/<family>) with the transform named; the mode is part of
 // the run's manifest.
 TEST(Fuzz, MetamorphicRunStoresVerdictChangesApart) {
-  const fs::path d = fuzz_dir("fuzz_metamorphic");
-  std::ostringstream progress;
-  FuzzOptions o = options(d, 2);
-  o.method = "linear-system";
-  o.family = "parallel-land";
-  o.count = 300;
-  o.metamorphic = true;
-  const FuzzSummary s = run_fuzz(o, progress);
-  ASSERT_FALSE(s.distinct.empty());
+  const std::set<std::string> found =
+      cases_found("fuzz_metamorphic", "linear-system", "parallel-land", 300, true);
+  ASSERT_FALSE(found.empty());
   const Method m = select_methods({"linear-system"}).front();
-  for (const std::string& f : s.distinct) {
+  for (const std::string& f : found) {
     EXPECT_NE(f.find("/metamorphic/linear-system/parallel-land/"), std::string::npos) << f;
-    std::ifstream in(f);
-    std::string first;
-    std::getline(in, first);
+    const std::string first = first_line(f);
     EXPECT_NE(first.find("linear-system says "), std::string::npos) << first;
     EXPECT_NE(first.find(" after "), std::string::npos) << first;
     const Query q = read_native(f).at(0);
     EXPECT_EQ(q.truth, int(twin_hit(q)));
     EXPECT_TRUE(metamorphic_failure(m, q)) << f;
   }
-  const fs::path manifest = fuzz_markers_in(d).at(0).parent_path() / "manifest";
+  const fs::path manifest =
+      fs::path(*found.begin()).parent_path().parent_path().parent_path().parent_path() / ".fuzz" /
+      "metamorphic.linear-system.parallel-land.seed7.count300.shard1of1" / "manifest";
+  EXPECT_NE(first_line(manifest.string()), "");
   std::ifstream in(manifest);
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_NE(text.str().find("mode metamorphic\n"), std::string::npos) << text.str();
   // The exact twin, under the same search, changes no verdict.
-  o.method = "exact";
-  o.out_dir = fuzz_dir("fuzz_metamorphic_twin").string();
-  EXPECT_EQ(run_fuzz(o, progress).disagreements, 0);
+  EXPECT_TRUE(cases_found("fuzz_metamorphic_twin", "exact", "parallel-land", 300, true).empty());
 }
 
 TEST(Fuzz, ResumedWithAnotherChunkAndThreadsEndsWithTheSameCases) {
