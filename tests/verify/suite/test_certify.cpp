@@ -7,6 +7,7 @@
 
 #include "fdh/cli/cli.hpp"
 #include "fdh/suite/build_info.hpp"
+#include "fdh/suite/certify_metamorphic.hpp"
 
 #include "temp_dir.hpp"
 
@@ -62,6 +63,32 @@ TEST(Certify, CertifiesTheCommittedCorpusAndCountsEveryCheck) {
   EXPECT_NE(json.find("\"cgal\": \"5."), std::string::npos);
   EXPECT_NE(json.find("\"promises\""), std::string::npos);
   EXPECT_NE(certificate_markdown(c).find("**Certified**"), std::string::npos);
+}
+
+// A method with a promise whose verdict changes under a transform breaks it; one without a
+// promise is only counted.
+TEST(Certify, AMetamorphicChangeBreaksOnlyAPromise) {
+  Method sided;  // "hit" iff the point starts at x > 0: a mirror or an axis swap changes that
+  sided.name = "sided";
+  sided.test[std::size_t(Decision::PointTriangle)] = [](const Query& q) { return q.x[0].x > 0; };
+  Method promised = sided;
+  promised.name = "promised";
+  promised.promise = Promise::Exact;
+  std::vector<MetamorphicCheck> rows;
+  MetamorphicCertifier cert(rows, {sided, promised});
+  ASSERT_EQ(rows.size(), 2u);
+  Query q;
+  q.x = {Vec3{1, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+         Vec3{1, 0, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const std::optional<std::string> broken = cert.check(q);
+  ASSERT_TRUE(broken);
+  EXPECT_EQ(broken->rfind("promised says hit here and no after axes-", 0), 0u) << *broken;
+  EXPECT_GT(rows[0].violations, 0);
+  EXPECT_EQ(rows[0].violations, rows[1].violations);
+  EXPECT_GT(rows[0].checked, rows[0].violations);
+  Certificate c;
+  c.metamorphic = rows;
+  EXPECT_EQ(c.violations(), rows[1].violations);  // the promised row only
 }
 
 TEST(Certify, AWrongStoredTruthIsAViolationSavedAsACorpusFile) {

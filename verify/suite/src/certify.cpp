@@ -5,7 +5,6 @@
 #include <set>
 #include <sstream>
 
-#include "certify_metamorphic.hpp"
 #include "fdh/bvh.hpp"
 #include "fdh/check/checker.hpp"
 #include "fdh/check/registry.hpp"
@@ -19,6 +18,7 @@
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_file.hpp"
 #include "fdh/suite/build_info.hpp"
+#include "fdh/suite/certify_metamorphic.hpp"
 #include "fdh/suite/fuzz.hpp"
 #include "fdh/suite/scene_report.hpp"
 #include "fdh/suite/scene_run.hpp"

@@ -1,11 +1,15 @@
 // certify's metamorphic checks (certify_metamorphic.hpp).
-#include "certify_metamorphic.hpp"
+#include "fdh/suite/certify_metamorphic.hpp"
+
+#include <utility>
 
 #include "fdh/check/metamorphic.hpp"
 
 namespace fdh::verify {
 
-MetamorphicCertifier::MetamorphicCertifier(std::vector<MetamorphicCheck>& rows) : rows_(rows) {
+MetamorphicCertifier::MetamorphicCertifier(std::vector<MetamorphicCheck>& rows,
+                                           std::vector<Method> methods)
+    : rows_(rows), methods_(std::move(methods)) {
   for (const Method& m : methods_) rows_.push_back({m.name, m.promise});
 }
 

@@ -1,5 +1,5 @@
 // certify's metamorphic checks: every method of the registry under every transform
-// (check/metamorphic.hpp), on each query certify draws. Private to fdh_suite (certify.cpp).
+// (check/metamorphic.hpp), on each query certify draws (certify.cpp).
 #pragma once
 
 #include <optional>
@@ -13,8 +13,10 @@ namespace fdh::verify {
 
 class MetamorphicCertifier {
  public:
-  // One row per method of the registry, appended to `rows` (the certificate's).
-  explicit MetamorphicCertifier(std::vector<MetamorphicCheck>& rows);
+  // One row per method (by default every method of the registry), appended to `rows` (the
+  // certificate's).
+  explicit MetamorphicCertifier(std::vector<MetamorphicCheck>& rows,
+                                std::vector<Method> methods = all_methods());
 
   // Counts every method on q; the words of the first verdict change of a method with a promise,
   // if there is one.
@@ -22,7 +24,7 @@ class MetamorphicCertifier {
 
  private:
   std::vector<MetamorphicCheck>& rows_;
-  std::vector<Method> methods_ = all_methods();
+  std::vector<Method> methods_;
 };
 
 }  // namespace fdh::verify
