@@ -102,6 +102,9 @@ TEST(Certify, AWrongStoredTruthIsAViolationSavedAsACorpusFile) {
                              so, se);
   EXPECT_EQ(status, 1);
   EXPECT_NE(se.str().find("wrong.vf:1"), std::string::npos) << se.str();
+  EXPECT_NE(so.str().find("\nmetamorphic (verdicts changed / transformed queries): exact 0/"),
+            std::string::npos)
+      << so.str();
   int saved = 0;
   for (const auto& e : fs::directory_iterator(out))
     saved += e.path().filename().string().rfind("violation-", 0) == 0;

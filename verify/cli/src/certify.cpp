@@ -39,6 +39,15 @@ GMP versions and the git commit. On any violation the first violating case is
 saved in DIR as a corpus file (a .vf query, or an .obj for a tree), named in
 the output, and the exit status is 1.)";
 
+// One line: every method's verdict changes under the metamorphic transforms, of the
+// transformed queries checked.
+void print_metamorphic(const Certificate& c, std::ostream& out) {
+  out << "metamorphic (verdicts changed / transformed queries):";
+  for (const MetamorphicCheck& m : c.metamorphic)
+    out << " " << m.method << " " << m.violations << "/" << m.checked;
+  out << "\n";
+}
+
 int run_certify(const CertifyOptions& opt, const Io& io) {
   check_output_dir(opt.out_dir, {"certificate.json", "certificate.md"});
   const Certificate c = certify(opt);
@@ -49,6 +58,7 @@ int run_certify(const CertifyOptions& opt, const Io& io) {
          << " fuzzed, " << c.scene_queries << " scene, " << c.extra_queries << " extra queries; "
          << c.options.soups << " soup pairs); wrote " << (dir / "certificate.md").string()
          << " and .json\n";
+  print_metamorphic(c, io.out);
   if (c.certified()) return 0;
   io.err << "fdhcert: certify: " << c.first_violation << "\n";
   return 1;
