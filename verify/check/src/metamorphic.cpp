@@ -98,21 +98,36 @@ bool verdict_of(const Method& m, const Query& q) {
   return m.is_twin ? twin_hit(q) : m.hit(q);
 }
 
+std::vector<Transformed> transforms_of(const Query& q) {
+  Query bare;  // no id or file name to copy for every transform
+  bare.kind = q.kind;
+  bare.x = q.x;
+  std::vector<Transformed> out;
+  for (const Transform& t : all_transforms())
+    if (std::optional<Query> moved = t.apply(bare)) out.push_back({&t, std::move(*moved)});
+  return out;
+}
+
 MetamorphicCount count_metamorphic(const Method& m, const Query& q,
+                                   const std::vector<Transformed>& moved,
                                    std::optional<MetamorphicFailure>* first) {
   MetamorphicCount n;
   if (!m.applies_to(q)) return n;
   const bool before = verdict_of(m, q);
-  for (const Transform& t : all_transforms()) {
-    const Maybe moved = t.apply(q);
-    if (!moved || !m.applies_to(*moved)) continue;
+  for (const Transformed& t : moved) {
+    if (!m.applies_to(t.query)) continue;
     ++n.checked;
-    const bool after = verdict_of(m, *moved);
+    const bool after = verdict_of(m, t.query);
     if (after == before) continue;
     ++n.violations;
-    if (first && !*first) *first = MetamorphicFailure{t.name, before, after};
+    if (first && !*first) *first = MetamorphicFailure{t.transform->name, before, after};
   }
   return n;
+}
+
+MetamorphicCount count_metamorphic(const Method& m, const Query& q,
+                                   std::optional<MetamorphicFailure>* first) {
+  return count_metamorphic(m, q, transforms_of(q), first);
 }
 
 std::optional<MetamorphicFailure> metamorphic_failure(const Method& m, const Query& q) {

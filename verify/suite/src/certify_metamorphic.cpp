@@ -15,9 +15,10 @@ MetamorphicCertifier::MetamorphicCertifier(std::vector<MetamorphicCheck>& rows,
 
 std::optional<std::string> MetamorphicCertifier::check(const Query& q) {
   std::optional<std::string> broken;
+  const std::vector<Transformed> moved = transforms_of(q);
   for (std::size_t i = 0; i < methods_.size(); ++i) {
     std::optional<MetamorphicFailure> first;
-    const MetamorphicCount n = count_metamorphic(methods_[i], q, &first);
+    const MetamorphicCount n = count_metamorphic(methods_[i], q, moved, &first);
     rows_[i].checked += n.checked;
     rows_[i].violations += n.violations;
     if (first && rows_[i].promise != Promise::None && !broken)

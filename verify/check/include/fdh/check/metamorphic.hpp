@@ -41,11 +41,22 @@ struct MetamorphicFailure {
 // apply to q, or give a query m makes no decision on, are skipped; so is q itself if m makes none.
 std::optional<MetamorphicFailure> metamorphic_failure(const Method& m, const Query& q);
 
+// q under every transform that applies to it, in order (ids and file names left out): made once
+// for several methods.
+struct Transformed {
+  const Transform* transform = nullptr;
+  Query query;
+};
+std::vector<Transformed> transforms_of(const Query& q);
+
 // m on q under every transform that applies: how many were checked and how many changed its
-// verdict; `first` (if given) gets the first change.
+// verdict; `first` (if given) gets the first change. `moved` is transforms_of(q).
 struct MetamorphicCount {
   long checked = 0, violations = 0;
 };
+MetamorphicCount count_metamorphic(const Method& m, const Query& q,
+                                   const std::vector<Transformed>& moved,
+                                   std::optional<MetamorphicFailure>* first = nullptr);
 MetamorphicCount count_metamorphic(const Method& m, const Query& q,
                                    std::optional<MetamorphicFailure>* first = nullptr);
 
