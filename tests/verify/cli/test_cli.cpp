@@ -248,8 +248,9 @@ TEST(Cli, FuzzJsonSummary) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::ordered_json::parse(r.out);
   EXPECT_EQ(keys(j),
-            (std::vector<std::string>{"method", "family", "seed", "shard", "first", "last", "cases",
-                                      "resumed", "disagreements", "distinct", "files"}));
+            (std::vector<std::string>{"method", "metamorphic", "family", "seed", "shard", "first",
+                                      "last", "cases", "resumed", "disagreements", "distinct",
+                                      "files"}));
   EXPECT_EQ(j["method"], "paper-literal");
   EXPECT_EQ(j["shard"], "1/2");
   EXPECT_EQ(j["first"], 0);
@@ -269,6 +270,26 @@ TEST(Cli, ReplayJsonNamesFailingCases) {
   // Every stored counterexample of a method still fails it.
   EXPECT_EQ(j["methods"]["paper-literal"]["failing"], j["cases"]);
   EXPECT_EQ(j["methods"]["paper-literal"]["cases"].size(), j["cases"].get<std::size_t>());
+}
+
+// Issue 11's "done when": fuzz on a moving family finds, shrinks and stores float-cubic's
+// failures, and replay shows float-cubic failing on each while exact keeps every stored truth.
+TEST(Cli, FuzzFloatCubicOnAMovingFamilyThenReplay) {
+  const std::string dir = fresh_temp_dir("cli_fuzz_moving").string();
+  const CliRun f = fdhcert({"fuzz", "--method", "float-cubic", "--family", "parallel-edges",
+                            "--out", dir, "--count", "300", "--threads", "2", "--json"});
+  ASSERT_EQ(f.status, 0) << f.err;
+  const auto found = nlohmann::ordered_json::parse(f.out);
+  EXPECT_GT(found["disagreements"], 0);
+  ASSERT_GT(found["distinct"], 0);
+  EXPECT_LT(found["distinct"], found["disagreements"]);  // shrinking merged cases
+  const CliRun r = fdhcert({"replay", dir, "--methods", "exact,float-cubic", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  EXPECT_EQ(j["cases"], found["distinct"]);
+  EXPECT_EQ(j["exact_mismatches"].size(), 0u);
+  EXPECT_EQ(j["methods"]["exact"]["failing"], 0);
+  EXPECT_EQ(j["methods"]["float-cubic"]["failing"], j["cases"]);
 }
 
 TEST(Cli, SimulateJsonFields) {

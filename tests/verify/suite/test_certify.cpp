@@ -7,6 +7,7 @@
 
 #include "fdh/cli/cli.hpp"
 #include "fdh/suite/build_info.hpp"
+#include "fdh/suite/certify_metamorphic.hpp"
 
 #include "temp_dir.hpp"
 
@@ -48,7 +49,17 @@ TEST(Certify, CertifiesTheCommittedCorpusAndCountsEveryCheck) {
   EXPECT_EQ(c.boxes[0].soup_pairs, 3);
   EXPECT_GT(c.boxes[3].boxes, c.corpus_queries);
   EXPECT_GT(c.truths, 50);
+  // Every method of the registry under the metamorphic transforms; promised ones change nothing.
+  ASSERT_EQ(c.metamorphic.size(), all_methods().size());
+  for (const MetamorphicCheck& m : c.metamorphic) {
+    EXPECT_GT(m.checked, 1000) << m.method;
+    if (m.promise != Promise::None) {
+      EXPECT_EQ(m.violations, 0) << m.method;
+    }
+  }
   const std::string json = certificate_json(c);
+  EXPECT_NE(json.find("\"metamorphic\""), std::string::npos);
+  EXPECT_NE(certificate_markdown(c).find("## Metamorphic checks"), std::string::npos);
   EXPECT_NE(json.find("\"certified\": true"), std::string::npos);
   EXPECT_NE(json.find("\"cgal\": \"5."), std::string::npos);
   EXPECT_NE(json.find("\"promises\""), std::string::npos);
@@ -62,6 +73,32 @@ TEST(Certify, CertifiesTheCommittedCorpusAndCountsEveryCheck) {
   EXPECT_NE(certificate_markdown(c).find("## Peers"), std::string::npos);
 }
 
+// A method with a promise whose verdict changes under a transform breaks it; one without a
+// promise is only counted.
+TEST(Certify, AMetamorphicChangeBreaksOnlyAPromise) {
+  Method sided;  // "hit" iff the point starts at x > 0: a mirror or an axis swap changes that
+  sided.name = "sided";
+  sided.test[std::size_t(Decision::PointTriangle)] = [](const Query& q) { return q.x[0].x > 0; };
+  Method promised = sided;
+  promised.name = "promised";
+  promised.promise = Promise::Exact;
+  std::vector<MetamorphicCheck> rows;
+  MetamorphicCertifier cert(rows, {sided, promised});
+  ASSERT_EQ(rows.size(), 2u);
+  Query q;
+  q.x = {Vec3{1, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+         Vec3{1, 0, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const std::optional<std::string> broken = cert.check(q);
+  ASSERT_TRUE(broken);
+  EXPECT_EQ(broken->rfind("promised says hit here and no after axes-", 0), 0u) << *broken;
+  EXPECT_GT(rows[0].violations, 0);
+  EXPECT_EQ(rows[0].violations, rows[1].violations);
+  EXPECT_GT(rows[0].checked, rows[0].violations);
+  Certificate c;
+  c.metamorphic = rows;
+  EXPECT_EQ(c.violations(), rows[1].violations);  // the promised row only
+}
+
 TEST(Certify, AWrongStoredTruthIsAViolationSavedAsACorpusFile) {
   const fs::path corpus = fresh_temp_dir("certify_bad_corpus"),
                  out = fresh_temp_dir("certify_bad_out");
@@ -73,6 +110,9 @@ TEST(Certify, AWrongStoredTruthIsAViolationSavedAsACorpusFile) {
                              so, se);
   EXPECT_EQ(status, 1);
   EXPECT_NE(se.str().find("wrong.vf:1"), std::string::npos) << se.str();
+  EXPECT_NE(so.str().find("\nmetamorphic (verdicts changed / transformed queries): exact 0/"),
+            std::string::npos)
+      << so.str();
   int saved = 0;
   for (const auto& e : fs::directory_iterator(out))
     saved += e.path().filename().string().rfind("violation-", 0) == 0;

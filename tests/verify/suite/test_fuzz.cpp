@@ -21,6 +21,7 @@
 #include <climits>
 #include <thread>
 
+#include "fdh/check/metamorphic.hpp"
 #include "fdh/io/query_io.hpp"
 
 #include "temp_dir.hpp"
@@ -59,6 +60,67 @@ std::map<std::string, std::string> cases_in(const fs::path& dir) {
     out[rel] = ss.str();
   }
   return out;
+}
+
+// fdhcert with these arguments as a child process, its standard output discarded.
+pid_t spawn_fdhcert(const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {FDHCERT_BIN};
+  argv.insert(argv.end(), args.begin(), args.end());
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::vector<char*> a;
+    for (const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
+    a.push_back(nullptr);
+    const int devnull = ::open("/dev/null", O_WRONLY);
+    ::dup2(devnull, 1);
+    ::execv(a[0], a.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// The done-markers (cases-B-E) under out/.fuzz.
+long marker_count(const fs::path& out) {
+  long n = 0;
+  std::error_code ec;
+  for (const auto& e : fs::recursive_directory_iterator(out / ".fuzz", ec))
+    n += e.path().filename().string().rfind("cases-", 0) == 0;
+  return n;
+}
+
+// Runs `fdhcert fuzz args` into `out`, kills it with SIGKILL once `markers` chunks are done,
+// checks that every file left is whole, and runs it again to the end. The markers done before
+// the kill.
+long kill_and_restart(const std::vector<std::string>& args, const fs::path& out, long markers) {
+  const pid_t pid = spawn_fdhcert(args);
+  for (int i = 0; i < 2000 && marker_count(out) < markers; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFSIGNALED(status));
+  const long done_before = marker_count(out);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // workers die with the parent
+  // Every file left behind is whole: a case file parses. Temporaries live in .fuzz/tmp only.
+  for (const auto& [rel, text] : cases_in(out))
+    EXPECT_NO_THROW(read_native((out / rel).string())) << rel;
+  ::waitpid(spawn_fdhcert(args), &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  return done_before;
+}
+
+// The run of `o` (already run whole into `whole`) as fdhcert, into `killed`: killed after
+// `markers` chunks and restarted, it ends with exactly the whole run's case files.
+void expect_kill_loses_nothing(const FuzzOptions& o, const fs::path& whole, const fs::path& killed,
+                               long markers) {
+  const long done_before = kill_and_restart(
+      {"fuzz", "--method", o.method, "--family", o.family, "--seed", std::to_string(o.seed),
+       "--count", std::to_string(o.count), "--chunk", std::to_string(o.chunk), "--threads",
+       std::to_string(o.threads), "--out", killed.string()},
+      killed, markers);
+  EXPECT_GT(done_before, 0);
+  EXPECT_LT(done_before, o.count / o.chunk) << "the run finished before it could be killed";
+  EXPECT_EQ(cases_in(killed), cases_in(whole));
 }
 
 TEST(Fuzz, FindsShrinksAndStoresCasesThatReplayAsFailures) {
@@ -102,57 +164,69 @@ TEST(Fuzz, KilledWithSigkillAndRestartedLosesNothing) {
   o.count = 6000;
   const FuzzSummary expected = run_fuzz(o, progress);
 
-  const std::vector<std::string> argv = {
-      FDHCERT_BIN, "fuzz", "--method", "paper-intended", "--family", "parallel-cross",
-      "--seed",    "7",    "--count",  "6000",           "--chunk",  "100",
-      "--threads", "2",    "--out",    killed.string()};
-  const auto start = [&] {
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-      std::vector<char*> a;
-      for (const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
-      a.push_back(nullptr);
-      const int devnull = ::open("/dev/null", O_WRONLY);
-      ::dup2(devnull, 1);
-      ::execv(a[0], a.data());
-      ::_exit(127);
-    }
-    return pid;
-  };
   // Kill it mid-run: once some chunks are done but not all.
-  const pid_t pid = start();
-  const fs::path markers = killed / ".fuzz";
-  const auto count_markers = [&] {
-    long n = 0;
-    std::error_code ec;
-    for (const auto& e : fs::recursive_directory_iterator(markers, ec))
-      n += e.path().filename().string().rfind("cases-", 0) == 0;
-    return n;
-  };
-  for (int i = 0; i < 2000 && count_markers() < 5; ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  ::kill(pid, SIGKILL);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status));
-  const long done_before = count_markers();
-  EXPECT_GT(done_before, 0);
-  EXPECT_LT(done_before, 60) << "the run finished before it could be killed";
-  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // workers die with the parent
-
-  // Every file left behind is whole: a case file parses. Temporaries live in .fuzz/tmp only.
-  for (const auto& [rel, text] : cases_in(killed))
-    EXPECT_NO_THROW(read_native((killed / rel).string())) << rel;
-
-  const pid_t again = start();
-  ::waitpid(again, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-  EXPECT_EQ(cases_in(killed), cases_in(whole));
+  expect_kill_loses_nothing(o, whole, killed, 5);
   o.out_dir = killed.string();
   const FuzzSummary after = run_fuzz(o, progress);  // all done: reads the markers only
   EXPECT_EQ(after.resumed, 6000);
   EXPECT_EQ(after.disagreements, expected.disagreements);
   EXPECT_EQ(after.distinct.size(), expected.distinct.size());
+}
+
+// The moving half of fuzz keeps the same guarantee: float-cubic on a moving edge-edge family,
+// killed with SIGKILL part way and started again, ends with exactly the uninterrupted run's cases.
+TEST(Fuzz, MovingRunKilledWithSigkillAndRestartedLosesNothing) {
+  const fs::path whole = fuzz_dir("fuzz_moving_whole"), killed = fuzz_dir("fuzz_moving_killed");
+  std::ostringstream progress;
+  FuzzOptions o = options(whole, 2);
+  o.method = "float-cubic";
+  o.family = "parallel-edges";
+  o.count = 2000;
+  o.chunk = 50;
+  const FuzzSummary expected = run_fuzz(o, progress);
+  ASSERT_FALSE(expected.distinct.empty());
+  for (const std::string& f : expected.distinct)
+    EXPECT_EQ(read_native(f).at(0).kind, QueryKind::EdgeEdge) << f;
+
+  expect_kill_loses_nothing(o, whole, killed, 4);
+}
+
+// The distinct case files of a run of `method` on `family` over `count` cases into a fresh
+// folder `name`.
+std::set<std::string> cases_found(const std::string& name, const std::string& method,
+                                  const std::string& family, long count, bool metamorphic) {
+  std::ostringstream progress;
+  FuzzOptions o = options(fuzz_dir(name), 2);
+  o.method = method;
+  o.family = family;
+  o.count = count;
+  o.metamorphic = metamorphic;
+  return run_fuzz(o, progress).distinct;
+}
+
+std::string first_line(const std::string& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+// A stored moving case carries the exact CCD contact time and the twin's truth.
+TEST(Fuzz, MovingCasesCarryTheExactContactTime) {
+  const std::set<std::string> found =
+      cases_found("fuzz_moving_time", "float-cubic", "random-linear", 3000, false);
+  ASSERT_FALSE(found.empty());
+  for (const std::string& f : found) {
+    const std::string first = first_line(f);
+    const Query q = read_native(f).at(0);
+    ASSERT_TRUE(q.has_truth());
+    EXPECT_EQ(first.rfind("# float-cubic says ", 0), 0u) << first;
+    EXPECT_NE(first.find(q.truth ? ", exact says hit (" : ", exact says no."), std::string::npos)
+        << first;
+    if (q.truth) {
+      EXPECT_NE(first.find("at t "), std::string::npos) << first;
+    }
+  }
 }
 
 // The markers of the run in `out` (names cases-B-E), as paths.
@@ -162,6 +236,36 @@ std::vector<fs::path> fuzz_markers_in(const fs::path& out) {
     if (e.path().filename().string().rfind("cases-", 0) == 0) v.push_back(e.path());
   std::sort(v.begin(), v.end());
   return v;
+}
+
+// fuzz --metamorphic: cases where the method's verdict changes under a transform, shrunk and
+// stored apart (metamorphic/<method>/<family>) with the transform named; the mode is part of
+// the run's manifest.
+TEST(Fuzz, MetamorphicRunStoresVerdictChangesApart) {
+  const std::set<std::string> found =
+      cases_found("fuzz_metamorphic", "linear-system", "parallel-land", 300, true);
+  ASSERT_FALSE(found.empty());
+  const Method m = select_methods({"linear-system"}).front();
+  for (const std::string& f : found) {
+    EXPECT_NE(f.find("/metamorphic/linear-system/parallel-land/"), std::string::npos) << f;
+    const std::string first = first_line(f);
+    EXPECT_NE(first.find("linear-system says "), std::string::npos) << first;
+    EXPECT_NE(first.find(" after "), std::string::npos) << first;
+    const Query q = read_native(f).at(0);
+    EXPECT_EQ(q.truth, int(twin_hit(q)));
+    EXPECT_TRUE(metamorphic_failure(m, q)) << f;
+  }
+  // A case is OUT/metamorphic/linear-system/parallel-land/<hash>.vf; the run is OUT/.fuzz/RUN.
+  const fs::path folder = fs::path(*found.begin()).parent_path().parent_path().parent_path();
+  const fs::path manifest = folder.parent_path() / ".fuzz" /
+                            "metamorphic.linear-system.parallel-land.seed7.count300.shard1of1" /
+                            "manifest";
+  std::ifstream in(manifest);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("mode metamorphic\n"), std::string::npos) << text.str();
+  // The exact twin, under the same search, changes no verdict.
+  EXPECT_TRUE(cases_found("fuzz_metamorphic_twin", "exact", "parallel-land", 300, true).empty());
 }
 
 TEST(Fuzz, ResumedWithAnotherChunkAndThreadsEndsWithTheSameCases) {
@@ -204,6 +308,7 @@ TEST(Fuzz, RefusesToStartBesideAnUnfinishedRunWithOtherOptions) {
            [](FuzzOptions& o) { o.seed = 8; }, [](FuzzOptions& o) { o.count = 1300; },
            [](FuzzOptions& o) { o.method = "paper-literal"; },
            [](FuzzOptions& o) { o.family = "angled"; },
+           [](FuzzOptions& o) { o.metamorphic = true; },
            [](FuzzOptions& o) { o.shard = 1, o.shards = 2; }}) {
     FuzzOptions o = options(d, 1);
     change(o);

@@ -29,6 +29,9 @@ under the method's promise, and counts every check:
     Bullet's boxes on random and touching point sets; the own rows must show 0,
     the peers' violations are counted and the first ones shrunk into
     DIR/peers/<library>/, and CORPUS/peers is replayed.
+  - every method's verdict under each metamorphic transform of each query
+    (time reversal, axis order, translation, velocity, scale, relabelling):
+    counted per method; robust and the twin must change none.
 The queries: every *.vf under the corpus folder, N fuzzed queries of each
 generator family (static and moving), the narrow-phase queries of every
 shipped scene (CORPUS/scenes/*.scene run with robust; every 10th frame, or
@@ -41,6 +44,15 @@ const char* const kCertifyFooter =
 GMP versions and the git commit. On any violation the first violating case is
 saved in DIR as a corpus file (a .vf query, or an .obj for a tree), named in
 the output, and the exit status is 1.)";
+
+// One line: every method's verdict changes under the metamorphic transforms, of the
+// transformed queries checked.
+void print_metamorphic(const Certificate& c, std::ostream& out) {
+  out << "metamorphic (verdicts changed / transformed queries):";
+  for (const MetamorphicCheck& m : c.metamorphic)
+    out << " " << m.method << " " << m.violations << "/" << m.checked;
+  out << "\n";
+}
 
 int run_certify(CertifyOptions opt, bool quiet, const Io& io) {
   check_output_dir(opt.out_dir, {"certificate.json", "certificate.md"});
@@ -58,6 +70,7 @@ int run_certify(CertifyOptions opt, bool quiet, const Io& io) {
          << " fuzzed, " << c.scene_queries << " scene, " << c.extra_queries << " extra queries; "
          << c.options.soups << " soup pairs); wrote " << (dir / "certificate.md").string()
          << " and .json\n";
+  print_metamorphic(c, io.out);
   if (c.certified()) return 0;
   io.err << "fdhcert: certify: " << c.first_violation << "\n";
   return 1;

@@ -16,15 +16,28 @@ namespace {
 const char* const kFuzzAbout =
     R"(search a generator family for cases where a method is wrong
 
-Draws N queries from generator family F and runs method M and exact on each.
-Every disagreement is shrunk (RapidCheck's shrink tree, greedy) to a minimal
-case; distinct cases are written to DIR/M/F/<hash>.vf in the native format,
-with exact's verdict as the truth and a comment saying what M answered.)";
+Draws N queries from generator family F (static or moving, vertex-face or
+edge-edge) and checks method M against the exact twin on each it applies to.
+Every disagreement is shrunk to a minimal case: RapidCheck's shrink tree, then
+a greedy pass that stops motion, moves the case toward the origin and
+shortens coordinates while M still fails. Distinct cases are written to
+DIR/M/F/<hash>.vf in the native format, with the twin's verdict as the truth
+and a comment saying what M answered and the exact contact (its time, for a
+moving query).
+
+With --metamorphic it looks instead for queries where M's verdict changes
+under a transform that keeps the truth (time reversal, axis order, mirror,
+dyadic translation or velocity, power-of-two scale, relabelled corners or
+ends; docs/methods.md): no oracle needed, so any method, the exact twin
+included. Such a query is shrunk while some transform still changes M's
+verdict, and stored in DIR/metamorphic/M/F/<hash>.vf with the twin's verdict
+as the truth and a comment naming the transform and both verdicts.)";
 
 const char* const kFuzzFooter =
     R"(The same seed and shard always give the same cases. Progress is saved in
 DIR/.fuzz/ as cases are done: a run killed and started again with the same
---method, --family, --seed, --count and --shard (any --chunk and --threads)
+--method, --family, --seed, --count, --shard and --metamorphic (any --chunk
+and --threads)
 continues where it stopped and ends with exactly the cases of an uninterrupted
 run. A second run on DIR while one runs, or a run with other options while DIR
 holds an unfinished run, stops with exit status 2. On a terminal, a progress
@@ -36,10 +49,9 @@ struct FuzzCommandOptions {
   bool json = false;
 };
 
-std::vector<std::string> static_family_names() {
+std::vector<std::string> every_family_name() {
   std::vector<std::string> names;
-  for (const Family& f : all_families())
-    if (!f.moving) names.push_back(f.name);
+  for (const Family& f : all_families()) names.push_back(f.name);
   return names;
 }
 
@@ -76,6 +88,7 @@ void print_summary(const FuzzOptions& opt, const FuzzSummary& s, bool json, std:
   const std::string shard = std::to_string(opt.shard + 1) + "/" + std::to_string(opt.shards);
   if (json) {
     print_json(out, {{"method", opt.method},
+                     {"metamorphic", opt.metamorphic},
                      {"family", opt.family},
                      {"seed", opt.seed},
                      {"shard", shard},
@@ -88,10 +101,12 @@ void print_summary(const FuzzOptions& opt, const FuzzSummary& s, bool json, std:
                      {"files", s.distinct}});
     return;
   }
-  out << "fuzz " << opt.method << " on " << opt.family << ", seed " << opt.seed << ", cases "
-      << s.first << ".." << s.last - 1 << " (shard " << shard << ")\n"
+  out << "fuzz " << (opt.metamorphic ? "--metamorphic " : "") << opt.method << " on " << opt.family
+      << ", seed " << opt.seed << ", cases " << s.first << ".." << s.last - 1 << " (shard " << shard
+      << ")\n"
       << s.cases << " cases (" << s.resumed << " done by an earlier run), " << s.disagreements
-      << " disagreements with exact, " << s.distinct.size() << " distinct shrunk cases\n";
+      << (opt.metamorphic ? " verdicts changed by a transform, " : " disagreements with exact, ")
+      << s.distinct.size() << " distinct shrunk cases\n";
   for (const std::string& f : s.distinct) out << "  " << f << "\n";
 }
 
@@ -123,10 +138,10 @@ Command add_fuzz(CLI::App& app) {
   std::vector<std::string> methods;
   for (const Method& m : all_methods()) methods.push_back(m.name);
   cmd->add_option("--method", opt.method, wrapped(methods, 56))->required()->type_name("M");
-  cmd->add_option("--family", opt.family, wrapped(static_family_names(), 56))
+  cmd->add_option("--family", opt.family, wrapped(every_family_name(), 56))
       ->required()
       ->type_name("F")
-      ->check(one_of(static_family_names()));
+      ->check(one_of(every_family_name()));
   cmd->add_option("--out", opt.out_dir, "where the cases go (created if needed)")
       ->required()
       ->type_name("DIR");
@@ -150,6 +165,8 @@ Command add_fuzz(CLI::App& app) {
       ->type_name("N")
       ->check(CLI::Range(1, 1 << 20));
   add_plugin_option(*cmd);
+  cmd->add_flag("--metamorphic", opt.metamorphic,
+                "look for verdicts that change under a truth-keeping\ntransform (above)");
   cmd->add_flag("--json", o->json, "print the summary as one JSON object");
   return {cmd, [o](const Io& io) { return run_fuzz_command(*o, io); }};
 }

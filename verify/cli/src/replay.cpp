@@ -16,12 +16,14 @@ namespace {
 const char* const kReplayAbout =
     R"(re-run stored cases: which methods still fail where
 
-Re-runs stored cases (native query files; a folder means every *.vf below it,
-such as corpus/ or a fuzz --out folder). Every case must carry a truth.
+Re-runs stored cases of every kind: static and moving vertex-face, edge-edge
+(native query files; a folder means every *.vf below it, such as corpus/ or a
+fuzz --out folder). Every case must carry a truth.
 
   exact must still give each case's stored truth: if it does not, replay names
   the case and exits with status 1.
-  For every other method it reports which cases it still gets wrong.)";
+  For every other method it reports which cases it still gets wrong (a case
+  it makes no decision on is not counted).)";
 
 const char* const kReplayFooter =
     R"(--json prints {"cases": N, "exact_mismatches": [...],
@@ -32,21 +34,16 @@ struct ReplayOptions {
   bool json = false;
 };
 
-// The stored static vertex-face cases under the paths; the others are counted on err.
-std::vector<Query> read_cases(const std::vector<std::string>& paths, std::ostream& err) {
+// The stored cases under the paths, of every kind: static and moving vertex-face, edge-edge.
+std::vector<Query> read_cases(const std::vector<std::string>& paths) {
   std::vector<Query> cases;
-  std::size_t skipped = 0;
   for (const std::string& p : paths)
     for (const std::string& f : list_query_files(p))
       for (Query& q : read_native(f)) {
         if (!q.has_truth()) throw InputError(q.file, q.line, "a stored case needs a truth");
-        if (q.is_static_vf())
-          cases.push_back(std::move(q));
-        else
-          ++skipped;
+        cases.push_back(std::move(q));
       }
-  if (skipped) err << "fdhcert: note: skipped " << skipped << " moving or edge-edge cases\n";
-  if (cases.empty()) throw InputError(paths.front(), 0, "no stored static vertex-face case");
+  if (cases.empty()) throw InputError(paths.front(), 0, "no stored case");
   return cases;
 }
 
@@ -94,7 +91,7 @@ void print_replay(const Replay& r, std::size_t cases, bool json, std::ostream& o
 
 int run_replay(const ReplayOptions& o, const Io& io) {
   const std::vector<Method> methods = methods_named(o.methods);
-  const std::vector<Query> cases = read_cases(o.paths, io.err);
+  const std::vector<Query> cases = read_cases(o.paths);
   const Replay r = replay(cases, classify(cases, methods));
   print_replay(r, cases.size(), o.json, io.out);
   for (const std::string& w : r.twin_mismatches)

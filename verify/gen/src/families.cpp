@@ -7,6 +7,7 @@
 #include "constructions.hpp"
 #include "fdh/gen/rapidcheck.hpp"
 #include "fdh/gen/shrink.hpp"
+#include "fdh/gen/simplify.hpp"
 #include "fdh/io/query_io.hpp"
 
 namespace fdh::verify {
@@ -52,7 +53,16 @@ std::optional<Generated> shrunk_failure(const Family& f, std::uint64_t seed,
                                         const std::function<bool(const Generated&)>& fails) {
   const rc::Shrinkable<Generated> s = gen_family(f)(rc::Random(seed));
   if (!fails(s.value())) return std::nullopt;
-  return shrink_failure(s, fails);
+  Generated g = shrink_failure(s, fails);
+  const Query shrunk = g.query;
+  g.query = simplify_failure(shrunk, [&g, &fails](const Query& q) {
+    Generated h = g;
+    h.query = q;
+    return fails(h);
+  });
+  // A changed query is no longer the construction's: what it guaranteed no longer holds.
+  if (!(g.query.x == shrunk.x)) g.query.truth = -1, g.kind.clear(), g.time.clear();
+  return g;
 }
 
 void showValue(const Generated& g, std::ostream& os) {

@@ -7,6 +7,7 @@
 
 #include "constructions.hpp"
 #include "draw.hpp"
+#include "fdh/dyadic.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -178,13 +179,6 @@ Generated degenerate() {
   Generated g = make(s, x + w, x - std::ldexp(double(mu), -6) * w, 1);
   if (s.e == s.d || cross(w, s.e - s.d) != Vec3{}) g.time = ratio(64, 64 + mu);
   return g;
-}
-
-// a + b, and whether it was exact (Knuth's TwoSum error term is zero).
-bool add_exactly(double a, double b, double& s) {
-  s = a + b;
-  const double bb = s - a;
-  return (a - (s - bb)) + (b - bb) == 0;
 }
 
 // The composite families start from one of these.

@@ -108,12 +108,37 @@ void properties_markdown(Out to, const Certificate& c) {
                  c.truths, c.truth_violations);
 }
 
+json metamorphic_json(const Certificate& c) {
+  json out = json::array();
+  for (const MetamorphicCheck& m : c.metamorphic)
+    out.push_back({{"method", m.method},
+                   {"promise", to_string(m.promise)},
+                   {"checked", m.checked},
+                   {"violations", m.violations}});
+  return out;
+}
+
+// Every method under the truth-keeping transforms: promised methods must change no verdict.
+void metamorphic_markdown(Out to, const Certificate& c) {
+  fmt::format_to(
+      to,
+      "\n## Metamorphic checks\n\nEvery query above under each transform that keeps "
+      "its truth (docs/methods.md, \"Metamorphic checks\"): a changed verdict is wrong "
+      "on one of the two queries. Methods that promise the exact verdict must change "
+      "none (a violation); the others are counted.\n\n"
+      "| method | promise | transformed queries | verdicts changed |\n|---|---|---|---|\n");
+  for (const MetamorphicCheck& m : c.metamorphic)
+    fmt::format_to(to, "| `{}` | {} | {} | {} |\n", m.method, to_string(m.promise), m.checked,
+                   m.violations);
+}
+
 }  // namespace
 
 long Certificate::checks() const {
   long n = truths;
   for (const PromiseCheck& p : promises) n += p.checked;
   for (const BoxCheck& b : boxes) n += b.boxes + b.soup_pairs;
+  for (const MetamorphicCheck& m : metamorphic) n += m.promise != Promise::None ? m.checked : 0;
   return n;
 }
 
@@ -121,6 +146,7 @@ long Certificate::violations() const {
   long n = truth_violations;
   for (const PromiseCheck& p : promises) n += p.violations;
   for (const BoxCheck& b : boxes) n += b.box_violations + b.cull_violations;
+  for (const MetamorphicCheck& m : metamorphic) n += m.promise != Promise::None ? m.violations : 0;
   return n;
 }
 
@@ -153,6 +179,7 @@ std::string certificate_json(const Certificate& c) {
       {"tree_no_false_cull", culls},
       {"promises", promises_json(c)},
       {"exact_equals_stored_truth", {{"queries", c.truths}, {"violations", c.truth_violations}}},
+      {"metamorphic", metamorphic_json(c)},
       {"peers", peers_json(c.peers)},
       {"first_violation", c.first_violation}};
   return json_text(j, "certificate.json");
@@ -169,6 +196,7 @@ std::string certificate_markdown(const Certificate& c) {
       c.commit, c.cgal, c.gmp, mode(c), c.options.seed, c.options.quick ? " --quick" : "");
   inputs_markdown(to, c);
   properties_markdown(to, c);
+  metamorphic_markdown(to, c);
   fmt::format_to(to, "\n{}", peers_markdown(c.peers));
   return fmt::to_string(out);
 }

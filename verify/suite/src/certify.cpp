@@ -18,6 +18,7 @@
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_file.hpp"
 #include "fdh/suite/build_info.hpp"
+#include "fdh/suite/certify_metamorphic.hpp"
 #include "fdh/suite/fuzz.hpp"
 #include "fdh/suite/scene_report.hpp"
 #include "fdh/suite/scene_run.hpp"
@@ -49,6 +50,7 @@ class Certifier {
     }
     const bool twin = twin_hit(q);
     check_truth(q, twin);
+    check_metamorphic(q, twin);
     const Decision d = decision_of(q);
     for (PromiseCheck& p : c_.promises) {
       if (p.decision != d) continue;
@@ -63,6 +65,14 @@ class Certifier {
       saved.truth = twin;
       violation(saved, describe(m, v) + " (" + to_string(d) + ")");
     }
+  }
+
+  void check_metamorphic(const Query& q, bool twin) {
+    const std::optional<std::string> broken = metamorphic_.check(q);
+    if (!broken) return;
+    Query saved = q;
+    saved.truth = twin;
+    violation(saved, *broken);
   }
 
   void check_truth(const Query& q, bool twin) {
@@ -155,6 +165,7 @@ class Certifier {
   Certificate& c_;
   const std::vector<Method> methods_ = promised_methods();
   const std::vector<BoxMethod> boxes_ = all_box_methods();
+  MetamorphicCertifier metamorphic_{c_.metamorphic};
 };
 
 // Every shipped scene runs with robust as its narrow phase (and its self-collision pass, if it

@@ -23,9 +23,9 @@
 #include <vector>
 
 #include "fdh/check/checker.hpp"
-#include "fdh/exact/point_triangle.hpp"
 #include "fdh/gen/families.hpp"
 #include "fdh/io/case_files.hpp"
+#include "fuzz_target.hpp"
 
 namespace fdh::verify {
 namespace fs = std::filesystem;
@@ -183,25 +183,28 @@ struct Params {
   std::uint64_t seed = 0;
   long count = 0;
   int shard = 0, shards = 1;  // shard 0-based
+  bool metamorphic = false;   // recorded only when set: older manifests stay valid
 
   bool operator==(const Params& o) const {
     return method == o.method && family == o.family && seed == o.seed && count == o.count &&
-           shard == o.shard && shards == o.shards;
+           shard == o.shard && shards == o.shards && metamorphic == o.metamorphic;
   }
   std::string folder_name() const {
-    return method + "." + family + ".seed" + std::to_string(seed) + ".count" +
-           std::to_string(count) + ".shard" + std::to_string(shard + 1) + "of" +
-           std::to_string(shards);
+    return (metamorphic ? "metamorphic." : "") + method + "." + family + ".seed" +
+           std::to_string(seed) + ".count" + std::to_string(count) + ".shard" +
+           std::to_string(shard + 1) + "of" + std::to_string(shards);
   }
   std::string options() const {
-    return "--method " + method + " --family " + family + " --seed " + std::to_string(seed) +
-           " --count " + std::to_string(count) + " --shard " + std::to_string(shard + 1) + "/" +
+    return (metamorphic ? "--metamorphic " : "") + std::string("--method ") + method +
+           " --family " + family + " --seed " + std::to_string(seed) + " --count " +
+           std::to_string(count) + " --shard " + std::to_string(shard + 1) + "/" +
            std::to_string(shards);
   }
   std::string manifest() const {
     return "fdhcert fuzz run\nmethod " + method + "\nfamily " + family + "\nseed " +
            std::to_string(seed) + "\ncount " + std::to_string(count) + "\nshard " +
-           std::to_string(shard + 1) + "/" + std::to_string(shards) + "\n";
+           std::to_string(shard + 1) + "/" + std::to_string(shards) + "\n" +
+           (metamorphic ? "mode metamorphic\n" : "");
   }
   long first() const { return shard_begin(count, shard, shards); }
   long last() const { return shard_begin(count, shard + 1, shards); }
@@ -227,6 +230,10 @@ std::optional<Params> read_manifest(const fs::path& file) {
       char slash = 0;
       sh = bool(in >> p.shard >> slash >> p.shards) && slash == '/';
       --p.shard;
+    } else if (key == "mode") {
+      std::string mode;
+      if (!(in >> mode) || mode != "metamorphic") return std::nullopt;
+      p.metamorphic = true;
     } else {
       return std::nullopt;
     }
@@ -325,16 +332,10 @@ void refuse_other_unfinished_runs(const fs::path& meta, const fs::path& out, con
   if (ec) throw std::runtime_error(meta.string() + ": cannot list: " + ec.message());
 }
 
-std::string describe(const Method& m, bool said, const exact::PointTriangleContact& e) {
-  std::string s = m.name + " says " + (said ? "hit" : "no") + ", exact says ";
-  s += e.hit ? std::string("hit (") + exact::to_string(e.kind) + " at t = " + e.time + ")" : "no";
-  return s;
-}
-
-// Fuzzing checks static vertex-face queries: only a static family will do.
-const Family& static_family(const std::string& name) {
+// Any family of the registry: static or moving, vertex-face or edge-edge.
+const Family& any_family(const std::string& name) {
   const Family* f = family_named(name);
-  if (!f || f->moving) throw std::invalid_argument("unknown family '" + name + "'");
+  if (!f) throw std::invalid_argument("unknown family '" + name + "'");
   return *f;
 }
 
@@ -342,17 +343,18 @@ Params params_of(const FuzzOptions& opt, const Method& m, const Family& f) {
   if (opt.shards < 1 || opt.shard < 0 || opt.shard >= opt.shards)
     throw std::invalid_argument("--shard I/N needs 1 <= I <= N");
   if (opt.count < 0) throw std::invalid_argument("--count must not be negative");
-  return {m.name, f.name, opt.seed, opt.count, opt.shard, opt.shards};
+  return {m.name, f.name, opt.seed, opt.count, opt.shard, opt.shards, opt.metamorphic};
 }
 
 struct Run {
   const FuzzOptions& opt;
-  Method method = select_methods({opt.method}).front();
-  const Family& generator = static_family(opt.family);
+  FuzzTarget target{select_methods({opt.method}).front(), opt.metamorphic};
+  const Method& method = target.method;
+  const Family& generator = any_family(opt.family);
   std::string family = generator.name;
   Params params = params_of(opt, method, generator);
   fs::path out{opt.out_dir};
-  fs::path case_dir = out / method.name / family;
+  fs::path case_dir = out / target.case_folder(family);
   long first = params.first(), last = params.last();
   long chunk = std::max(1, opt.chunk);
   Workspace space;  // takes the lock: only after every option is known to be good
@@ -375,7 +377,7 @@ struct Run {
     }
   }
 
-  bool fails(const Generated& g) const { return !check(method, g.query).agree(); }
+  bool fails(const Generated& g) const { return target.fails(g.query); }
 
   // Runs cases [r.begin, r.end), writes their case files, then the marker; its disagreements.
   long run_chunk(Range r) const {
@@ -386,20 +388,11 @@ struct Run {
                                                   [this](const Generated& x) { return fails(x); });
       if (!g) continue;
       ++disagreements;
-      Query& q = g->query;
-      const exact::PointTriangleContact e =
-          exact::point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f());
-      q.truth = e.hit;
-      q.id = method.name + "/" + family;
-      const std::string name = case_hash(q) + ".vf";
-      // The text depends on the case alone (not on which i found it first), so that any
-      // number of workers and shards write identical files.
-      const std::string text =
-          case_file_text(q, {describe(method, method.hit(q), e) + ".",
-                             "Shrunk by fdhcert fuzz from family " + family + "."});
+      const std::string name = case_hash(g->query) + ".vf";
+      const std::string text = target.case_text(g->query, family);
       // Most disagreements shrink to a case found before: one read instead of a synced write.
       if (!holds(case_dir / name, text)) space.write_whole(case_dir / name, text);
-      files.push_back(method.name + "/" + family + "/" + name);
+      files.push_back(target.case_folder(family) + "/" + name);
     }
     if (!files.empty()) sync_folder(case_dir);  // the cases are on disk before their marker
     std::ostringstream os;

@@ -49,8 +49,10 @@ std::vector<std::string> family_names(bool moving);
 // Case `seed` of family f: the same seed gives the same case, on every run and every machine.
 Generated generate(const Family& f, std::uint64_t seed);
 
-// Case `seed` of family f shrunk while it still fails (a greedy descent through RapidCheck's
-// shrink tree, see fdh/gen/shrink.hpp), or nullopt when the case does not fail at all.
+// Case `seed` of family f shrunk while it still fails, or nullopt when the case does not fail at
+// all: a greedy descent through RapidCheck's shrink tree (fdh/gen/shrink.hpp), then a greedy
+// pass over the query itself (fdh/gen/simplify.hpp: less motion, nearer the origin, shorter
+// coordinates). Where that pass changed the query, its truth, kind and time are unset.
 std::optional<Generated> shrunk_failure(const Family& f, std::uint64_t seed,
                                         const std::function<bool(const Generated&)>& fails);
 

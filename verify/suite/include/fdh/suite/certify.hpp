@@ -50,6 +50,15 @@ struct BoxCheck {
   bool tree = true;  // fast/'s FDH tree is made of these boxes (not a plug-in's): the soup check
 };
 
+// One method of the registry under the metamorphic transforms (check/metamorphic.hpp), on every
+// query certify draws: transformed queries checked, and how many changed its verdict. A method
+// with a promise (robust, the twin) must change none; the others are only counted.
+struct MetamorphicCheck {
+  std::string method;
+  Promise promise = Promise::None;
+  long checked = 0, violations = 0;
+};
+
 struct Certificate {
   CertifyOptions options;
   std::string commit, cgal, gmp;
@@ -57,17 +66,18 @@ struct Certificate {
   std::vector<std::string> families, moving_families;
   // Narrow-phase queries recorded from the shipped scenes (<corpus>/scenes/*.scene).
   long scenes = 0, scene_queries = 0;
-  std::vector<PromiseCheck> promises;     // every (method, query decision) with a promise
-  std::vector<BoxCheck> boxes;            // every k-DOP method
-  long truths = 0, truth_violations = 0;  // queries with a stored truth: the twin = the truth
+  std::vector<PromiseCheck> promises;         // every (method, query decision) with a promise
+  std::vector<BoxCheck> boxes;                // every k-DOP method
+  long truths = 0, truth_violations = 0;      // queries with a stored truth: the twin = the truth
+  std::vector<MetamorphicCheck> metamorphic;  // every method of the registry
   // The own k-DOPs beside the peer libraries' boxes (peers.hpp); shrunk cases in out_dir/peers/,
   // stored ones replayed from corpus_dir/peers/. Only the own rows count as checks here.
   PeersReport peers;
   std::string first_violation;  // what went wrong first, and the file it was saved to
 
   bool certified() const { return first_violation.empty(); }
-  long checks() const;      // every check counted above
-  long violations() const;  // every violation counted above
+  long checks() const;      // every check counted above (metamorphic: promised methods only)
+  long violations() const;  // every violation counted above (the same)
 };
 
 // Writes the first violating case (if any) into options.out_dir. Throws InputError for bad

@@ -1,5 +1,6 @@
-// fdhcert fuzz: search a generator family for queries where a method disagrees with `exact`,
-// shrink each to a minimal case, and store the distinct ones.
+// fdhcert fuzz: search a generator family (static or moving, vertex-face or edge-edge) for
+// queries where a method disagrees with the exact twin of its decision, shrink each to a minimal
+// case (fdh/gen/families.hpp: shrunk_failure), and store the distinct ones.
 //
 // Case i of a run is drawn from its own seed (seed, i), so a run is the same whatever the
 // number of workers, and a shard is a contiguous range of i. Work goes in chunks; a chunk's
@@ -15,12 +16,13 @@
 //                   is written there, synced, then renamed into place; a run starts by emptying
 //                   tmp/ (under the lock, so no live run owns anything in it). A user's files,
 //                   whatever their names, are never removed.
-//   RUN/manifest    RUN is method.family.seedS.countN.shardIofS; the manifest records those
-//                   parameters and is written before any case.
+//   RUN/manifest    RUN is method.family.seedS.countN.shardIofS (prefixed "metamorphic." in
+//                   that mode); the manifest records those parameters and the mode, and is
+//                   written before any case.
 //   RUN/cases-B-E   done-marker of cases [B, E): `<disagreements> <case file>...`. Markers name
 //                   case ranges, not chunk numbers, so a run resumed with any --chunk or
 //                   --threads runs exactly the cases no marker covers.
-// A run refuses to start while OUT holds an unfinished run with other parameters (method,
+// A run refuses to start while OUT holds an unfinished run with other parameters (mode, method,
 // family, seed, count, shard): resuming it with those would not end with its cases.
 #pragma once
 
@@ -34,7 +36,11 @@ namespace fdh::verify {
 
 struct FuzzOptions {
   std::string method;
-  std::string family = "angled";  // a static family (fdh/gen/families.hpp)
+  // Look for queries where the method's verdict changes under a transform that keeps the truth
+  // (fdh/check/metamorphic.hpp) instead of disagreements with the twin; cases go to
+  // OUT/metamorphic/<method>/<family>/. Part of the run's parameters, like the method.
+  bool metamorphic = false;
+  std::string family = "angled";  // any family, static or moving (fdh/gen/families.hpp)
   std::uint64_t seed = 1;
   long count = 10000;  // cases in the whole run, over all shards
   int shard = 0;       // this process runs shard `shard` of `shards` (0-based)
