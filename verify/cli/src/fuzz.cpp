@@ -1,5 +1,4 @@
 // fdhcert fuzz: find, shrink and store cases where a method disagrees with exact.
-#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include <memory>
@@ -9,6 +8,7 @@
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/suite/fuzz.hpp"
 #include "plugin_option.hpp"
+#include "progress.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -46,7 +46,7 @@ line shows cases done, rate and cases found.)";
 struct FuzzCommandOptions {
   FuzzOptions run;
   std::string shard;  // "I/N"
-  bool json = false;
+  bool json = false, quiet = false;
 };
 
 std::vector<std::string> every_family_name() {
@@ -118,7 +118,7 @@ int run_fuzz_command(FuzzCommandOptions& o, const Io& io) {
     opt.shard = std::stoi(o.shard.substr(0, slash)) - 1;  // checked by shard_validator
     opt.shards = std::stoi(o.shard.substr(slash + 1));
   }
-  opt.progress = ::isatty(2) && !o.json;
+  opt.progress = progress_wanted(io, o.quiet || o.json);
   FuzzSummary s;
   try {
     s = run_fuzz(opt, io.err);
@@ -168,6 +168,7 @@ Command add_fuzz(CLI::App& app) {
   cmd->add_flag("--metamorphic", opt.metamorphic,
                 "look for verdicts that change under a truth-keeping\ntransform (above)");
   cmd->add_flag("--json", o->json, "print the summary as one JSON object");
+  add_quiet_flag(*cmd, o->quiet);
   return {cmd, [o](const Io& io) { return run_fuzz_command(*o, io); }};
 }
 

@@ -138,7 +138,7 @@ long Certificate::checks() const {
   long n = truths;
   for (const PromiseCheck& p : promises) n += p.checked;
   for (const BoxCheck& b : boxes) n += b.boxes + b.soup_pairs;
-  for (const MetamorphicCheck& m : metamorphic) n += m.promise != Promise::None ? m.checked : 0;
+  for (const MetamorphicCheck& m : metamorphic) n += m.held() ? m.checked : 0;
   return n;
 }
 
@@ -146,7 +146,7 @@ long Certificate::violations() const {
   long n = truth_violations;
   for (const PromiseCheck& p : promises) n += p.violations;
   for (const BoxCheck& b : boxes) n += b.box_violations + b.cull_violations;
-  for (const MetamorphicCheck& m : metamorphic) n += m.promise != Promise::None ? m.violations : 0;
+  for (const MetamorphicCheck& m : metamorphic) n += m.held() ? m.violations : 0;
   return n;
 }
 

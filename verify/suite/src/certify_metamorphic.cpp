@@ -21,7 +21,7 @@ std::optional<std::string> MetamorphicCertifier::check(const Query& q) {
     const MetamorphicCount n = count_metamorphic(methods_[i], q, moved, &first);
     rows_[i].checked += n.checked;
     rows_[i].violations += n.violations;
-    if (first && rows_[i].promise != Promise::None && !broken)
+    if (first && rows_[i].held() && !broken)
       broken = describe(methods_[i], *first) + " (metamorphic)";
   }
   return broken;

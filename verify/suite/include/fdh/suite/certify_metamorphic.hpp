@@ -18,8 +18,8 @@ class MetamorphicCertifier {
   explicit MetamorphicCertifier(std::vector<MetamorphicCheck>& rows,
                                 std::vector<Method> methods = all_methods());
 
-  // Counts every method on q; the words of the first verdict change of a method with a promise,
-  // if there is one.
+  // Counts every method on q; the words of the first verdict change of a method held to
+  // invariance (MetamorphicCheck::held), if there is one.
   std::optional<std::string> check(const Query& q);
 
  private:
