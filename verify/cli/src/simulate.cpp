@@ -43,7 +43,7 @@ Exit status: 0; 2 for bad input. A scene error names the file and line.)";
 
 struct SimulateOptions {
   std::string scene_path, obj_dir, png, record, movie;
-  int movie_frames = 60;
+  int movie_frames = 48;
   int grid = 0;           // 0: the scene's
   std::string thickness;  // "": the scene's
   std::string self;       // "on", "off" or "": the scene's
@@ -245,12 +245,12 @@ void add_output_options(CLI::App& cmd, SimulateOptions& o) {
       ->type_name("DIR");
   cmd.add_option("--png", o.png, "render the last frame to FILE")->type_name("FILE");
   cmd.add_option("--movie", o.movie,
-                 "render the run to FILE as an animated PNG (APNG, 480x360,\n"
-                 "20 frames per second, looping; browsers play it)")
+                 "render the run to FILE as an animated PNG (APNG, 400x300,\n"
+                 "16 frames per second, looping; browsers play it)")
       ->type_name("FILE");
   cmd.add_option("--movie-frames", o.movie_frames,
                  "about how many frames the movie shows, evenly spread\n"
-                 "over the run (default 60)")
+                 "over the run (default 48)")
       ->type_name("N")
       ->check(CLI::Range(1, 10000));
   cmd.add_option("--record", o.record,

@@ -116,7 +116,7 @@ void write_scene_png(const std::string& path, const cloth::Scene& scene, const S
 SceneMovie::SceneMovie(const cloth::Scene& scene, int frames_in_run, int movie_frames)
     : obstacles_(obstacles_of(scene)),
       stride_(std::max(1, frames_in_run / std::max(1, movie_frames))),
-      movie_(480, 360, 20) {}
+      movie_(400, 300, 16) {}
 
 void SceneMovie::frame(const cloth::Simulation& sim, int frame) {
   if (frame != 1 && frame % stride_ != 0) return;

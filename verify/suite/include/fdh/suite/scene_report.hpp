@@ -24,10 +24,10 @@ nlohmann::ordered_json scene_run_json(const cloth::Scene& scene, const SceneRunO
 void write_scene_png(const std::string& path, const cloth::Scene& scene, const SceneRun& run);
 
 // A run as an animated PNG (fdh/io/movie.hpp): the cloth and the obstacles at the first frame
-// and every stride-th after it, about `movie_frames` in all, 480×360 at 20 frames per second.
+// and every stride-th after it, about `movie_frames` in all, 400×300 at 16 frames per second.
 class SceneMovie {
  public:
-  SceneMovie(const cloth::Scene& scene, int frames_in_run, int movie_frames = 60);
+  SceneMovie(const cloth::Scene& scene, int frames_in_run, int movie_frames = 48);
   void frame(const cloth::Simulation& sim, int frame);  // SceneRunOptions::on_frame's
   void write(const std::string& path) const;            // whole; throws without a frame
 
