@@ -154,47 +154,54 @@ int variations(const Piece& p, double err) {
   return v;
 }
 
+// True if no coefficient of the piece has a certain sign.
+bool flat(const Piece& p, double err) {
+  for (const double c : p.b)
+    if (sign_of(c, err) != 0) return false;
+  return true;
+}
+
 // The conditions g_i over a piece: its rounded ends pushed out by twice its slack.
 Conditions conditions(const Query& q, const Piece& p) {
   const auto eval = q.kind == QueryKind::VertexFace ? &vertex_face : &edge_edge;
   return eval(q, Interval{p.lo - 2 * p.slack, p.hi + 2 * p.slack});
 }
 
-// The root of f isolated in `p` (one sign variation, f(lo) f(hi) < 0): narrowed by halving
-// until the conditions g_i over the piece are certain, or the halving point's sign is not.
-Filtered contact_at_root(const Query& q, const Bernstein& f, Piece p) {
-  // The conditions over the whole piece: certain signs there settle this root wherever it is.
-  const auto decide = [&q](const Piece& piece) {
-    const Conditions c = conditions(q, piece);
-    bool outside = false, inside = true;
-    for (int i = 0; i < c.n; ++i) outside |= c.g[i].negative(), inside &= c.g[i].positive();
-    return outside ? Filtered::No : (inside ? Filtered::Yes : Filtered::Uncertain);
-  };
-  for (int round = 0;; ++round) {
-    if (round > 0 || p.hi - p.lo <= 0x1p-20) {
-      const Filtered r = decide(p);
-      if (r != Filtered::Uncertain || p.hi - p.lo <= 0x1p-40) return r;
-    }
-    // Halve down to 2^-20 wide (first round), then 2^-20 times narrower.
-    const double target = round == 0 ? 0x1p-20 : (p.hi - p.lo) * 0x1p-20;
-    while (p.hi - p.lo > target) {
-      // At the middle, or at 7/16 when the root sits (nearly) on the middle: handcrafted
-      // contacts sit at dyadic times.
-      bool moved = false;
-      for (const double s : {0.5, 7.0 / 16}) {
-        Piece left, right;
-        split(p, s, left, right);
-        const double err = bound(f, left.depth);
-        const int s0 = sign_of(left.b[0], err), sm = sign_of(left.b[3], err);
-        if (s0 == 0 || sm == 0) continue;
-        p = s0 != sm ? left : right;
-        moved = true;
-        break;
-      }
-      // f too flat here to narrow further (nearly coplanar for a while): decide on this piece.
-      if (!moved) return decide(p);
-    }
+// Interval evaluations of the conditions allowed per query. One costs some ten times the whole
+// first stage, and a query that needs more (f zero or nearly so for a long time: coplanar
+// motion) almost never gets decided by them: it goes to the exact test sooner.
+constexpr int kMaxEvaluations = 4;
+
+// Keeps the half of `p` that holds f's root (certain opposite signs at its ends): split at the
+// middle, or at 7/16 when the root sits (nearly) on the middle, since handcrafted contacts sit
+// at dyadic times. False if neither split point's sign is certain: f too flat there to narrow
+// (nearly coplanar for a while).
+bool halve_at_root(const Bernstein& f, Piece& p) {
+  for (const double s : {0.5, 7.0 / 16}) {
+    Piece left, right;
+    split(p, s, left, right);
+    const double err = bound(f, left.depth);
+    const int s0 = sign_of(left.b[0], err), sm = sign_of(left.b[3], err);
+    if (s0 == 0 || sm == 0) continue;
+    p = s0 != sm ? left : right;
+    return true;
   }
+  return false;
+}
+
+// The root of f isolated in `p` (one sign variation, f(lo) f(hi) < 0): narrowed by halving to
+// 2^-40 wide (or until the halving point's sign is uncertain), then the conditions g_i over the
+// piece, once: certain signs there settle this root wherever it is in the piece. (Deciding at
+// 2^-20 first and narrowing only if needed decided no more queries on the benchmark sample, the
+// hard families or the generic ones, and cost a second evaluation where it failed.)
+Filtered contact_at_root(const Query& q, const Bernstein& f, Piece p, int& evaluations) {
+  while (p.hi - p.lo > 0x1p-40 && halve_at_root(f, p)) {
+  }
+  if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
+  const Conditions c = conditions(q, p);
+  bool outside = false, inside = true;
+  for (int i = 0; i < c.n; ++i) outside |= c.g[i].negative(), inside &= c.g[i].positive();
+  return outside ? Filtered::No : (inside ? Filtered::Yes : Filtered::Uncertain);
 }
 
 // Stage 2: isolate the roots of f in [0, 1] by Bernstein subdivision (a piece whose
@@ -203,7 +210,7 @@ Filtered contact_at_root(const Query& q, const Bernstein& f, Piece p) {
 Filtered subdivide(const Query& q, const Bernstein& f) {
   constexpr int kMaxPieces = 12, kMaxDepth = 8;
   Piece stack[kMaxDepth + 2];
-  int top = 0, pieces = 0;
+  int top = 0, pieces = 0, evaluations = 0;
   stack[top++] = {0, 1, 0, {f.b[0], f.b[1], f.b[2], f.b[3]}, 0};
   bool uncertain = false;
   while (top > 0) {
@@ -214,13 +221,20 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
     if (v < 0) {
       // f's sign is uncertain somewhere here (f may even vanish throughout, as for a cube
       // sliding on a plane): a condition certainly < 0 over the whole piece still excludes it.
+      if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
       const Conditions c = conditions(q, p);
       bool outside = false;
       for (int i = 0; i < c.n; ++i) outside |= c.g[i].negative();
       if (outside) continue;
+      // Smaller pieces would not show a sign either where f may vanish on the whole piece (no
+      // coefficient certain: coplanar motion) or at t = 0 or 1 (its first or last one
+      // uncertain there: a contact at the very start or end). The exact test decides.
+      if (flat(p, err) || (p.lo == 0 && sign_of(p.b[0], err) == 0) ||
+          (p.hi == 1 && sign_of(p.b[3], err) == 0))
+        return Filtered::Uncertain;
     }
     if (v == 1 && sign_of(p.b[0], err) != sign_of(p.b[3], err)) {
-      const Filtered r = contact_at_root(q, f, p);
+      const Filtered r = contact_at_root(q, f, p, evaluations);
       if (r == Filtered::Yes) return r;
       uncertain |= r == Filtered::Uncertain;
       continue;

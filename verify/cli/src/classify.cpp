@@ -29,8 +29,8 @@ moving linearly over the step. exact, robust and float-cubic take them all;
 the paper's methods and linear-system take only static vertex-face queries
 (the triangle stands still) and show n/a elsewhere.)";
 
-const char *const kClassifyFooter =
-                      R"(--json prints one JSON object instead of the table:
+const char* const kClassifyFooter =
+    R"(--json prints one JSON object instead of the table:
   {"queries": N, "static_vf": S, "moving_vf": M, "edge_edge": E,
    "truth": "file"|"exact"|"mixed",
    "methods": {"exact": {"tp": .., "tn": .., "fp": .., "fn": .., "na": ..,
@@ -39,8 +39,10 @@ const char *const kClassifyFooter =
 with null counts where a method applies to nothing. With --time-ratio BASE it
 also holds
   "time_ratio": {"to": BASE, "limit": R, "queries": N, "methods": {"robust":
-                 {"max": .., "median": .., "worst": WHERE, "over_limit": ..}, ...}}
-each method's time over BASE's, query by query (each query timed alone).
+                 {"vertex-face-ccd": {"queries": .., "max": .., "median": ..,
+                  "worst": WHERE, "over_limit": ..}, ...}, ...}}
+each method's time over BASE's, query by query (each query timed alone), per
+query decision (point-triangle, vertex-face-ccd, edge-edge-ccd).
 
 Bad input (a malformed line, a wrong count of numbers, a non-number, NaN or
 Inf, a rational that is not a double, a missing file) is reported as
@@ -54,7 +56,7 @@ struct ClassifyOptions {
   std::string per_query;
   std::string time_ratio;  // a base method: per-query time ratios to it
   double ratio_limit = 1.1;
-  int rounds = 5;
+  int rounds = 7;
 };
 
 // Every file's queries, read before anything is printed; files without queries are skipped.
@@ -123,14 +125,19 @@ nlohmann::ordered_json print_time_ratios(const ClassifyOptions& o, const std::ve
   const auto times = time_each_query(qs, methods, o.rounds);
   nlohmann::ordered_json j{{"to", o.time_ratio}, {"limit", o.ratio_limit}, {"queries", qs.size()}};
   j["methods"] = nlohmann::ordered_json::object();
-  for (const TimeRatio& r : time_ratios(times, methods, base, o.ratio_limit)) {
+  for (const TimeRatio& r : time_ratios(qs, times, methods, base, o.ratio_limit)) {
     if (r.method == o.time_ratio) continue;
     const std::string worst = where_and_id(qs[r.worst]);
-    j["methods"][r.method] = {
-        {"max", r.max}, {"median", r.median}, {"worst", worst}, {"over_limit", r.over}};
+    j["methods"][r.method][to_string(r.decision)] = {{"queries", r.queries},
+                                                     {"max", r.max},
+                                                     {"median", r.median},
+                                                     {"worst", worst},
+                                                     {"over_limit", r.over}};
     if (!o.json)
-      out << fmt::format("per query, {} / {} time: max {:.3f} at {}, median {:.3f}, {} above {}\n",
-                         r.method, o.time_ratio, r.max, worst, r.median, r.over, o.ratio_limit);
+      out << fmt::format(
+          "{} / {} time per {} query ({}): max {:.3f} at {}, median {:.3f}, {} above {}\n",
+          r.method, o.time_ratio, to_string(r.decision), r.queries, r.max, worst, r.median, r.over,
+          o.ratio_limit);
   }
   return j;
 }
@@ -207,7 +214,7 @@ Command add_classify(CLI::App& app) {
                     "the ratio --time-ratio counts the queries above (default 1.1)", "R", 1e-3,
                     1e3);
   add_number_option(*cmd, "--rounds", o->rounds,
-                    "--time-ratio's timed batches per query and method (default 5)", "N", 1, 100);
+                    "--time-ratio's timed batches per query and method (default 7)", "N", 1, 100);
   cmd->add_flag("--check", o->check,
                 "exit 1 if exact disagrees with a file's truth, or a method\n"
                 "that promises exact answers (robust) with exact, on any query");
