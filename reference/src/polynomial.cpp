@@ -209,18 +209,28 @@ Poly Poly::linear(const mpz_class& at0, const mpz_class& at1) {
   return Poly({at0, at1 - at0});
 }
 
-Poly operator+(const Poly& a, const Poly& b) {
+namespace {
+
+// a + b or a - b, each coefficient written once (GMP sizes it then).
+Poly add_or_subtract(const Poly& a, const Poly& b, bool subtract) {
+  static const mpz_class zero;
   std::vector<mpz_class> c(std::max(a.c.size(), b.c.size()));
-  for (std::size_t i = 0; i < a.c.size(); ++i) c[i] += a.c[i];
-  for (std::size_t i = 0; i < b.c.size(); ++i) c[i] += b.c[i];
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const mpz_class& x = i < a.c.size() ? a.c[i] : zero;
+    const mpz_class& y = i < b.c.size() ? b.c[i] : zero;
+    (subtract ? mpz_sub : mpz_add)(c[i].get_mpz_t(), x.get_mpz_t(), y.get_mpz_t());
+  }
   return Poly(std::move(c));
 }
 
+}  // namespace
+
+Poly operator+(const Poly& a, const Poly& b) {
+  return add_or_subtract(a, b, false);
+}
+
 Poly operator-(const Poly& a, const Poly& b) {
-  std::vector<mpz_class> c(std::max(a.c.size(), b.c.size()));
-  for (std::size_t i = 0; i < a.c.size(); ++i) c[i] += a.c[i];
-  for (std::size_t i = 0; i < b.c.size(); ++i) c[i] -= b.c[i];
-  return Poly(std::move(c));
+  return add_or_subtract(a, b, true);
 }
 
 Poly operator*(const Poly& a, const Poly& b) {
@@ -229,6 +239,20 @@ Poly operator*(const Poly& a, const Poly& b) {
   for (std::size_t i = 0; i < a.c.size(); ++i)
     for (std::size_t j = 0; j < b.c.size(); ++j)
       mpz_addmul(c[i + j].get_mpz_t(), a.c[i].get_mpz_t(), b.c[j].get_mpz_t());
+  return Poly(std::move(c));
+}
+
+Poly sum_of_products(std::initializer_list<Product> terms) {
+  std::size_t n = 0;
+  for (const Product& t : terms)
+    if (!t.a.is_zero() && !t.b.is_zero()) n = std::max(n, t.a.c.size() + t.b.c.size() - 1);
+  std::vector<mpz_class> c(n);
+  for (const Product& t : terms) {
+    const auto accumulate = t.minus ? &mpz_submul : &mpz_addmul;
+    for (std::size_t i = 0; i < t.a.c.size(); ++i)
+      for (std::size_t j = 0; j < t.b.c.size(); ++j)
+        accumulate(c[i + j].get_mpz_t(), t.a.c[i].get_mpz_t(), t.b.c[j].get_mpz_t());
+  }
   return Poly(std::move(c));
 }
 

@@ -15,6 +15,7 @@
 
 #include <gmpxx.h>
 
+#include <initializer_list>
 #include <vector>
 
 namespace fdh::exact::algebra {
@@ -33,6 +34,15 @@ struct Poly {
 Poly operator+(const Poly& a, const Poly& b);
 Poly operator-(const Poly& a, const Poly& b);
 Poly operator*(const Poly& a, const Poly& b);
+// A term of sum_of_products: a b, or -a b.
+struct Product {
+  const Poly& a;
+  const Poly& b;
+  bool minus = false;
+};
+// The sum of the terms, accumulated in place: no product becomes a polynomial of its own (each
+// temporary costs an allocation per coefficient). The cross and dot products are made of these.
+Poly sum_of_products(std::initializer_list<Product> terms);
 Poly derivative(const Poly& p);
 Poly gcd(const Poly& a, const Poly& b);  // primitive, positive leading coefficient; gcd(0,0) = 0
 Poly squarefree(const Poly& p);          // p / gcd(p, p'), primitive; p != 0
