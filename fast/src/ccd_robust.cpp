@@ -49,15 +49,11 @@ Bernstein bernstein(const Vec3 u[2], const Vec3 v[2], const Vec3 w[2]) {
   return r;
 }
 
-int sign_of(double x, double err) {
-  return x > err ? 1 : (-x > err ? -1 : 0);
-}
-
 int bernstein_sign(const Bernstein& f) {
   if (!f.valid) return 0;
   int sign = 0;
   for (int i = 0; i < 4; ++i) {
-    const int s = sign_of(f.b[i], f.err);
+    const int s = sign_beyond(f.b[i], f.err);
     if (s == 0 || (sign != 0 && s != sign)) return 0;
     sign = s;
   }
@@ -146,7 +142,7 @@ double bound(const Bernstein& f, int depth) {
 int variations(const Piece& p, double err) {
   int prev = 0, v = 0;
   for (const double c : p.b) {
-    const int s = sign_of(c, err);
+    const int s = sign_beyond(c, err);
     if (s == 0) return -1;
     if (prev != 0 && s != prev) ++v;
     prev = s;
@@ -157,7 +153,7 @@ int variations(const Piece& p, double err) {
 // True if no coefficient of the piece has a certain sign.
 bool flat(const Piece& p, double err) {
   for (const double c : p.b)
-    if (sign_of(c, err) != 0) return false;
+    if (sign_beyond(c, err) != 0) return false;
   return true;
 }
 
@@ -181,7 +177,7 @@ bool halve_at_root(const Bernstein& f, Piece& p) {
     Piece left, right;
     split(p, s, left, right);
     const double err = bound(f, left.depth);
-    const int s0 = sign_of(left.b[0], err), sm = sign_of(left.b[3], err);
+    const int s0 = sign_beyond(left.b[0], err), sm = sign_beyond(left.b[3], err);
     if (s0 == 0 || sm == 0) continue;
     p = s0 != sm ? left : right;
     return true;
@@ -229,11 +225,11 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
       // Smaller pieces would not show a sign either where f may vanish on the whole piece (no
       // coefficient certain: coplanar motion) or at t = 0 or 1 (its first or last one
       // uncertain there: a contact at the very start or end). The exact test decides.
-      if (flat(p, err) || (p.lo == 0 && sign_of(p.b[0], err) == 0) ||
-          (p.hi == 1 && sign_of(p.b[3], err) == 0))
+      if (flat(p, err) || (p.lo == 0 && sign_beyond(p.b[0], err) == 0) ||
+          (p.hi == 1 && sign_beyond(p.b[3], err) == 0))
         return Filtered::Uncertain;
     }
-    if (v == 1 && sign_of(p.b[0], err) != sign_of(p.b[3], err)) {
+    if (v == 1 && sign_beyond(p.b[0], err) != sign_beyond(p.b[3], err)) {
       const Filtered r = contact_at_root(q, f, p, evaluations);
       if (r == Filtered::Yes) return r;
       uncertain |= r == Filtered::Uncertain;
