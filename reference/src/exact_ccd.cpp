@@ -59,8 +59,8 @@ std::array<PVec, 4> integer_paths(const Query& q) {
       e = algebra::Dyadic::of(j == 0 ? q.x[i].x : j == 1 ? q.x[i].y : q.x[i].z);
       k = std::max(k, e.k);
     }
-  mpz_class z[24];
-  for (int i = 0; i < 24; ++i) mpz_mul_2exp(z[i].get_mpz_t(), d[i].a.get_mpz_t(), k - d[i].k);
+  algebra::Int z[24];
+  for (int i = 0; i < 24; ++i) z[i] = d[i].a << (k - d[i].k);
   std::array<PVec, 4> v;
   for (int i = 0; i < 4; ++i)
     v[i] = {Poly::linear(z[3 * i], z[3 * i + 12]), Poly::linear(z[3 * i + 1], z[3 * i + 13]),

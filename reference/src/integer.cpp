@@ -1,0 +1,265 @@
+#include "integer.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <utility>
+
+namespace fdh::exact::algebra {
+namespace {
+
+using u128 = unsigned __int128;
+static_assert(GMP_NUMB_BITS == 64, "the machine form converts 64-bit limbs");
+
+u128 magnitude(__int128 v) {
+  return v < 0 ? u128(0) - u128(v) : u128(v);  // also for the most negative v
+}
+
+void set_mpz(mpz_ptr z, __int128 v) {
+  const u128 m = magnitude(v);
+  if (m >> 64 == 0) {
+    mpz_set_ui(z, std::uint64_t(m));
+  } else {
+    const std::uint64_t limbs[2] = {std::uint64_t(m), std::uint64_t(m >> 64)};
+    mpz_import(z, 2, -1, sizeof limbs[0], 0, 0, limbs);  // least significant first
+  }
+  if (v < 0) mpz_neg(z, z);
+}
+
+// Scratch integers for machine operands of GMP operations: they keep their storage, so a view
+// costs no allocation after the first few.
+struct Scratch {
+  mpz_class a, b;
+};
+Scratch& scratch() {
+  thread_local Scratch s;
+  return s;
+}
+
+}  // namespace
+
+Int::Int(const mpz_class& z) : big_(true) {
+  mpz_init_set(&z_, z.get_mpz_t());
+  shrink();
+}
+
+Int::Int(const Int& o) : big_(o.big_) {
+  if (big_)
+    mpz_init_set(&z_, &o.z_);
+  else
+    small_ = o.small_;
+}
+
+Int::Int(Int&& o) noexcept : big_(o.big_) {
+  if (big_)
+    z_ = o.z_, o.big_ = false, o.small_ = 0;  // the limbs change owner
+  else
+    small_ = o.small_;
+}
+
+Int& Int::operator=(const Int& o) {
+  if (this == &o) return *this;
+  if (o.big_)
+    mpz_set(make_big(), &o.z_);  // reuses this one's limbs
+  else
+    *this = of(o.small_);
+  return *this;
+}
+
+Int& Int::operator=(Int&& o) noexcept {
+  if (this == &o) return *this;
+  if (big_) mpz_clear(&z_);
+  big_ = o.big_;
+  if (big_)
+    z_ = o.z_, o.big_ = false, o.small_ = 0;
+  else
+    small_ = o.small_;
+  return *this;
+}
+
+Int::~Int() {
+  if (big_) mpz_clear(&z_);
+}
+
+mpz_ptr Int::make_big() {
+  if (!big_) {
+    const __int128 v = small_;
+    mpz_init(&z_);
+    big_ = true;
+    set_mpz(&z_, v);
+  }
+  return &z_;
+}
+
+void Int::set(__int128 v) {
+  if (big_)
+    set_mpz(&z_, v);
+  else
+    small_ = v;
+}
+
+void Int::shrink() {
+  if (!big_ || mpz_sizeinbase(&z_, 2) > 126) return;
+  const u128 m = (u128(mpz_getlimbn(&z_, 1)) << 64) | u128(mpz_getlimbn(&z_, 0));
+  const bool negative = mpz_sgn(&z_) < 0;
+  mpz_clear(&z_);
+  big_ = false;
+  small_ = negative ? -__int128(m) : __int128(m);
+}
+
+mpz_srcptr Int::view(const Int& x, mpz_ptr scratch) {
+  if (x.big_) return &x.z_;
+  set_mpz(scratch, x.small_);
+  return scratch;
+}
+
+mpz_class Int::to_mpz() const {
+  mpz_class z;
+  if (big_)
+    mpz_set(z.get_mpz_t(), &z_);
+  else
+    set_mpz(z.get_mpz_t(), small_);
+  return z;
+}
+
+double Int::frexp(long* e) const {
+  if (big_) return mpz_get_d_2exp(e, &z_);
+  const u128 m = magnitude(small_);
+  if (m == 0) return *e = 0, 0.0;
+  const std::uint64_t hi = std::uint64_t(m >> 64), lo = std::uint64_t(m);
+  const int bits = hi ? 128 - __builtin_clzll(hi) : 64 - __builtin_clzll(lo);
+  const int drop = bits > 53 ? bits - 53 : 0;  // truncate to 53 bits: exact as a double
+  const double t = std::ldexp(double(std::uint64_t(m >> drop)), drop - bits);
+  *e = bits;
+  return small_ < 0 ? -t : t;
+}
+
+// The binary operations: the machine result if it did not overflow, else GMP's.
+Int operator+(const Int& a, const Int& b) {
+  __int128 r;
+  if (!a.big_ && !b.big_ && !__builtin_add_overflow(a.small_, b.small_, &r)) return Int::of(r);
+  Int out;
+  mpz_add(out.make_big(), Int::view(a, scratch().a.get_mpz_t()),
+          Int::view(b, scratch().b.get_mpz_t()));
+  out.shrink();
+  return out;
+}
+
+Int operator-(const Int& a, const Int& b) {
+  __int128 r;
+  if (!a.big_ && !b.big_ && !__builtin_sub_overflow(a.small_, b.small_, &r)) return Int::of(r);
+  Int out;
+  mpz_sub(out.make_big(), Int::view(a, scratch().a.get_mpz_t()),
+          Int::view(b, scratch().b.get_mpz_t()));
+  out.shrink();
+  return out;
+}
+
+Int operator*(const Int& a, const Int& b) {
+  __int128 r;
+  if (!a.big_ && !b.big_ && !__builtin_mul_overflow(a.small_, b.small_, &r)) return Int::of(r);
+  Int out;
+  mpz_mul(out.make_big(), Int::view(a, scratch().a.get_mpz_t()),
+          Int::view(b, scratch().b.get_mpz_t()));
+  out.shrink();
+  return out;
+}
+
+Int operator<<(const Int& a, unsigned long k) {
+  if (!a.big_) {
+    const u128 m = magnitude(a.small_);
+    if (m == 0) return Int();
+    if (k < 126 && (m >> (126 - k)) == 0) {  // the result stays below 2^126
+      const __int128 s = __int128(m << k);
+      return Int::of(a.small_ < 0 ? -s : s);
+    }
+  }
+  Int out;
+  mpz_mul_2exp(out.make_big(), Int::view(a, scratch().a.get_mpz_t()), k);
+  return out;
+}
+
+Int gcd(const Int& a, const Int& b) {
+  if (!a.big_ && !b.big_) {
+    u128 x = magnitude(a.small_), y = magnitude(b.small_);  // Euclid: no overflow
+    while (y != 0) x = std::exchange(y, x % y);
+    if (x >> 126 == 0) return Int::of(__int128(x));
+  }
+  Int out;
+  mpz_gcd(out.make_big(), Int::view(a, scratch().a.get_mpz_t()),
+          Int::view(b, scratch().b.get_mpz_t()));
+  out.shrink();
+  return out;
+}
+
+Int divexact(const Int& a, const Int& b) {
+  // A machine quotient overflows only for the most negative a over -1.
+  if (!a.big_ && !b.big_ && !(b.small_ == -1 && a.small_ < -(__int128(1) << 126)))
+    return Int::of(a.small_ / b.small_);
+  Int out;
+  mpz_divexact(out.make_big(), Int::view(a, scratch().a.get_mpz_t()),
+               Int::view(b, scratch().b.get_mpz_t()));
+  out.shrink();
+  return out;
+}
+
+int compare(const Int& a, const Int& b) {
+  if (!a.big_ && !b.big_) return (a.small_ > b.small_) - (a.small_ < b.small_);
+  const int c =
+      mpz_cmp(Int::view(a, scratch().a.get_mpz_t()), Int::view(b, scratch().b.get_mpz_t()));
+  return (c > 0) - (c < 0);
+}
+
+int compare_abs(const Int& a, const Int& b) {
+  if (!a.big_ && !b.big_) {
+    const u128 x = magnitude(a.small_), y = magnitude(b.small_);
+    return (x > y) - (x < y);
+  }
+  const int c =
+      mpz_cmpabs(Int::view(a, scratch().a.get_mpz_t()), Int::view(b, scratch().b.get_mpz_t()));
+  return (c > 0) - (c < 0);
+}
+
+void mul(Int& r, const Int& a, const Int& b) {
+  __int128 p;
+  if (!a.big_ && !b.big_ && !__builtin_mul_overflow(a.small_, b.small_, &p)) return r.set(p);
+  mpz_srcptr x = Int::view(a, scratch().a.get_mpz_t()), y = Int::view(b, scratch().b.get_mpz_t());
+  mpz_mul(r.make_big(), x, y);  // the views first: r may be a or b
+}
+
+void mul_2exp(Int& r, const Int& a, unsigned long k) {
+  if (!a.big_) {
+    const u128 m = magnitude(a.small_);
+    if (m == 0) return r.set(0);
+    if (k < 126 && (m >> (126 - k)) == 0) {
+      const __int128 s = __int128(m << k);
+      return r.set(a.small_ < 0 ? -s : s);
+    }
+  }
+  mpz_srcptr x = Int::view(a, scratch().a.get_mpz_t());
+  mpz_mul_2exp(r.make_big(), x, k);
+}
+
+// In place: r keeps its GMP form once it has one (sums of products only grow).
+void addmul(Int& r, const Int& a, const Int& b) {
+  __int128 p, s;
+  if (!r.big_ && !a.big_ && !b.big_ && !__builtin_mul_overflow(a.small_, b.small_, &p) &&
+      !__builtin_add_overflow(r.small_, p, &s)) {
+    r.small_ = s;
+    return;
+  }
+  mpz_srcptr x = Int::view(a, scratch().a.get_mpz_t()), y = Int::view(b, scratch().b.get_mpz_t());
+  mpz_addmul(r.make_big(), x, y);
+}
+
+void submul(Int& r, const Int& a, const Int& b) {
+  __int128 p, s;
+  if (!r.big_ && !a.big_ && !b.big_ && !__builtin_mul_overflow(a.small_, b.small_, &p) &&
+      !__builtin_sub_overflow(r.small_, p, &s)) {
+    r.small_ = s;
+    return;
+  }
+  mpz_srcptr x = Int::view(a, scratch().a.get_mpz_t()), y = Int::view(b, scratch().b.get_mpz_t());
+  mpz_submul(r.make_big(), x, y);
+}
+
+}  // namespace fdh::exact::algebra
