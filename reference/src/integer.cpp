@@ -16,13 +16,11 @@ u128 magnitude(__int128 v) {
 
 void set_mpz(mpz_ptr z, __int128 v) {
   const u128 m = magnitude(v);
-  if (m >> 64 == 0) {
-    mpz_set_ui(z, std::uint64_t(m));
-  } else {
-    const std::uint64_t limbs[2] = {std::uint64_t(m), std::uint64_t(m >> 64)};
-    mpz_import(z, 2, -1, sizeof limbs[0], 0, 0, limbs);  // least significant first
-  }
-  if (v < 0) mpz_neg(z, z);
+  const mp_limb_t lo = mp_limb_t(m), hi = mp_limb_t(m >> 64);
+  mp_limb_t* d = mpz_limbs_write(z, 2);  // z's storage, grown to two limbs if it has fewer
+  d[0] = lo, d[1] = hi;
+  const mp_size_t n = hi != 0 ? 2 : (lo != 0 ? 1 : 0);
+  mpz_limbs_finish(z, v < 0 ? -n : n);
 }
 
 // Scratch integers for machine operands of GMP operations: they keep their storage, so a view
