@@ -1,7 +1,7 @@
 // A static floating-point filter for the sign of orient3d(a,b,c,d) = det[a-d; b-d; c-d]: its
 // error bound, and the sign it certifies (+1 or -1) only when certain, 0 ("uncertain")
 // otherwise: a true zero is never certified, so callers fall back to exact arithmetic for
-// touching cases. The static point-triangle filter (point_triangle_robust.cpp) evaluates its
+// touching cases. The static point-triangle filter (point_triangle/robust.hpp) evaluates its
 // five from one apex with this bound; the CCD filter (ccd_robust.cpp) uses the bound for its
 // determinants at t = 0 and 1.
 #pragma once
