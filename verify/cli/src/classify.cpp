@@ -38,11 +38,14 @@ const char* const kClassifyFooter =
    "gate": K, "files": [{"file": F, <the same counts>}]}
 with null counts where a method applies to nothing. With --time-ratio BASE it
 also holds
-  "time_ratio": {"to": BASE, "limit": R, "queries": N, "methods": {"robust":
+  "time_ratio": {"to": BASE, "limit": R, "queries": N,
+                 "mean_ns": {"robust": .., "exact": ..}, "methods": {"robust":
                  {"vertex-face-ccd": {"queries": .., "max": .., "median": ..,
                   "worst": WHERE, "over_limit": ..}, ...}, ...}}
 each method's time over BASE's, query by query (each query timed alone), per
-query decision (point-triangle, vertex-face-ccd, edge-edge-ccd).
+query decision (point-triangle, vertex-face-ccd, edge-edge-ccd), and each
+method's mean of those times (thread CPU time: unlike the table's ns/query, not
+inflated by waiting for a core on a busy machine).
 
 Bad input (a malformed line, a wrong count of numbers, a non-number, NaN or
 Inf, a rational that is not a double, a missing file) is reported as
@@ -125,6 +128,17 @@ nlohmann::ordered_json print_time_ratios(const ClassifyOptions& o, const std::ve
   const auto times = time_each_query(qs, methods, o.rounds);
   nlohmann::ordered_json j{{"to", o.time_ratio}, {"limit", o.ratio_limit}, {"queries", qs.size()}};
   j["methods"] = nlohmann::ordered_json::object();
+  // Each method's mean over the queries it applies to, each timed alone.
+  j["mean_ns"] = nlohmann::ordered_json::object();
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    double sum = 0;
+    std::size_t n = 0;
+    for (const double t : times[m]) sum += t, n += t > 0;
+    j["mean_ns"][methods[m].name] = n ? sum / double(n) : 0;
+    if (!o.json)
+      out << fmt::format("{}: {:.1f} ns per query, the mean of each query timed alone\n",
+                         methods[m].name, n ? sum / double(n) : 0);
+  }
   for (const TimeRatio& r : time_ratios(qs, times, methods, base, o.ratio_limit)) {
     if (r.method == o.time_ratio) continue;
     const std::string worst = where_and_id(qs[r.worst]);
