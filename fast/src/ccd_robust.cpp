@@ -83,20 +83,21 @@ IVec at(const Vec3& x0, const Vec3& x1, const Interval& t) {
   return {lerp(x0.x, x1.x, t), lerp(x0.y, x1.y, t), lerp(x0.z, x1.z, t)};
 }
 
-// f and the conditions g_i over a time interval. At a coplanar time, contact iff every
-// g_i >= 0 (the same polynomials as reference/'s exact_ccd.cpp); g_i > 0 for all i implies
-// contact, since the g_i all vanish when the triangle has zero area or the edges are parallel.
+// The conditions g_i over a time interval. At a coplanar time, contact iff every g_i >= 0 (the
+// same polynomials as reference/'s exact_ccd.cpp); g_i > 0 for all i implies contact, since the
+// g_i all vanish when the triangle has zero area or the edges are parallel. (f itself is
+// bounded on pieces by its Bernstein coefficients, not here.)
 struct Conditions {
-  Interval f, g[4];
+  Interval g[4];
   int n = 0;
 };
 
 Conditions vertex_face(const Query& q, const Interval& t) {
   const IVec p = at(q.x[0], q.x[4], t), a = at(q.x[1], q.x[5], t), b = at(q.x[2], q.x[6], t),
              c = at(q.x[3], q.x[7], t);
-  const IVec ap = a - p, bp = b - p, cp = c - p, n = cross(b - a, c - a), bc = cross(bp, cp);
+  const IVec ap = a - p, bp = b - p, cp = c - p, n = cross(b - a, c - a);
   // |n|^2 times p's barycentric coordinates when coplanar.
-  return {dot(ap, bc), {dot(n, bc), dot(n, cross(cp, ap)), dot(n, cross(ap, bp))}, 3};
+  return {{dot(n, cross(bp, cp)), dot(n, cross(cp, ap)), dot(n, cross(ap, bp))}, 3};
 }
 
 Conditions edge_edge(const Query& q, const Interval& t) {
@@ -105,7 +106,7 @@ Conditions edge_edge(const Query& q, const Interval& t) {
   const IVec ea = a1 - a0, eb = b1 - b0, w = b0 - a0, m = cross(ea, eb);
   const Interval mm = dot(m, m), s = dot(cross(w, eb), m), u = dot(cross(w, ea), m);
   // a0 + (s/mm) ea = b0 + (u/mm) eb when coplanar: both parameters in [0, 1].
-  return {dot(ea, cross(w, b1 - a0)), {s, mm - s, u, mm - u}, 4};
+  return {{s, mm - s, u, mm - u}, 4};
 }
 
 // f on a piece of [0, 1], as its Bernstein coefficients there, found by de Casteljau
