@@ -131,73 +131,59 @@ double Int::frexp(long* e) const {
   return small_ < 0 ? -t : t;
 }
 
-// The binary operations: the machine result if it did not overflow, else GMP's.
-Int operator+(const Int& a, const Int& b) {
+// The machine result if `machine` reports no overflow, else GMP's.
+template <class Machine, class Gmp>
+Int Int::binary(const Int& a, const Int& b, Machine machine, Gmp gmp) {
   __int128 r;
-  if (!a.big_ && !b.big_ && !__builtin_add_overflow(a.small_, b.small_, &r)) return Int::of(r);
+  if (!a.big_ && !b.big_ && !machine(a.small_, b.small_, &r)) return of(r);
   Int out;
-  mpz_add(out.make_big(), Int::view(a, scratch().a.get_mpz_t()),
-          Int::view(b, scratch().b.get_mpz_t()));
+  mpz_srcptr x = view(a, scratch().a.get_mpz_t()), y = view(b, scratch().b.get_mpz_t());
+  gmp(out.make_big(), x, y);
   out.shrink();
   return out;
+}
+
+Int operator+(const Int& a, const Int& b) {
+  return Int::binary(
+      a, b, [](__int128 x, __int128 y, __int128* r) { return __builtin_add_overflow(x, y, r); },
+      mpz_add);
 }
 
 Int operator-(const Int& a, const Int& b) {
-  __int128 r;
-  if (!a.big_ && !b.big_ && !__builtin_sub_overflow(a.small_, b.small_, &r)) return Int::of(r);
-  Int out;
-  mpz_sub(out.make_big(), Int::view(a, scratch().a.get_mpz_t()),
-          Int::view(b, scratch().b.get_mpz_t()));
-  out.shrink();
-  return out;
+  return Int::binary(
+      a, b, [](__int128 x, __int128 y, __int128* r) { return __builtin_sub_overflow(x, y, r); },
+      mpz_sub);
 }
 
 Int operator*(const Int& a, const Int& b) {
-  __int128 r;
-  if (!a.big_ && !b.big_ && !__builtin_mul_overflow(a.small_, b.small_, &r)) return Int::of(r);
-  Int out;
-  mpz_mul(out.make_big(), Int::view(a, scratch().a.get_mpz_t()),
-          Int::view(b, scratch().b.get_mpz_t()));
-  out.shrink();
-  return out;
+  return Int::binary(
+      a, b, [](__int128 x, __int128 y, __int128* r) { return __builtin_mul_overflow(x, y, r); },
+      mpz_mul);
 }
 
 Int operator<<(const Int& a, unsigned long k) {
-  if (!a.big_) {
-    const u128 m = magnitude(a.small_);
-    if (m == 0) return Int();
-    if (k < 126 && (m >> (126 - k)) == 0) {  // the result stays below 2^126
-      const __int128 s = __int128(m << k);
-      return Int::of(a.small_ < 0 ? -s : s);
-    }
-  }
   Int out;
-  mpz_mul_2exp(out.make_big(), Int::view(a, scratch().a.get_mpz_t()), k);
+  mul_2exp(out, a, k);
   return out;
 }
 
 Int gcd(const Int& a, const Int& b) {
-  if (!a.big_ && !b.big_) {
-    u128 x = magnitude(a.small_), y = magnitude(b.small_);  // Euclid: no overflow
-    while (y != 0) x = std::exchange(y, x % y);
-    if (x >> 126 == 0) return Int::of(__int128(x));
-  }
-  Int out;
-  mpz_gcd(out.make_big(), Int::view(a, scratch().a.get_mpz_t()),
-          Int::view(b, scratch().b.get_mpz_t()));
-  out.shrink();
-  return out;
+  const auto machine = [](__int128 x, __int128 y, __int128* r) {
+    u128 u = magnitude(x), v = magnitude(y);  // Euclid on magnitudes: no overflow
+    while (v != 0) u = std::exchange(v, u % v);
+    *r = __int128(u);
+    return u >> 126 != 0;  // 2^127 (both the most negative value, or one and 0) does not fit
+  };
+  return Int::binary(a, b, machine, mpz_gcd);
 }
 
 Int divexact(const Int& a, const Int& b) {
-  // A machine quotient overflows only for the most negative a over -1.
-  if (!a.big_ && !b.big_ && !(b.small_ == -1 && a.small_ < -(__int128(1) << 126)))
-    return Int::of(a.small_ / b.small_);
-  Int out;
-  mpz_divexact(out.make_big(), Int::view(a, scratch().a.get_mpz_t()),
-               Int::view(b, scratch().b.get_mpz_t()));
-  out.shrink();
-  return out;
+  const auto machine = [](__int128 x, __int128 y, __int128* r) {
+    if (y == -1 && x < -(__int128(1) << 126)) return true;  // the one overflowing quotient
+    *r = x / y;
+    return false;
+  };
+  return Int::binary(a, b, machine, mpz_divexact);
 }
 
 int compare(const Int& a, const Int& b) {
@@ -238,26 +224,24 @@ void mul_2exp(Int& r, const Int& a, unsigned long k) {
 }
 
 // In place: r keeps its GMP form once it has one (sums of products only grow).
-void addmul(Int& r, const Int& a, const Int& b) {
+void Int::accumulate(Int& r, const Int& a, const Int& b, bool subtract) {
   __int128 p, s;
   if (!r.big_ && !a.big_ && !b.big_ && !__builtin_mul_overflow(a.small_, b.small_, &p) &&
-      !__builtin_add_overflow(r.small_, p, &s)) {
+      !(subtract ? __builtin_sub_overflow(r.small_, p, &s)
+                 : __builtin_add_overflow(r.small_, p, &s))) {
     r.small_ = s;
     return;
   }
-  mpz_srcptr x = Int::view(a, scratch().a.get_mpz_t()), y = Int::view(b, scratch().b.get_mpz_t());
-  mpz_addmul(r.make_big(), x, y);
+  mpz_srcptr x = view(a, scratch().a.get_mpz_t()), y = view(b, scratch().b.get_mpz_t());
+  (subtract ? mpz_submul : mpz_addmul)(r.make_big(), x, y);
+}
+
+void addmul(Int& r, const Int& a, const Int& b) {
+  Int::accumulate(r, a, b, false);
 }
 
 void submul(Int& r, const Int& a, const Int& b) {
-  __int128 p, s;
-  if (!r.big_ && !a.big_ && !b.big_ && !__builtin_mul_overflow(a.small_, b.small_, &p) &&
-      !__builtin_sub_overflow(r.small_, p, &s)) {
-    r.small_ = s;
-    return;
-  }
-  mpz_srcptr x = Int::view(a, scratch().a.get_mpz_t()), y = Int::view(b, scratch().b.get_mpz_t());
-  mpz_submul(r.make_big(), x, y);
+  Int::accumulate(r, a, b, true);
 }
 
 }  // namespace fdh::exact::algebra

@@ -54,6 +54,10 @@ class Int {
     __int128 v;
   };
   explicit Int(Small s) : small_(s.v) {}
+  // a op b by `machine` (false: no overflow) or else by `gmp` (integer.cpp only).
+  template <class Machine, class Gmp>
+  static Int binary(const Int& a, const Int& b, Machine machine, Gmp gmp);
+  static void accumulate(Int& r, const Int& a, const Int& b, bool subtract);  // r += or -= a b
   mpz_ptr make_big();    // switches to the GMP form (same value) and returns it
   void set(__int128 v);  // keeps the GMP form (and its storage) if it has one
   void shrink();         // back to the machine form if the value fits 126 bits
