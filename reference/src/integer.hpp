@@ -2,10 +2,11 @@
 // __int128 while the value fits, a GMP integer from the first operation whose result does not.
 // Private to reference/.
 //
-// Why: the queries' coordinates, scaled by one power of two into integers, mostly have a few to
-// 60 bits, and the polynomials built from them (degree 4 in the coordinates) stay far below
-// 2^127. GMP allocates every integer on the heap, which was most of the exact test's time; a
-// machine integer needs no allocation. Every machine operation checks for overflow
+// Why: scaled by one power of two into integers, the coordinates of handcrafted and generated
+// queries have a few to some 30 bits, and the polynomials built from them (degree 4 in the
+// coordinates) mostly stay below 2^127 (the benchmark's, up to about 110 bits, mostly do not).
+// GMP allocates every integer on the heap, which was most of the exact test's time; a machine
+// integer needs no allocation. Every machine operation checks for overflow
 // (__builtin_*_overflow) and is done by GMP instead when it would overflow, so no value is ever
 // wrong, only some slower. A new result that fits 126 bits takes the machine form again.
 // tests/reference/test_integer.cpp compares the operations with GMP's around the boundaries.
