@@ -24,10 +24,13 @@ PVec operator-(const PVec& a, const PVec& b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
 PVec cross(const PVec& a, const PVec& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+  using algebra::sum_of_products;
+  return {sum_of_products({{a.y, b.z}, {a.z, b.y, true}}),
+          sum_of_products({{a.z, b.x}, {a.x, b.z, true}}),
+          sum_of_products({{a.x, b.y}, {a.y, b.x, true}})};
 }
 Poly dot(const PVec& a, const PVec& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
+  return algebra::sum_of_products({{a.x, b.x}, {a.y, b.y}, {a.z, b.z}});
 }
 
 bool zero_at(const PVec& v, Root& r) {
@@ -56,8 +59,8 @@ std::array<PVec, 4> integer_paths(const Query& q) {
       e = algebra::Dyadic::of(j == 0 ? q.x[i].x : j == 1 ? q.x[i].y : q.x[i].z);
       k = std::max(k, e.k);
     }
-  mpz_class z[24];
-  for (int i = 0; i < 24; ++i) mpz_mul_2exp(z[i].get_mpz_t(), d[i].a.get_mpz_t(), k - d[i].k);
+  algebra::Int z[24];
+  for (int i = 0; i < 24; ++i) z[i] = d[i].a << (k - d[i].k);
   std::array<PVec, 4> v;
   for (int i = 0; i < 4; ++i)
     v[i] = {Poly::linear(z[3 * i], z[3 * i + 12]), Poly::linear(z[3 * i + 1], z[3 * i + 13]),
@@ -110,7 +113,10 @@ class Search {
   // The roots in [t0, t1] common to `zeros` (not all zero), increasing.
   std::vector<Root> common_roots(std::initializer_list<const Poly*> zeros) {
     Poly g;
-    for (const Poly* z : zeros) g = algebra::gcd(g, *z);
+    for (const Poly* z : zeros) {
+      g = algebra::gcd(g, *z);
+      if (g.degree() == 0) return {};  // a nonzero constant divides everything after it
+    }
     if (g.degree() < 1) return {};
     keep_.push_back(algebra::squarefree(g));
     return algebra::roots_in(keep_.back(), t0_, t1_);
@@ -150,13 +156,13 @@ bool Search::point_edge(const PVec& p, const PVec& a, const PVec& b) {
 }
 
 void Search::vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec& c) {
-  const Poly f = dot(a - p, cross(b - p, c - p));  // 6 x signed volume: 0 iff coplanar
+  const PVec ap = a - p, bp = b - p, cp = c - p, bc = cross(bp, cp);
+  const Poly f = dot(ap, bc);  // 6 x signed volume: 0 iff coplanar
   const std::vector<Root> times = f.is_zero() ? std::vector<Root>{} : common_roots({&f});
   if (!f.is_zero() && times.empty()) return;  // never coplanar: the common case, decided here
   const PVec n = cross(b - a, c - a);
   // At a coplanar time with n != 0, these are |n|^2 times p's barycentric coordinates.
-  const Poly ga = dot(n, cross(b - p, c - p)), gb = dot(n, cross(c - p, a - p)),
-             gc = dot(n, cross(a - p, b - p));
+  const Poly ga = dot(n, bc), gb = dot(n, cross(cp, ap)), gc = dot(n, cross(ap, bp));
   const auto inside = [&](Root& r) {  // p in the closed triangle, given coplanarity at r
     if (!zero_at(n, r)) return sign_at(ga, r) >= 0 && sign_at(gb, r) >= 0 && sign_at(gc, r) >= 0;
     // A zero-area triangle is the union of its edges.

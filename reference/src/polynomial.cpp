@@ -9,40 +9,37 @@
 namespace fdh::exact::algebra {
 namespace {
 
-void trim(std::vector<mpz_class>& c) {
-  while (!c.empty() && sgn(c.back()) == 0) c.pop_back();
+void trim(std::vector<Int>& c) {
+  while (!c.empty() && c.back().is_zero()) c.pop_back();
 }
 
-mpz_class shifted(const mpz_class& x, unsigned long bits) {
-  mpz_class y;
-  mpz_mul_2exp(y.get_mpz_t(), x.get_mpz_t(), bits);
-  return y;
+Int shifted(const Int& x, unsigned long bits) {
+  return x << bits;
 }
 
 // p divided by the gcd of its coefficients, with a positive leading coefficient.
 Poly primitive(Poly p) {
   if (p.is_zero()) return p;
-  mpz_class g = 0;
-  for (const mpz_class& x : p.c) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), x.get_mpz_t());
-  if (sgn(p.c.back()) < 0) g = -g;
-  for (mpz_class& x : p.c) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
+  Int g = 0;
+  for (const Int& x : p.c) g = gcd(g, x);
+  if (p.c.back().sign() < 0) g = -g;
+  for (Int& x : p.c) x = divexact(x, g);
   return p;
 }
 
 // A positive multiple of the remainder of a by b: each step scales by |lc(b)| > 0, so signs
 // at every point are those of the true remainder (what Sturm sequences need).
 Poly pseudo_remainder(const Poly& a, const Poly& b) {
-  std::vector<mpz_class> r = a.c;
-  const mpz_class lb = abs(b.c.back());
-  const int sb = sgn(b.c.back());
+  std::vector<Int> r = a.c;
+  const Int lb = abs(b.c.back());
+  const int sb = b.c.back().sign();
   const std::size_t n = b.c.size();
-  mpz_class lr;
+  Int lr;
   while (r.size() >= n) {
-    lr = r.back() * sb;
+    lr = sb < 0 ? -r.back() : r.back();
     const std::size_t e = r.size() - n;
-    for (mpz_class& x : r) mpz_mul(x.get_mpz_t(), x.get_mpz_t(), lb.get_mpz_t());
-    for (std::size_t j = 0; j < n; ++j)
-      mpz_submul(r[e + j].get_mpz_t(), lr.get_mpz_t(), b.c[j].get_mpz_t());
+    for (Int& x : r) mul(x, x, lb);
+    for (std::size_t j = 0; j < n; ++j) submul(r[e + j], lr, b.c[j]);
     r.pop_back();  // now zero
     trim(r);
   }
@@ -55,7 +52,7 @@ std::vector<Poly> sturm_sequence(const Poly& s) {
   while (!seq.back().is_zero() && seq.back().degree() > 0) {
     Poly r = pseudo_remainder(seq[seq.size() - 2], seq.back());
     if (r.is_zero()) break;
-    for (mpz_class& x : r.c) x = -x;
+    for (Int& x : r.c) x = -x;
     seq.push_back(std::move(r));
   }
   return seq;
@@ -79,18 +76,18 @@ struct Isolator {
   std::vector<Poly> seq;
   std::vector<Root> out;
 
-  int count(const mpz_class& a, const mpz_class& b, unsigned long k) const {
+  int count(const Int& a, const Int& b, unsigned long k) const {
     return variations(seq, {a, k}) - variations(seq, {b, k});
   }
 
   // Appends the roots in (a, b] / 2^k, in order.
-  void isolate(const mpz_class& a0, const mpz_class& b0, unsigned long k) {
+  void isolate(const Int& a0, const Int& b0, unsigned long k) {
     const int n = count(a0, b0, k);
     if (n == 0) return;
     if (n > 1) {
-      const mpz_class m = a0 + b0;
-      isolate(2 * a0, m, k + 1);
-      isolate(m, 2 * b0, k + 1);
+      const Int m = a0 + b0;
+      isolate(a0 << 1, m, k + 1);
+      isolate(m, b0 << 1, k + 1);
       return;
     }
     if (sign_at(s, Dyadic{b0, k}) == 0) {
@@ -98,10 +95,10 @@ struct Isolator {
       return;
     }
     // One root in (a, b). Move a off a root of s so that s changes sign across (a, b).
-    mpz_class a = a0, b = b0;
+    Int a = a0, b = b0;
     while (sign_at(s, Dyadic{a, k}) == 0) {
-      const mpz_class m = a + b;
-      a *= 2, b *= 2, ++k;
+      const Int m = a + b;
+      a = a << 1, b = b << 1, ++k;
       if (sign_at(s, Dyadic{m, k}) == 0) {
         out.push_back(Root{&s, m, m, k});
         return;
@@ -114,8 +111,8 @@ struct Isolator {
 
 // Halves the interval; false if the midpoint is the root.
 bool bisect_once(Root& r) {
-  const mpz_class m = r.a + r.b;
-  r.a *= 2, r.b *= 2, ++r.k;
+  const Int m = r.a + r.b;
+  r.a = r.a << 1, r.b = r.b << 1, ++r.k;
   const int sm = sign_at(*r.s, Dyadic{m, r.k});
   if (sm == 0) {
     r.a = r.b = m;
@@ -126,9 +123,9 @@ bool bisect_once(Root& r) {
 }
 
 // Dyadic value as a double, rounded to nearest (exact for the endpoints we make).
-double to_double(const mpz_class& a, unsigned long k) {
+double to_double(const Int& a, unsigned long k) {
   long e = 0;
-  const double m = mpz_get_d_2exp(&e, a.get_mpz_t());
+  const double m = a.frexp(&e);
   return std::ldexp(m, int(e - long(k)));
 }
 
@@ -144,7 +141,7 @@ void jump(Root& r) {
   std::vector<long> e(d + 1);
   long emax = LONG_MIN;
   for (int i = 0; i <= d; ++i) {
-    m[i] = mpz_get_d_2exp(&e[i], s.c[i].get_mpz_t());
+    m[i] = s.c[i].frexp(&e[i]);
     if (m[i] != 0 && e[i] > emax) emax = e[i];
   }
   for (int i = 0; i <= d; ++i) c[i] = m[i] != 0 ? std::ldexp(m[i], int(e[i] - emax)) : 0;
@@ -164,8 +161,8 @@ void jump(Root& r) {
   }
   const Dyadic dl = Dyadic::of(lo), dh = Dyadic::of(hi);
   const unsigned long k = std::max({r.k, dl.k, dh.k});
-  const mpz_class a = shifted(dl.a, k - dl.k), b = shifted(dh.a, k - dh.k);
-  const mpz_class ra = shifted(r.a, k - r.k), rb = shifted(r.b, k - r.k);
+  const Int a = shifted(dl.a, k - dl.k), b = shifted(dh.a, k - dh.k);
+  const Int ra = shifted(r.a, k - r.k), rb = shifted(r.b, k - r.k);
   if (!(ra <= a && a < b && b <= rb)) return;
   const int sa = sign_at(s, Dyadic{a, k}), sb = sign_at(s, Dyadic{b, k});
   if (sa == 0 || sb == 0) {
@@ -180,61 +177,78 @@ void jump(Root& r) {
 // integer polynomial, |H(x) - H(0)| <= sum |H_i| for x in [0, 1].
 int sign_over(const Poly& g, const Root& r) {
   const int d = g.degree();
-  thread_local std::vector<mpz_class> h;
+  thread_local std::vector<Int> h;
   h.resize(g.c.size());
-  for (int i = 0; i <= d; ++i)
-    mpz_mul_2exp(h[i].get_mpz_t(), g.c[i].get_mpz_t(), r.k * unsigned(d - i));
+  for (int i = 0; i <= d; ++i) mul_2exp(h[i], g.c[i], r.k * unsigned(d - i));
   for (int j = 0; j < d; ++j)  // Taylor shift by a
-    for (int i = d - 1; i >= j; --i)
-      mpz_addmul(h[i].get_mpz_t(), r.a.get_mpz_t(), h[i + 1].get_mpz_t());
-  thread_local mpz_class w, spread, power, term;
-  mpz_sub(w.get_mpz_t(), r.b.get_mpz_t(), r.a.get_mpz_t());
-  spread = 0, power = 1;
+    for (int i = d - 1; i >= j; --i) addmul(h[i], r.a, h[i + 1]);
+  thread_local Int w, spread, power;
+  w = r.b - r.a, spread = 0, power = 1;
   for (int i = 1; i <= d; ++i) {
-    mpz_mul(power.get_mpz_t(), power.get_mpz_t(), w.get_mpz_t());
-    mpz_mul(term.get_mpz_t(), h[i].get_mpz_t(), power.get_mpz_t());
-    mpz_abs(term.get_mpz_t(), term.get_mpz_t());
-    mpz_add(spread.get_mpz_t(), spread.get_mpz_t(), term.get_mpz_t());
+    mul(power, power, w);  // w^i > 0, so spread += |h_i| w^i:
+    (h[i].sign() < 0 ? submul : addmul)(spread, h[i], power);
   }
-  return mpz_cmpabs(h[0].get_mpz_t(), spread.get_mpz_t()) > 0 ? sgn(h[0]) : 0;
+  return compare_abs(h[0], spread) > 0 ? h[0].sign() : 0;
 }
 
 }  // namespace
 
-Poly::Poly(std::vector<mpz_class> coefficients) : c(std::move(coefficients)) {
+Poly::Poly(std::vector<Int> coefficients) : c(std::move(coefficients)) {
   trim(c);
 }
 
-Poly Poly::linear(const mpz_class& at0, const mpz_class& at1) {
+Poly Poly::linear(const Int& at0, const Int& at1) {
   return Poly({at0, at1 - at0});
 }
 
-Poly operator+(const Poly& a, const Poly& b) {
-  std::vector<mpz_class> c(std::max(a.c.size(), b.c.size()));
-  for (std::size_t i = 0; i < a.c.size(); ++i) c[i] += a.c[i];
-  for (std::size_t i = 0; i < b.c.size(); ++i) c[i] += b.c[i];
+namespace {
+
+// a + b or a - b, each coefficient written once (GMP sizes it then).
+Poly add_or_subtract(const Poly& a, const Poly& b, bool subtract) {
+  static const Int zero;
+  std::vector<Int> c(std::max(a.c.size(), b.c.size()));
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const Int& x = i < a.c.size() ? a.c[i] : zero;
+    const Int& y = i < b.c.size() ? b.c[i] : zero;
+    c[i] = subtract ? x - y : x + y;
+  }
   return Poly(std::move(c));
 }
 
+}  // namespace
+
+Poly operator+(const Poly& a, const Poly& b) {
+  return add_or_subtract(a, b, false);
+}
+
 Poly operator-(const Poly& a, const Poly& b) {
-  std::vector<mpz_class> c(std::max(a.c.size(), b.c.size()));
-  for (std::size_t i = 0; i < a.c.size(); ++i) c[i] += a.c[i];
-  for (std::size_t i = 0; i < b.c.size(); ++i) c[i] -= b.c[i];
-  return Poly(std::move(c));
+  return add_or_subtract(a, b, true);
 }
 
 Poly operator*(const Poly& a, const Poly& b) {
   if (a.is_zero() || b.is_zero()) return Poly();
-  std::vector<mpz_class> c(a.c.size() + b.c.size() - 1);
+  std::vector<Int> c(a.c.size() + b.c.size() - 1);
   for (std::size_t i = 0; i < a.c.size(); ++i)
-    for (std::size_t j = 0; j < b.c.size(); ++j)
-      mpz_addmul(c[i + j].get_mpz_t(), a.c[i].get_mpz_t(), b.c[j].get_mpz_t());
+    for (std::size_t j = 0; j < b.c.size(); ++j) addmul(c[i + j], a.c[i], b.c[j]);
+  return Poly(std::move(c));
+}
+
+Poly sum_of_products(std::initializer_list<Product> terms) {
+  std::size_t n = 0;
+  for (const Product& t : terms)
+    if (!t.a.is_zero() && !t.b.is_zero()) n = std::max(n, t.a.c.size() + t.b.c.size() - 1);
+  std::vector<Int> c(n);
+  for (const Product& t : terms) {
+    const auto accumulate = t.minus ? &submul : &addmul;
+    for (std::size_t i = 0; i < t.a.c.size(); ++i)
+      for (std::size_t j = 0; j < t.b.c.size(); ++j) accumulate(c[i + j], t.a.c[i], t.b.c[j]);
+  }
   return Poly(std::move(c));
 }
 
 Poly derivative(const Poly& p) {
-  std::vector<mpz_class> c;
-  for (std::size_t i = 1; i < p.c.size(); ++i) c.push_back(p.c[i] * (unsigned long)i);
+  std::vector<Int> c;
+  for (std::size_t i = 1; i < p.c.size(); ++i) c.push_back(p.c[i] * Int(long(i)));
   return Poly(std::move(c));
 }
 
@@ -256,10 +270,10 @@ Poly squarefree(const Poly& p) {
   Poly q = primitive(p);
   if (g.degree() <= 0) return q;
   // Exact division: by Gauss's lemma the quotient of primitive integer polynomials is integer.
-  std::vector<mpz_class> r = q.c, out(q.c.size() - g.c.size() + 1);
+  std::vector<Int> r = q.c, out(q.c.size() - g.c.size() + 1);
   for (std::size_t k = out.size(); k-- > 0;) {
-    mpz_divexact(out[k].get_mpz_t(), r[k + g.c.size() - 1].get_mpz_t(), g.c.back().get_mpz_t());
-    for (std::size_t j = 0; j < g.c.size(); ++j) r[k + j] -= out[k] * g.c[j];
+    out[k] = divexact(r[k + g.c.size() - 1], g.c.back());
+    for (std::size_t j = 0; j < g.c.size(); ++j) submul(r[k + j], out[k], g.c[j]);
   }
   return primitive(Poly(std::move(out)));
 }
@@ -267,9 +281,9 @@ Poly squarefree(const Poly& p) {
 Dyadic Dyadic::of(double x) {
   int e = 0;
   const double m = std::frexp(x, &e);  // x = m 2^e, 0.5 <= |m| < 1
-  Dyadic d{mpz_class(double(std::int64_t(std::ldexp(m, 53)))), 0};
+  Dyadic d{Int(long(std::ldexp(m, 53))), 0};
   if (e - 53 >= 0) {
-    mpz_mul_2exp(d.a.get_mpz_t(), d.a.get_mpz_t(), unsigned(e - 53));
+    d.a = d.a << unsigned(e - 53);
   } else {
     d.k = unsigned(53 - e);
   }
@@ -277,7 +291,7 @@ Dyadic Dyadic::of(double x) {
 }
 
 mpq_class Dyadic::value() const {
-  mpq_class q(a);
+  mpq_class q(a.to_mpz());
   mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), k);
   return q;
 }
@@ -285,21 +299,21 @@ mpq_class Dyadic::value() const {
 int sign_at(const Poly& p, const Dyadic& t) {
   const int d = p.degree();
   if (d < 0) return 0;
-  // In place: GMP's temporaries would each cost an allocation.
-  thread_local mpz_class v, term;
+  // In place, on integers that keep their storage: Horner's v = v a + c_i 2^(k (d - i)).
+  thread_local Int v, next;
   v = p.c[d];
   for (int i = d - 1; i >= 0; --i) {
-    mpz_mul(v.get_mpz_t(), v.get_mpz_t(), t.a.get_mpz_t());
-    mpz_mul_2exp(term.get_mpz_t(), p.c[i].get_mpz_t(), t.k * unsigned(d - i));
-    mpz_add(v.get_mpz_t(), v.get_mpz_t(), term.get_mpz_t());
+    mul_2exp(next, p.c[i], t.k * unsigned(d - i));
+    addmul(next, v, t.a);
+    std::swap(v, next);
   }
-  return sgn(v);
+  return v.sign();
 }
 
 std::vector<Root> roots_in(const Poly& s, const Dyadic& t0, const Dyadic& t1) {
   Isolator iso{s, sturm_sequence(s), {}};
   const unsigned long k = std::max(t0.k, t1.k);
-  const mpz_class a = shifted(t0.a, k - t0.k), b = shifted(t1.a, k - t1.k);
+  const Int a = shifted(t0.a, k - t0.k), b = shifted(t1.a, k - t1.k);
   if (sign_at(s, t0) == 0) iso.out.push_back(Root{&s, a, a, k});
   if (a < b) iso.isolate(a, b, k);
   return iso.out;
@@ -325,7 +339,7 @@ int sign_at(const Poly& g, Root& r) {
 
 void refine(Root& r, unsigned long bits) {
   // width (b - a) / 2^k < 2^-bits  <=>  (b - a) 2^bits < 2^k
-  while (!r.exact() && shifted(r.b - r.a, bits) >= shifted(mpz_class(1), r.k))
+  while (!r.exact() && shifted(r.b - r.a, bits) >= shifted(Int(1), r.k))
     if (!bisect_once(r)) break;
 }
 

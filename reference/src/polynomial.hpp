@@ -6,7 +6,8 @@
 // Integers only: the query's doubles are scaled by one power of two into integers, every
 // polynomial then has integer coefficients, every point where we evaluate is dyadic (a / 2^k),
 // and remainders are pseudo-remainders scaled by positive factors. No rational is ever
-// normalized, which is where GMP rationals spend their time.
+// normalized, which is where GMP rationals spend their time. The integers are Int
+// (integer.hpp): machine integers while they fit, GMP's beyond.
 //
 // Why Sturm and bisection rather than CGAL's algebraic kernel: every polynomial here has degree
 // <= 4 and we only ever ask "the roots in [t0, t1], in order" and "the sign of g at this root".
@@ -15,16 +16,19 @@
 
 #include <gmpxx.h>
 
+#include "integer.hpp"
+
+#include <initializer_list>
 #include <vector>
 
 namespace fdh::exact::algebra {
 
 struct Poly {
-  std::vector<mpz_class> c;  // c[i] is the coefficient of t^i; no trailing zeros (0 is empty)
+  std::vector<Int> c;  // c[i] is the coefficient of t^i; no trailing zeros (0 is empty)
 
   Poly() = default;
-  explicit Poly(std::vector<mpz_class> coefficients);
-  static Poly linear(const mpz_class& at0, const mpz_class& at1);  // at0 + t (at1 - at0)
+  explicit Poly(std::vector<Int> coefficients);
+  static Poly linear(const Int& at0, const Int& at1);  // at0 + t (at1 - at0)
 
   int degree() const { return int(c.size()) - 1; }  // -1 for the zero polynomial
   bool is_zero() const { return c.empty(); }
@@ -33,13 +37,22 @@ struct Poly {
 Poly operator+(const Poly& a, const Poly& b);
 Poly operator-(const Poly& a, const Poly& b);
 Poly operator*(const Poly& a, const Poly& b);
+// A term of sum_of_products: a b, or -a b.
+struct Product {
+  const Poly& a;
+  const Poly& b;
+  bool minus = false;
+};
+// The sum of the terms, accumulated in place: no product becomes a polynomial of its own (each
+// temporary costs an allocation per coefficient). The cross and dot products are made of these.
+Poly sum_of_products(std::initializer_list<Product> terms);
 Poly derivative(const Poly& p);
 Poly gcd(const Poly& a, const Poly& b);  // primitive, positive leading coefficient; gcd(0,0) = 0
 Poly squarefree(const Poly& p);          // p / gcd(p, p'), primitive; p != 0
 
 // The dyadic number a / 2^k.
 struct Dyadic {
-  mpz_class a;
+  Int a;
   unsigned long k = 0;
   static Dyadic of(double x);  // exact
   mpq_class value() const;
@@ -50,7 +63,7 @@ int sign_at(const Poly& p, const Dyadic& t);
 // interval (lo, hi) with s(lo) s(hi) < 0. lo = a / 2^k and hi = b / 2^k share k.
 struct Root {
   const Poly* s = nullptr;
-  mpz_class a, b;
+  Int a, b;
   unsigned long k = 0;
   static Root at(const Dyadic& t) { return Root{nullptr, t.a, t.a, t.k}; }
   bool exact() const { return a == b; }

@@ -1,6 +1,9 @@
-// A static floating-point filter for the sign of orient3d(a,b,c,d) = det[a-d; b-d; c-d].
-// It answers +1 or -1 only when the sign is certain, and 0 ("uncertain") otherwise: a true
-// zero is never certified, so callers fall back to exact arithmetic for touching cases.
+// A static floating-point filter for the sign of orient3d(a,b,c,d) = det[a-d; b-d; c-d]: its
+// error bound, and the sign it certifies (+1 or -1) only when certain, 0 ("uncertain")
+// otherwise: a true zero is never certified, so callers fall back to exact arithmetic for
+// touching cases. The static point-triangle filter (point_triangle/robust.hpp) evaluates its
+// five from one apex with this bound; the CCD filter (ccd_robust.cpp) uses the bound for its
+// determinants at t = 0 and 1.
 #pragma once
 
 #include <cmath>
@@ -32,20 +35,16 @@ inline double max3(double a, double b, double c) {
   const double ab = a > b ? a : b;
   return ab > c ? ab : c;
 }
+inline double max4(double a, double b, double c, double d) {
+  const double abc = max3(a, b, c);
+  d = std::fabs(d);
+  return abc > d ? abc : d;
+}
 
-inline int orient3d_filtered(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;
-  const double bdx = b.x - d.x, bdy = b.y - d.y, bdz = b.z - d.z;
-  const double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
-  const double mx = max3(adx, bdx, cdx), my = max3(ady, bdy, cdy), mz = max3(adz, bdz, cdz);
-  if (!(in_filter_range(mx) && in_filter_range(my) && in_filter_range(mz))) return 0;
-  const double det =
-      adz * (bdx * cdy - cdx * bdy) + bdz * (cdx * ady - adx * cdy) + cdz * (adx * bdy - bdx * ady);
-  // A zero max makes every term, hence det, exactly 0: uncertain, as it must be.
-  const double bound = kOrient3dErrBound * (mx * my * mz);
-  if (det > bound) return 1;
-  if (-det > bound) return -1;
-  return 0;
+// The sign of a computed value whose error is below `bound`; 0 (uncertain) when |x| <= bound.
+// A NaN is uncertain too.
+inline int sign_beyond(double x, double bound) {
+  return x > bound ? 1 : (-x > bound ? -1 : 0);
 }
 
 }  // namespace fdh

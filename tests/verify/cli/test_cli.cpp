@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -146,6 +147,27 @@ TEST(Cli, ClassifyMovingShowsNotApplicable) {
             std::string::npos)
       << table.out;
   EXPECT_NE(table.out.find("paper-literal         n/a"), std::string::npos) << table.out;
+}
+
+TEST(Cli, ClassifyTimeRatio) {
+  const CliRun r = fdhcert({"classify", kData + "moving.vf", kData + "static.vf", "--json",
+                            "--methods", "robust", "--time-ratio", "exact", "--rounds", "1"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json t = Json::parse(r.out)["time_ratio"];
+  EXPECT_EQ(t["to"], "exact");
+  EXPECT_EQ(t["queries"], 7);
+  EXPECT_GT(t["mean_ns"]["robust"].get<double>(), 0);
+  EXPECT_GT(t["mean_ns"]["exact"].get<double>(), 0);
+  const std::map<std::string, int> per = {
+      {"point-triangle", 4}, {"vertex-face-ccd", 1}, {"edge-edge-ccd", 2}};
+  for (const auto& [decision, n] : per) {
+    const Json& d = t["methods"]["robust"][decision];
+    EXPECT_EQ(d["queries"], n) << decision;
+    EXPECT_GE(d["max"].get<double>(), d["median"].get<double>()) << decision;
+    EXPECT_GT(d["median"].get<double>(), 0) << decision;
+    EXPECT_NE(d["worst"].get<std::string>().find(".vf:"), std::string::npos) << decision;
+  }
+  EXPECT_EQ(fdhcert({"classify", kData + "static.vf", "--time-ratio", "nonesuch"}).status, 2);
 }
 
 TEST(Cli, PerQueryCsv) {

@@ -1,10 +1,13 @@
 // fdhcert classify: every method side by side on query files.
+#include <fmt/format.h>
+
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "fdh/check/checker.hpp"
 #include "fdh/check/classify.hpp"
+#include "fdh/check/query_times.hpp"
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
@@ -34,7 +37,16 @@ const char* const kClassifyFooter =
    "methods": {"exact": {"tp": .., "tn": .., "fp": .., "fn": .., "na": ..,
                          "ns_per_query": ..}, ...},
    "gate": K, "files": [{"file": F, <the same counts>}]}
-with null counts where a method applies to nothing.
+with null counts where a method applies to nothing. With --time-ratio BASE it
+also holds
+  "time_ratio": {"to": BASE, "limit": R, "queries": N,
+                 "mean_ns": {"robust": .., "exact": ..}, "methods": {"robust":
+                 {"vertex-face-ccd": {"queries": .., "max": .., "median": ..,
+                  "worst": WHERE, "over_limit": ..}, ...}, ...}}
+each method's time over BASE's, query by query (each query timed alone), per
+query decision (point-triangle, vertex-face-ccd, edge-edge-ccd), and each
+method's mean of those times (thread CPU time: unlike the table's ns/query, not
+inflated by waiting for a core on a busy machine).
 
 Bad input (a malformed line, a wrong count of numbers, a non-number, NaN or
 Inf, a rational that is not a double, a missing file) is reported as
@@ -46,6 +58,9 @@ struct ClassifyOptions {
   std::string kind;  // "vf", "ee" or "" (from the path)
   bool json = false, check = false;
   std::string per_query;
+  std::string time_ratio;  // a base method: per-query time ratios to it
+  double ratio_limit = 1.1;
+  int rounds = 7;
 };
 
 // Every file's queries, read before anything is printed; files without queries are skipped.
@@ -104,6 +119,44 @@ std::size_t report_disagreements(const std::vector<Query>& queries,
   return found;
 }
 
+// Each method's time over the base's, query by query: printed, and returned for --json.
+nlohmann::ordered_json print_time_ratios(const ClassifyOptions& o, const std::vector<Query>& qs,
+                                         std::vector<Method> methods, std::ostream& out) {
+  std::size_t base = methods.size();
+  for (std::size_t m = 0; m < methods.size(); ++m)
+    if (methods[m].name == o.time_ratio) base = m;
+  if (base == methods.size()) methods.push_back(methods_named({o.time_ratio}, o.gate).front());
+  const auto times = time_each_query(qs, methods, o.rounds);
+  nlohmann::ordered_json j{{"to", o.time_ratio}, {"limit", o.ratio_limit}, {"queries", qs.size()}};
+  j["methods"] = nlohmann::ordered_json::object();
+  // Each method's mean over the queries it applies to, each timed alone.
+  j["mean_ns"] = nlohmann::ordered_json::object();
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    double sum = 0;
+    std::size_t n = 0;
+    for (const double t : times[m]) sum += t, n += t > 0;
+    j["mean_ns"][methods[m].name] = n ? sum / double(n) : 0;
+    if (!o.json)
+      out << fmt::format("{}: {:.1f} ns per query, the mean of each query timed alone\n",
+                         methods[m].name, n ? sum / double(n) : 0);
+  }
+  for (const TimeRatio& r : time_ratios(qs, times, methods, base, o.ratio_limit)) {
+    if (r.method == o.time_ratio) continue;
+    const std::string worst = where_and_id(qs[r.worst]);
+    j["methods"][r.method][to_string(r.decision)] = {{"queries", r.queries},
+                                                     {"max", r.max},
+                                                     {"median", r.median},
+                                                     {"worst", worst},
+                                                     {"over_limit", r.over}};
+    if (!o.json)
+      out << fmt::format(
+          "{} / {} time per {} query ({}): max {:.3f} at {}, median {:.3f}, {} above {}\n",
+          r.method, o.time_ratio, to_string(r.decision), r.queries, r.max, worst, r.median, r.over,
+          o.ratio_limit);
+  }
+  return j;
+}
+
 int run_classify(const ClassifyOptions& o, const Io& io) {
   if (!o.per_query.empty()) check_output_path(o.per_query);
   const std::vector<Method> methods = methods_named(o.methods, o.gate);
@@ -118,10 +171,13 @@ int run_classify(const ClassifyOptions& o, const Io& io) {
 
   const ReportContext ctx{o.gate};
   if (!o.per_query.empty()) write_file_atomically(o.per_query, per_query_csv(in.all, c));
+  nlohmann::ordered_json j;
   if (o.json)
-    print_json(io.out, classification_json(per_file, c, ctx));
+    j = classification_json(per_file, c, ctx);
   else
     print_table(io.out, per_file, c, ctx);
+  if (!o.time_ratio.empty()) j["time_ratio"] = print_time_ratios(o, in.all, methods, io.out);
+  if (o.json) print_json(io.out, j);
   const std::size_t disagreements = report_disagreements(in.all, methods, c, io.err);
   return o.check && disagreements > 0 ? 1 : 0;
 }
@@ -159,6 +215,22 @@ Command add_classify(CLI::App& app) {
                   "(a rational, or lo..hi)")
       ->type_name("FILE");
   add_plugin_option(*cmd);
+  cmd->add_option("--time-ratio", o->time_ratio,
+                  "also time each query alone (thread CPU time, the least\n"
+                  "disturbed of --rounds batches) and print each method's\n"
+                  "time over BASE's: the maximum over the queries (and\n"
+                  "where), the median and how many exceed --ratio-limit")
+      ->type_name("BASE")
+      ->check(one_of([] {
+        std::vector<std::string> known;
+        for (const Method& m : all_methods()) known.push_back(m.name);
+        return known;
+      }()));
+  add_number_option(*cmd, "--ratio-limit", o->ratio_limit,
+                    "the ratio --time-ratio counts the queries above (default 1.1)", "R", 1e-3,
+                    1e3);
+  add_number_option(*cmd, "--rounds", o->rounds,
+                    "--time-ratio's timed batches per query and method (default 7)", "N", 1, 100);
   cmd->add_flag("--check", o->check,
                 "exit 1 if exact disagrees with a file's truth, or a method\n"
                 "that promises exact answers (robust) with exact, on any query");

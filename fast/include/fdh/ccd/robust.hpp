@@ -13,7 +13,10 @@
 //    ends holds exactly one. Each root is narrowed by halving, then the inside conditions g_i
 //    (>= 0 at a coplanar time iff contact) are bounded over its piece by interval arithmetic
 //    (fdh/interval.hpp): all > 0, contact; one < 0, none there. A piece where f is uncertain is
-//    still excluded when some g_i < 0 over it. Otherwise: uncertain.
+//    still excluded when some g_i < 0 over it. Otherwise: uncertain. The filter gives up
+//    early where it would almost never succeed, since its time adds to the fallback's: after
+//    four interval evaluations of the g_i, or as soon as f's sign is uncertain over a whole
+//    piece (coplanar motion) or at t = 0 or 1 (a contact at the very start or end).
 #pragma once
 
 #include "fdh/filtered.hpp"

@@ -8,7 +8,8 @@
 // identically zero, only its roots in [0, 1] can be contacts; they are isolated by Sturm
 // sequences and the inside test is decided by exact signs at each root. If it is identically
 // zero, the first contact is at the start or where a vertex meets an edge, and the same
-// reasoning recurses to point-edge and point-point problems. GMP rationals throughout.
+// reasoning recurses to point-edge and point-point problems. Exact integers throughout: machine
+// integers while they fit, GMP's beyond (reference/src/integer.hpp).
 #pragma once
 
 #include <string>
