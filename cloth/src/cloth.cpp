@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "fdh/cloth/parallel.hpp"
+
 namespace fdh::cloth {
 
 Cloth::Cloth(const ClothSpec& spec) : grid_(spec.grid), spec_(spec) {
@@ -13,7 +15,6 @@ Cloth::Cloth(const ClothSpec& spec) : grid_(spec.grid), spec_(spec) {
   spacing_ = spec.size / (grid_ - 1);
   x_.resize(n);
   v_.assign(n, Vec3{});
-  f_.assign(n, Vec3{});
   pinned_.assign(n, 0);
   k_sum_.assign(n, 0);
   for (int r = 0; r < grid_; ++r)
@@ -43,6 +44,7 @@ Cloth::Cloth(const ClothSpec& spec) : grid_(spec.grid), spec_(spec) {
       if (c + 1 < grid_) edges_.push_back({i, index(r, c + 1)});
       if (r + 1 < grid_) edges_.push_back({i, index(r + 1, c)});
     }
+  index_springs();
 }
 
 void Cloth::add_spring(int i, int j, double k) {
@@ -52,30 +54,66 @@ void Cloth::add_spring(int i, int j, double k) {
   k_sum_[j] += k;
 }
 
+void Cloth::index_springs() {
+  const int n = this->n();
+  incident_start_.assign(n + 1, 0);
+  for (const Spring& s : springs_) ++incident_start_[s.i + 1], ++incident_start_[s.j + 1];
+  for (int i = 0; i < n; ++i) incident_start_[i + 1] += incident_start_[i];
+  incident_.resize(incident_start_[n]);
+  std::vector<int> next(incident_start_.begin(), incident_start_.end() - 1);
+  for (int s = 0; s < int(springs_.size()); ++s) {
+    incident_[next[springs_[s].i]++] = 2 * s;
+    incident_[next[springs_[s].j]++] = 2 * s + 1;
+  }
+  pull_.resize(springs_.size());
+  length_.resize(springs_.size());
+  for (const Spring& s : springs_) stiffness_.push_back(s.k), rest_.push_back(s.rest);
+}
+
+// Hooke: k·(|d| - rest)·d/|d| with d = x_j - x_i, in three passes per chunk so that the middle
+// one (the square roots and divisions, most of the time) runs on vector registers.
+void Cloth::spring_forces() {
+  for_chunks(int(springs_.size()), 4096, [&](int begin, int end) {
+    for (int s = begin; s < end; ++s) {
+      const Vec3 d = x_[springs_[s].j] - x_[springs_[s].i];
+      pull_[s] = d;
+      length_[s] = dot(d, d);
+    }
+    for (int s = begin; s < end; ++s) {  // branch-free, so that it vectorises
+      const double len = std::sqrt(length_[s]);
+      const double safe = len == 0 ? 1.0 : len;
+      length_[s] = stiffness_[s] * (len - rest_[s]) / safe;
+    }
+    for (int s = begin; s < end; ++s)  // no direction to push along at length 0: no force
+      pull_[s] = pull_[s] == Vec3{} ? Vec3{} : length_[s] * pull_[s];
+  });
+}
+
 void Cloth::integrate(double dt, std::vector<Vec3>& x_next) {
   const int n = this->n();
-  // Gravity and air: F = m·g - c·m·(v - wind).
-  for (int i = 0; i < n; ++i)
-    f_[i] = m_ * spec_.gravity - (spec_.damping * m_) * (v_[i] - spec_.wind);
-  for (const Spring& s : springs_) {  // Hooke: k·(|d| - rest)·d/|d|
-    const Vec3 d = x_[s.j] - x_[s.i];
-    const double len = norm(d);
-    if (len == 0) continue;  // no direction to push along
-    const Vec3 f = (s.k * (len - s.rest) / len) * d;
-    f_[s.i] += f;
-    f_[s.j] -= f;
-  }
+  spring_forces();
   x_next.resize(n);
   const double h = dt / m_;  // Δt·a = Δt·F/m, eqs. (1)–(2)
-  for (int i = 0; i < n; ++i) {
-    if (pinned_[i]) {
-      v_[i] = Vec3{};
-      x_next[i] = x_[i];
-      continue;
+  for_chunks(n, 2048, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i) {
+      if (pinned_[i]) {
+        v_[i] = Vec3{};
+        x_next[i] = x_[i];
+        continue;
+      }
+      // Gravity and air: F = m·g - c·m·(v - wind); then the springs, in spring order.
+      Vec3 f = m_ * spec_.gravity - (spec_.damping * m_) * (v_[i] - spec_.wind);
+      for (int e = incident_start_[i]; e < incident_start_[i + 1]; ++e) {
+        const int s = incident_[e];
+        if (s & 1)
+          f -= pull_[s >> 1];
+        else
+          f += pull_[s >> 1];
+      }
+      v_[i] += h * f;
+      x_next[i] = x_[i] + dt * v_[i];  // eq. (3), with the new velocity
     }
-    v_[i] += h * f_[i];
-    x_next[i] = x_[i] + dt * v_[i];  // eq. (3), with the new velocity
-  }
+  });
 }
 
 double Cloth::energy() const {

@@ -44,39 +44,41 @@ class Bvh {
   Bvh(std::vector<Tri> tris, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1 = {},
       int leaf_size = 1)
       : tris_(std::move(tris)), leaf_size_(std::max(1, leaf_size)) {
-    prims_.resize(tris_.size());
-    for (std::size_t i = 0; i < prims_.size(); ++i) prims_[i] = int(i);
-    // Each primitive's box once; a node's box is the exact merge of its primitives' boxes.
-    std::vector<Kdop<K>> boxes(tris_.size());
-    const double w = widening(x0, x1);
-    for (std::size_t i = 0; i < tris_.size(); ++i)
-      range_box(boxes[prims_[i]], int(i), int(i) + 1, x0, x1, w);
-    if (!tris_.empty()) build(0, int(tris_.size()), boxes, x0, x1);
+    const int n = int(tris_.size());
+    prims_.resize(n);
+    for (int i = 0; i < n; ++i) prims_[i] = i;
+    // Each primitive's box and centre once; a node's box is the exact merge of its primitives'
+    // boxes, its split the median of their centres' projections.
+    std::vector<Kdop<K>> boxes(n);
+    std::vector<Vec3> centres(n);
+    for (int i = 0; i < n; ++i) {
+      range_box(boxes[i], i, i + 1, x0, x1);
+      Vec3 c{};  // the sum of the corners: the centroid up to a factor
+      for (const int v : tris_[i]) c += x1.empty() ? x0[v] : x0[v] + x1[v];
+      centres[i] = c;
+    }
+    nodes_.reserve(2 * std::size_t(n));
+    std::vector<std::pair<double, int>> keys(n);
+    if (n > 0) build(0, n, boxes, centres, keys);
   }
 
   // New positions, same topology: leaves recomputed, internal nodes merged bottom up (children
   // always follow their parent in nodes()).
   void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1 = {}) {
-    const double w = widening(x0, x1);
     for (int i = int(nodes_.size()) - 1; i >= 0; --i) {
       Node& n = nodes_[i];
       if (n.leaf()) {
         const Tri& t = tris_[prims_[n.first]];
         if (n.count == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: the cloth's leaves
-          set_point(n.box, x0[t[0]], w);
-          if (!x1.empty()) add_point(n.box, x1[t[0]], w);
+          point_box(n.box, x0[t[0]], x1.empty() ? x0[t[0]] : x1[t[0]]);
         } else {
-          range_box(n.box, n.first, n.first + n.count, x0, x1, w);
+          range_box(n.box, n.first, n.first + n.count, x0, x1);
         }
         continue;
       }
       // In place: a Kdop returned by value costs more in copies than the merge itself.
-      const Kdop<K>& l = nodes_[n.left].box;
-      const Kdop<K>& r = nodes_[n.right].box;
-      for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
-        n.box.lo[s] = l.lo[s] < r.lo[s] ? l.lo[s] : r.lo[s];
-        n.box.hi[s] = l.hi[s] > r.hi[s] ? l.hi[s] : r.hi[s];
-      }
+      n.box = nodes_[n.left].box;
+      merge_into(n.box, nodes_[n.right].box);
     }
   }
 
@@ -86,74 +88,76 @@ class Bvh {
   const std::vector<Tri>& tris() const { return tris_; }
 
  private:
-  // One widening for every box of a build or refit: kdop.hpp's bound for the largest
-  // coordinate of all the points covers each box's own (a larger mag only widens more), and
-  // costs one pass instead of one per box.
-  static double widening(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
-    double mag = 0;
-    for (const Vec3& p : x0) mag = std::max(mag, max_abs(p));
-    for (const Vec3& p : x1) mag = std::max(mag, max_abs(p));
-    return widening_of(mag);
+  // The box of one point swept from a to b. Each leaf is widened for its own coordinates
+  // (kdop.hpp's bound holds for any mag at least the points' largest |coordinate|): no pass over
+  // all the points first, and tighter boxes.
+  static void point_box(Kdop<K>& b, const Vec3& a, const Vec3& c) {
+    const double ma = max_abs(a), mc = max_abs(c);
+    const double w = widening_of(ma > mc ? ma : mc);
+    set_point(b, a, w);
+    add_point(b, c, w);
   }
 
-  // The box of primitives prims_[first, last): their distinct vertices at x0 (and x1), the
-  // diagonal slabs pushed out by w. Written in place into b (see add_point).
+  // The box of primitives prims_[first, last): their distinct vertices at x0 (and x1).
   void range_box(Kdop<K>& b, int first, int last, const std::vector<Vec3>& x0,
-                 const std::vector<Vec3>& x1, double w) const {
-    bool started = false;
-    const auto add = [&](const Vec3& p) {
-      if (started) {
-        add_point(b, p, w);
-      } else {
-        set_point(b, p, w);
-        started = true;
-      }
-    };
+                 const std::vector<Vec3>& x1) const {
+    KdopBuilder<K> builder;
     for (int i = first; i < last; ++i) {
       const Tri& t = tris_[prims_[i]];
       for (int c = 0; c < 3; ++c) {
         if ((c > 0 && t[c] == t[c - 1]) || (c == 2 && t[2] == t[0])) continue;  // points, edges
-        add(x0[t[c]]);
-        if (!x1.empty()) add(x1[t[c]]);
+        builder.add(x0[t[c]]);
+        if (!x1.empty()) builder.add(x1[t[c]]);
       }
     }
+    b = builder.finish();
   }
 
-  int build(int first, int last, const std::vector<Kdop<K>>& boxes, const std::vector<Vec3>& x0,
-            const std::vector<Vec3>& x1) {
+  // The node over prims_[first, last) and, below it, its subtree; returns its index. keys is
+  // scratch space for the split.
+  int build(int first, int last, const std::vector<Kdop<K>>& boxes,
+            const std::vector<Vec3>& centres, std::vector<std::pair<double, int>>& keys) {
     const int id = int(nodes_.size());
     nodes_.emplace_back();
     Node node;
     node.box = boxes[prims_[first]];
-    for (int i = first + 1; i < last; ++i) node.box = merge(node.box, boxes[prims_[i]]);
+    for (int i = first + 1; i < last; ++i) merge_into(node.box, boxes[prims_[i]]);
     if (last - first <= leaf_size_) {
       node.first = first;
       node.count = last - first;
       nodes_[id] = node;
       return id;
     }
+    const Direction& d = Kdop<K>::direction(longest_slab(node.box));
+    // Each centre's projection once (not once per comparison), then the median.
+    for (int i = first; i < last; ++i) keys[i] = {project(d, centres[prims_[i]]), prims_[i]};
+    const int mid = first + (last - first) / 2;
+    std::nth_element(keys.begin() + first, keys.begin() + mid, keys.begin() + last,
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (int i = first; i < last; ++i) prims_[i] = keys[i].second;
+    node.left = build(first, mid, boxes, centres, keys);
+    node.right = build(mid, last, boxes, centres, keys);
+    nodes_[id] = node;
+    return id;
+  }
+
+  // The slab along which b is longest, in world units (width / |d|).
+  static int longest_slab(const Kdop<K>& b) {
     int axis = 0;
     double longest = -1;
     for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
       const Direction& d = Kdop<K>::direction(s);
-      const double len =
-          (node.box.hi[s] - node.box.lo[s]) / std::sqrt(double(d.x * d.x + d.y * d.y + d.z * d.z));
+      const double len = (b.hi[s] - b.lo[s]) / std::sqrt(double(d.x * d.x + d.y * d.y + d.z * d.z));
       if (len > longest) axis = s, longest = len;
     }
-    const Direction& d = Kdop<K>::direction(axis);
-    const auto centre = [&](int prim) {  // sum of the corners: the centroid up to a factor
-      double c = 0;
-      for (const int v : tris_[prim])
-        c += project(d, x0[v]) + (x1.empty() ? 0.0 : project(d, x1[v]));
-      return c;
-    };
-    const int mid = first + (last - first) / 2;
-    std::nth_element(prims_.begin() + first, prims_.begin() + mid, prims_.begin() + last,
-                     [&](int a, int b) { return centre(a) < centre(b); });
-    node.left = build(first, mid, boxes, x0, x1);
-    node.right = build(mid, last, boxes, x0, x1);
-    nodes_[id] = node;
-    return id;
+    return axis;
+  }
+
+  static void merge_into(Kdop<K>& m, const Kdop<K>& b) {
+    for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
+      m.lo[s] = b.lo[s] < m.lo[s] ? b.lo[s] : m.lo[s];
+      m.hi[s] = b.hi[s] > m.hi[s] ? b.hi[s] : m.hi[s];
+    }
   }
 
   std::vector<Tri> tris_;

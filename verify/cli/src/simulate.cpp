@@ -2,8 +2,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <tbb/global_control.h>
+
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "commands.hpp"
 #include "fdh/io/atomic_file.hpp"
@@ -45,6 +48,7 @@ struct SimulateOptions {
   std::string thickness;  // "": the scene's
   std::string self;       // "on", "off" or "": the scene's
   bool json = false, no_check = false;
+  int threads = 0;  // 0: every core
   SceneRunOptions run;
 };
 
@@ -165,6 +169,10 @@ void check_outputs(const SimulateOptions& o) {
 
 int run_simulate(SimulateOptions& o, const Io& io) {
   check_outputs(o);
+  // The step's loops use at most this many threads; the results are the same for any number.
+  std::optional<tbb::global_control> threads;
+  if (o.threads > 0)
+    threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
   o.run.check = !o.no_check;
   const cloth::Scene scene = read_scene_as_asked(o);
   Outputs outputs(o, scene);
@@ -234,6 +242,11 @@ void add_output_options(CLI::App& cmd, SimulateOptions& o) {
                  "write every narrow-phase query of the run to FILE in the\n"
                  "native vf format, for `fdhcert classify FILE`")
       ->type_name("FILE");
+  cmd.add_option("--threads", o.threads,
+                 "threads for the step (default: every core); the results\n"
+                 "are the same for any number")
+      ->type_name("N")
+      ->check(CLI::Range(1, 1024));
   cmd.add_flag("--json", o.json, "print one JSON object instead of the text");
   cmd.add_flag("--no-check", o.no_check, "skip the accuracy count and the audit");
 }

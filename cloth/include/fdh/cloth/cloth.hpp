@@ -72,7 +72,8 @@ class Cloth {
   const std::vector<std::array<int, 2>>& edges() const { return edges_; }
 
   // Eqs. (1)–(3) for one step: new velocities into v(), and the positions they lead to into
-  // `x_next` (x() is left as the start of the step, for the swept collision test).
+  // `x_next` (x() is left as the start of the step, for the swept collision test). Each
+  // particle sums its springs' forces in the order of springs(), whatever the thread count.
   void integrate(double dt, std::vector<Vec3>& x_next);
 
   // Kinetic + gravitational + spring energy, J.
@@ -86,14 +87,22 @@ class Cloth {
 
  private:
   void add_spring(int i, int j, double k);
+  void spring_forces();  // each spring's pull on its particle i, into pull_
+  void index_springs();  // builds incident_ and incident_start_
 
   int grid_;
   double m_, spacing_;
   ClothSpec spec_;
-  std::vector<Vec3> x_, v_, f_;
+  std::vector<Vec3> x_, v_;
   std::vector<char> pinned_;
   std::vector<Spring> springs_;
-  std::vector<double> k_sum_;  // Σ_j k_ij per particle
+  // The springs at each particle, in spring order: incident_[incident_start_[i] ..
+  // incident_start_[i + 1]), each 2·s for a spring that pulls i (its i end) or 2·s + 1 (its j end).
+  std::vector<int> incident_, incident_start_;
+  std::vector<Vec3> pull_;                // per spring, the force on its i end (on j: minus it)
+  std::vector<double> length_;            // per spring, scratch for the vectorised pass
+  std::vector<double> stiffness_, rest_;  // per spring, as in springs_, for that pass
+  std::vector<double> k_sum_;             // Σ_j k_ij per particle
   std::vector<Tri> tris_;
   std::vector<std::array<int, 2>> edges_;
 };
