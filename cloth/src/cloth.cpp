@@ -65,7 +65,7 @@ void Cloth::index_springs() {
     incident_[next[springs_[s].i]++] = 2 * s;
     incident_[next[springs_[s].j]++] = 2 * s + 1;
   }
-  pull_.resize(springs_.size());
+  pull_.resize(2 * springs_.size());
   length_.resize(springs_.size());
   for (const Spring& s : springs_) stiffness_.push_back(s.k), rest_.push_back(s.rest);
 }
@@ -76,7 +76,7 @@ void Cloth::spring_forces() {
   for_chunks(int(springs_.size()), 4096, [&](int begin, int end) {
     for (int s = begin; s < end; ++s) {
       const Vec3 d = x_[springs_[s].j] - x_[springs_[s].i];
-      pull_[s] = d;
+      pull_[2 * s] = d;
       length_[s] = dot(d, d);
     }
     for (int s = begin; s < end; ++s) {  // branch-free, so that it vectorises
@@ -84,8 +84,11 @@ void Cloth::spring_forces() {
       const double safe = len == 0 ? 1.0 : len;
       length_[s] = stiffness_[s] * (len - rest_[s]) / safe;
     }
-    for (int s = begin; s < end; ++s)  // no direction to push along at length 0: no force
-      pull_[s] = pull_[s] == Vec3{} ? Vec3{} : length_[s] * pull_[s];
+    for (int s = begin; s < end; ++s) {  // no direction to push along at length 0: no force
+      const Vec3 d = pull_[2 * s];
+      pull_[2 * s] = d == Vec3{} ? Vec3{} : length_[s] * d;
+      pull_[2 * s + 1] = -pull_[2 * s];  // exact: adding it is subtracting the pull
+    }
   });
 }
 
@@ -103,13 +106,7 @@ void Cloth::integrate(double dt, std::vector<Vec3>& x_next) {
       }
       // Gravity and air: F = m·g - c·m·(v - wind); then the springs, in spring order.
       Vec3 f = m_ * spec_.gravity - (spec_.damping * m_) * (v_[i] - spec_.wind);
-      for (int e = incident_start_[i]; e < incident_start_[i + 1]; ++e) {
-        const int s = incident_[e];
-        if (s & 1)
-          f -= pull_[s >> 1];
-        else
-          f += pull_[s >> 1];
-      }
+      for (int e = incident_start_[i]; e < incident_start_[i + 1]; ++e) f += pull_[incident_[e]];
       v_[i] += h * f;
       x_next[i] = x_[i] + dt * v_[i];  // eq. (3), with the new velocity
     }

@@ -148,8 +148,11 @@ void print_counts(std::ostream& out, const SimulateOptions& o, const cloth::Scen
         r.audit.inside, r.audit.crossing, r.audit_last_inside, r.audit_last_crossing);
   }
   if (scene.self_collision)
-    out << fmt::format("self-collision {} CCD queries, {} contacts, {} frames stopped whole\n",
-                       r.self_queries, r.self_hits, r.self_stops);
+    out << fmt::format(
+        "self-collision {} CCD queries, {} contacts; frames resolved by particle stops {}, "
+        "by impact zones {} ({} particles), stopped whole {}\n",
+        r.self_queries, r.self_hits, r.self_round_frames - r.self_zone_frames, r.self_zone_frames,
+        r.self_zone_particles, r.self_stops);
   if (r.self_audited)
     out << fmt::format(
         "self (exact)   {} cloth edges through the cloth's own triangles, summed "

@@ -32,6 +32,9 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
     r.collisions += sim.collisions();
     r.self_queries += sim.self().queries;
     r.self_hits += sim.self().hits;
+    r.self_round_frames += sim.self().rounds > 0;
+    r.self_zone_frames += sim.self().zones;
+    r.self_zone_particles += sim.self().zone_particles;
     r.self_stops += sim.self().stopped_all;
     if (opt.check) {
       for (const auto& nq : sim.queries()) {

@@ -87,7 +87,7 @@ class Cloth {
 
  private:
   void add_spring(int i, int j, double k);
-  void spring_forces();  // each spring's pull on its particle i, into pull_
+  void spring_forces();  // each spring's pull on its two ends, into pull_
   void index_springs();  // builds incident_ and incident_start_
 
   int grid_;
@@ -97,9 +97,9 @@ class Cloth {
   std::vector<char> pinned_;
   std::vector<Spring> springs_;
   // The springs at each particle, in spring order: incident_[incident_start_[i] ..
-  // incident_start_[i + 1]), each 2·s for a spring that pulls i (its i end) or 2·s + 1 (its j end).
+  // incident_start_[i + 1]), each the index in pull_ of that spring's force on i.
   std::vector<int> incident_, incident_start_;
-  std::vector<Vec3> pull_;                // per spring, the force on its i end (on j: minus it)
+  std::vector<Vec3> pull_;  // per spring s: at 2s the force on its i end, at 2s + 1 on its j end
   std::vector<double> length_;            // per spring, scratch for the vectorised pass
   std::vector<double> stiffness_, rest_;  // per spring, as in springs_, for that pass
   std::vector<double> k_sum_;             // Σ_j k_ij per particle

@@ -35,7 +35,11 @@ struct SceneRun {
   exact::AuditCounts audit;  // summed over the frames
   long audit_last_inside = 0, audit_last_crossing = 0;
   bool self_audited = false;
-  long self_queries = 0, self_hits = 0, self_stops = 0;  // the self-collision pass
+  // The self-collision pass: its queries and contacts, and how often each stage of its response
+  // ended a frame (fdh/cloth/self_collision.hpp): frames whose contacts took particle stops,
+  // frames that needed impact zones (and their particles, summed), frames stopped whole.
+  long self_queries = 0, self_hits = 0, self_round_frames = 0, self_zone_frames = 0,
+       self_zone_particles = 0, self_stops = 0;
   double energy_start = 0, energy_end = 0;
   std::vector<Vec3> final_x;  // the cloth's particles after the last frame
 
