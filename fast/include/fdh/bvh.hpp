@@ -65,21 +65,31 @@ class Bvh {
   // New positions, same topology: leaves recomputed, internal nodes merged bottom up (children
   // always follow their parent in nodes()).
   void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1 = {}) {
-    for (int i = int(nodes_.size()) - 1; i >= 0; --i) {
-      Node& n = nodes_[i];
-      if (n.leaf()) {
-        const Tri& t = tris_[prims_[n.first]];
-        if (n.count == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: the cloth's leaves
-          point_box(n.box, x0[t[0]], x1.empty() ? x0[t[0]] : x1[t[0]]);
-        } else {
-          range_box(n.box, n.first, n.first + n.count, x0, x1);
-        }
-        continue;
+    for (int i = int(nodes_.size()) - 1; i >= 0; --i) refit_node(i, x0, x1);
+  }
+
+  // One node of a refit: a leaf from the positions, an internal node from its children (which
+  // must be refit already). Nodes are in preorder, so node i's subtree is the index range
+  // [i, subtree_end(i)): refitting such a range from its end is a refit of that subtree, and
+  // disjoint subtrees can be refit at the same time.
+  void refit_node(int i, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+    Node& n = nodes_[i];
+    if (n.leaf()) {
+      const Tri& t = tris_[prims_[n.first]];
+      if (n.count == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: the cloth's leaves
+        point_box(n.box, x0[t[0]], x1.empty() ? x0[t[0]] : x1[t[0]]);
+      } else {
+        range_box(n.box, n.first, n.first + n.count, x0, x1);
       }
-      // In place: a Kdop returned by value costs more in copies than the merge itself.
-      n.box = nodes_[n.left].box;
-      merge_into(n.box, nodes_[n.right].box);
+      return;
     }
+    // In place: a Kdop returned by value costs more in copies than the merge itself.
+    n.box = nodes_[n.left].box;
+    merge_into(n.box, nodes_[n.right].box);
+  }
+  int subtree_end(int i) const {
+    while (!nodes_[i].leaf()) i = nodes_[i].right;
+    return i + 1;
   }
 
   bool empty() const { return nodes_.empty(); }
@@ -200,6 +210,39 @@ void descend_pairs(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, 
           out.push_back({a.prims()[p], b.prims()[q]});
     }
   }
+}
+
+// Node pairs whose descents together make traverse()'s: the root pair split by the same rule,
+// level by level, until there are at least `want` (or nothing left to split). Each can then be
+// descended on its own (descend_pairs), and the outputs joined in this order.
+template <int K, class Overlaps>
+std::vector<std::pair<int, int>> frontier(const Bvh<K>& a, const Bvh<K>& b, std::size_t want,
+                                          const Overlaps& overlaps) {
+  std::vector<std::pair<int, int>> level;
+  if (a.empty() || b.empty()) return level;
+  level.push_back({0, 0});
+  for (bool split = true; split && level.size() < want;) {
+    split = false;
+    std::vector<std::pair<int, int>> next;
+    for (const auto& [i, j] : level) {
+      const auto& na = a.nodes()[i];
+      const auto& nb = b.nodes()[j];
+      if (!overlaps(na.box, nb.box)) continue;
+      if (!na.leaf() && (nb.leaf() || size(na.box) >= size(nb.box))) {
+        next.push_back({na.left, j});
+        next.push_back({na.right, j});
+        split = true;
+      } else if (!nb.leaf()) {
+        next.push_back({i, nb.left});
+        next.push_back({i, nb.right});
+        split = true;
+      } else {
+        next.push_back({i, j});
+      }
+    }
+    level.swap(next);
+  }
+  return level;
 }
 
 template <int K>

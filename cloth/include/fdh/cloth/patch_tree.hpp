@@ -53,6 +53,7 @@ class PatchTree {
   const Cloth& cloth_;
   int grid_, cols_;  // particles per side, cells per side
   std::vector<Node> nodes_;
+  std::vector<int> leaves_;  // the leaves' node indices
   std::vector<int> vertex_, vertex_start_, edge_, edge_start_;
   std::vector<NormalBox> normals_;  // per node: its triangles' swept normals
   std::vector<Vec3> lean_;          // per node: sum of its triangles' normals at the end
