@@ -150,7 +150,8 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
   }
 };
 
-SelfCollision::SelfCollision(const Cloth& cloth, int k, CcdTest exact) : exact_(exact) {
+SelfCollision::SelfCollision(const Cloth& cloth, int k, CcdTest exact, int rounds)
+    : exact_(exact), rounds_(rounds) {
   if (!exact_) throw std::invalid_argument("self-collision needs an exact CCD fallback");
   trees_ = with_k(k, [&](auto kc) -> std::unique_ptr<Trees> {
     return std::make_unique<TreesK<decltype(kc)::value>>(cloth);
@@ -201,7 +202,7 @@ SelfCollision::Result SelfCollision::resolve(const Cloth& cloth, const std::vect
   (void)cloth;
   Result r;
   std::vector<Vec3> v_in;  // the velocities before any response, for the zones' means
-  for (int round = 0; round < kRounds; ++round) {  // stage 1
+  for (int round = 0; round < rounds_; ++round) {  // stage 1
     contacts(x0, x, r);
     if (touching_.empty()) return r;
     if (v_in.empty()) v_in = v;
@@ -213,6 +214,7 @@ SelfCollision::Result SelfCollision::resolve(const Cloth& cloth, const std::vect
   if (touching_.empty()) return r;
   r.zones = true;  // stage 2
   const int n = int(x.size());
+  if (v_in.empty()) v_in = v;
   Zones zones(n);
   std::vector<char> in_zone(n, 0);
   for (int round = 0; round < kZoneRounds && !touching_.empty(); ++round) {

@@ -1,7 +1,8 @@
 // The FDH tree of Han & Jia 2013 §2-3: built top down, refit bottom up, traversed tree
 // against tree.
-// - Split direction: the direction of D along which the node's FDH is longest, in world units
-//   (slab width / |d|, so diagonals are not favoured by their length).
+// - Split direction: the direction of D along which the node is longest, in world units
+//   (slab width / |d|, so diagonals are not favoured by their length), judged on the centres of
+//   at most 32 of its primitives, evenly spaced (a constant cost per node).
 // - Split value: the median of the primitives' centroid projections on it (nth_element, so the
 //   halves are balanced even when projections tie).
 // - Leaves: `leaf_size` primitives, 1 by default as in the paper.
@@ -45,21 +46,17 @@ class Bvh {
       int leaf_size = 1)
       : tris_(std::move(tris)), leaf_size_(std::max(1, leaf_size)) {
     const int n = int(tris_.size());
-    prims_.resize(n);
-    for (int i = 0; i < n; ++i) prims_[i] = i;
-    // Each primitive's box and centre once; a node's box is the exact merge of its primitives'
-    // boxes, its split the median of their centres' projections.
-    std::vector<Kdop<K>> boxes(n);
-    std::vector<Vec3> centres(n);
+    // Each primitive's centre (the sum of its corners: the centroid up to a factor) once, kept
+    // beside its index and its key for the split, so that a node's work reads memory in order.
+    std::vector<Item> items(n);
     for (int i = 0; i < n; ++i) {
-      range_box(boxes[i], i, i + 1, x0, x1);
-      Vec3 c{};  // the sum of the corners: the centroid up to a factor
+      Vec3 c{};
       for (const int v : tris_[i]) c += x1.empty() ? x0[v] : x0[v] + x1[v];
-      centres[i] = c;
+      items[i] = {0.0, i, c};
     }
+    prims_.resize(n);
     nodes_.reserve(2 * std::size_t(n));
-    std::vector<std::pair<double, int>> keys(n);
-    if (n > 0) build(0, n, boxes, centres, keys);
+    if (n > 0) build(0, n, items, x0, x1);
   }
 
   // New positions, same topology: leaves recomputed, internal nodes merged bottom up (children
@@ -123,41 +120,63 @@ class Bvh {
     b = builder.finish();
   }
 
-  // The node over prims_[first, last) and, below it, its subtree; returns its index. keys is
-  // scratch space for the split.
-  int build(int first, int last, const std::vector<Kdop<K>>& boxes,
-            const std::vector<Vec3>& centres, std::vector<std::pair<double, int>>& keys) {
+  struct Item {
+    double key;
+    int prim;
+    Vec3 centre;
+  };
+
+  // The node over items[first, last) and, below it, its subtree; returns its index. A leaf's
+  // box comes from its primitives' corners, an internal node's from its children's boxes
+  // merged: one merge per node.
+  int build(int first, int last, std::vector<Item>& items, const std::vector<Vec3>& x0,
+            const std::vector<Vec3>& x1) {
     const int id = int(nodes_.size());
     nodes_.emplace_back();
-    Node node;
-    node.box = boxes[prims_[first]];
-    for (int i = first + 1; i < last; ++i) merge_into(node.box, boxes[prims_[i]]);
     if (last - first <= leaf_size_) {
+      for (int i = first; i < last; ++i) prims_[i] = items[i].prim;
+      Node& node = nodes_[id];
+      range_box(node.box, first, last, x0, x1);
       node.first = first;
       node.count = last - first;
-      nodes_[id] = node;
       return id;
     }
-    const Direction& d = Kdop<K>::direction(longest_slab(node.box));
+    const Direction& d = Kdop<K>::direction(longest_slab(sample_box(first, last, items)));
     // Each centre's projection once (not once per comparison), then the median.
-    for (int i = first; i < last; ++i) keys[i] = {project(d, centres[prims_[i]]), prims_[i]};
+    for (int i = first; i < last; ++i) items[i].key = project(d, items[i].centre);
     const int mid = first + (last - first) / 2;
-    std::nth_element(keys.begin() + first, keys.begin() + mid, keys.begin() + last,
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (int i = first; i < last; ++i) prims_[i] = keys[i].second;
-    node.left = build(first, mid, boxes, centres, keys);
-    node.right = build(mid, last, boxes, centres, keys);
-    nodes_[id] = node;
+    std::nth_element(items.begin() + first, items.begin() + mid, items.begin() + last,
+                     [](const Item& a, const Item& b) { return a.key < b.key; });
+    const int left = build(first, mid, items, x0, x1);
+    const int right = build(mid, last, items, x0, x1);
+    Node& node = nodes_[id];
+    node.left = left;
+    node.right = right;
+    node.box = nodes_[left].box;
+    merge_into(node.box, nodes_[right].box);
     return id;
+  }
+
+  // The k-DOP of the centres of at most 32 of the range's primitives, evenly spaced: enough to
+  // choose the split direction (the split itself is the exact median), at a constant cost per
+  // node. Only its shape is used, so it needs no widening.
+  static Kdop<K> sample_box(int first, int last, const std::vector<Item>& items) {
+    const int n = last - first, m = std::min(n, 32);
+    const double step = double(n - 1) / (m - 1);  // no integer division per sample
+    Kdop<K> b = Kdop<K>::empty();
+    for (int i = 0; i < m; ++i) add_point(b, items[first + int(i * step)].centre, 0.0);
+    return b;
   }
 
   // The slab along which b is longest, in world units (width / |d|).
   static int longest_slab(const Kdop<K>& b) {
+    // 1/|d| for the axes, the corner diagonals and the edge diagonals of kDirections.
+    static const std::array<double, 3> inv_len = {1.0, 1 / std::sqrt(3.0), 1 / std::sqrt(2.0)};
     int axis = 0;
     double longest = -1;
     for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
-      const Direction& d = Kdop<K>::direction(s);
-      const double len = (b.hi[s] - b.lo[s]) / std::sqrt(double(d.x * d.x + d.y * d.y + d.z * d.z));
+      const int i = Kdop<K>::kDirIndex[s];
+      const double len = (b.hi[s] - b.lo[s]) * inv_len[i < 3 ? 0 : i < 7 ? 1 : 2];
       if (len > longest) axis = s, longest = len;
     }
     return axis;

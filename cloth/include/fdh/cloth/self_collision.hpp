@@ -35,8 +35,9 @@ class SelfCollision {
   static constexpr int kRounds = 4;
   static constexpr int kZoneRounds = 32;
 
-  // k: the FDH's k. exact: robust's fallback (fdh::exact::ccd_hit in this project).
-  SelfCollision(const Cloth& cloth, int k, CcdTest exact);
+  // k: the FDH's k. exact: robust's fallback (fdh::exact::ccd_hit in this project). rounds:
+  // stage 1's (fewer only to test stage 2).
+  SelfCollision(const Cloth& cloth, int k, CcdTest exact, int rounds = kRounds);
   ~SelfCollision();
 
   struct Result {
@@ -67,6 +68,7 @@ class SelfCollision {
 
   std::unique_ptr<Trees> trees_;
   CcdTest exact_;
+  int rounds_;
   std::vector<Candidate> candidates_, touching_;
   std::vector<char> hit_;
 };
