@@ -21,19 +21,32 @@ struct SelfCollision::Trees {
 
 namespace {
 
+// A particle's swept box on the three axes only: the primitive-level filter of cell_pairs,
+// cheaper to merge than the full FDH and still conservative (a box containing the FDH).
+struct Aabb {
+  Vec3 lo, hi;
+};
+inline Aabb join(const Aabb& a, const Aabb& b) {
+  return {{std::min(a.lo.x, b.lo.x), std::min(a.lo.y, b.lo.y), std::min(a.lo.z, b.lo.z)},
+          {std::max(a.hi.x, b.hi.x), std::max(a.hi.y, b.hi.y), std::max(a.hi.z, b.hi.z)}};
+}
+inline bool meet(const Aabb& a, const Aabb& b) {
+  return !(a.hi.x < b.lo.x || b.hi.x < a.lo.x || a.hi.y < b.lo.y || b.hi.y < a.lo.y ||
+           a.hi.z < b.lo.z || b.hi.z < a.lo.z);
+}
+
 // Every pair of primitives, one owned by cell a and one by cell b (a == b: both in one cell),
 // that shares no particle and whose swept boxes (merged from the particles' boxes) overlap.
-template <int K>
-void cell_pairs(const PatchTree& t, const Cloth& cloth, const std::vector<Kdop<K>>& pbox, int a,
-                int b, std::vector<Candidate>& out) {
+void cell_pairs(const PatchTree& t, const Cloth& cloth, const std::vector<Aabb>& pbox, int a, int b,
+                std::vector<Candidate>& out) {
   const auto& tris = cloth.triangles();
   const auto& edges = cloth.edges();
   const auto vf = [&](int from, int to) {
     for (const int f : PatchTree::triangles(to)) {
       const Tri& tri = tris[f];
-      const Kdop<K> fb = merge(merge(pbox[tri[0]], pbox[tri[1]]), pbox[tri[2]]);
+      const Aabb fb = join(join(pbox[tri[0]], pbox[tri[1]]), pbox[tri[2]]);
       for (const int* p = t.vertices_begin(from); p != t.vertices_end(from); ++p) {
-        if (*p == tri[0] || *p == tri[1] || *p == tri[2] || !overlap(pbox[*p], fb)) continue;
+        if (*p == tri[0] || *p == tri[1] || *p == tri[2] || !meet(pbox[*p], fb)) continue;
         out.push_back({QueryKind::VertexFace, {*p, tri[0], tri[1], tri[2]}});
       }
     }
@@ -42,11 +55,11 @@ void cell_pairs(const PatchTree& t, const Cloth& cloth, const std::vector<Kdop<K
   if (a != b) vf(b, a);
   for (const int* e = t.edges_begin(a); e != t.edges_end(a); ++e) {
     const auto& ea = edges[*e];
-    const Kdop<K> eab = merge(pbox[ea[0]], pbox[ea[1]]);
+    const Aabb eab = join(pbox[ea[0]], pbox[ea[1]]);
     for (const int* g = a == b ? e + 1 : t.edges_begin(b); g != t.edges_end(b); ++g) {
       const auto& eb = edges[*g];
       if (ea[0] == eb[0] || ea[0] == eb[1] || ea[1] == eb[0] || ea[1] == eb[1]) continue;
-      if (!overlap(eab, merge(pbox[eb[0]], pbox[eb[1]]))) continue;
+      if (!meet(eab, join(pbox[eb[0]], pbox[eb[1]]))) continue;
       out.push_back({QueryKind::EdgeEdge, {ea[0], ea[1], eb[0], eb[1]}});
     }
   }
@@ -64,6 +77,7 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
   const Cloth& cloth;
   PatchTree tree;
   std::vector<Kdop<K>> particle_box, box;
+  std::vector<Aabb> particle_aabb;  // particle_box's axis slabs
   std::vector<Task> tasks;
   std::vector<std::vector<Candidate>> parts;
 
@@ -79,7 +93,7 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
     gather_chunks(int(tasks.size()), parts, out, [&](int i, std::vector<Candidate>& part) {
       const Task& t = tasks[i];
       if (t.b < 0)
-        cell_pairs(tree, cloth, particle_box, tree.cell_of(tree.nodes()[t.a]),
+        cell_pairs(tree, cloth, particle_aabb, tree.cell_of(tree.nodes()[t.a]),
                    tree.cell_of(tree.nodes()[t.a]), part);
       else
         patch_pairs(t.a, t.b, part);
@@ -103,6 +117,7 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
   void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
     const int n = int(x0.size()), g = cloth.grid();
     particle_box.resize(n);
+    particle_aabb.resize(n);
     box.resize(tree.nodes().size());
     for_chunks(n, 4096, [&](int begin, int end) {
       for (int i = begin; i < end; ++i) {
@@ -110,6 +125,8 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
         const double w = widening_of(ma > mb ? ma : mb);
         set_point(particle_box[i], x0[i], w);
         add_point(particle_box[i], x1[i], w);
+        const Kdop<K>& b = particle_box[i];  // slabs 0-2 are x, y and z for every k
+        particle_aabb[i] = {{b.lo[0], b.lo[1], b.lo[2]}, {b.hi[0], b.hi[1], b.hi[2]}};
       }
     });
     const auto& nodes = tree.nodes();
@@ -138,7 +155,7 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
       if (!overlap(box[i], box[j])) continue;
       const auto &ni = nodes[i], &nj = nodes[j];
       if (ni.leaf() && nj.leaf()) {
-        cell_pairs(tree, cloth, particle_box, tree.cell_of(ni), tree.cell_of(nj), out);
+        cell_pairs(tree, cloth, particle_aabb, tree.cell_of(ni), tree.cell_of(nj), out);
       } else if (!ni.leaf() && (nj.leaf() || cells(i) >= cells(j))) {
         stack.push_back({ni.right, j});
         stack.push_back({ni.left, j});

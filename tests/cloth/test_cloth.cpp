@@ -285,12 +285,16 @@ TEST(Scenes, BadInputNamesTheFileAndLine) {
 }
 
 // With robust, every shipped scene ends with nothing inside and no edge crossing, in every
-// frame, and the narrow phase agrees with the exact test on every query.
+// frame, and the narrow phase agrees with the exact test on every query. Each scene runs at most
+// 2e6 particle-frames: every 25x25 scene whole, but only the first 50 frames of the 200x200 fold
+// (its whole run takes minutes; `fdhcert scenes`, in ./run verify, audits it).
 TEST(Scenes, RobustKeepsTheAuditAtZeroOnEveryShippedScene) {
   for (const auto& p : shipped_scenes()) {
     const Scene s = verify::read_scene(p.string());
     verify::SceneRunOptions opt;
     opt.narrow = "robust";
+    opt.frames = verify::bounded_frames(s, s.frames, 2000000);
+    const bool whole = opt.frames == s.frames;
     const verify::SceneRun r = verify::run_scene(s, opt);
     EXPECT_FALSE(r.dt_reduced) << p;
     EXPECT_EQ(r.audit.inside, 0) << p;
@@ -300,9 +304,9 @@ TEST(Scenes, RobustKeepsTheAuditAtZeroOnEveryShippedScene) {
     if (s.self_collision) {
       EXPECT_TRUE(r.self_audited) << p;
       EXPECT_EQ(r.audit.self_crossing, 0) << p;
-      EXPECT_GT(r.self_hits, 0) << p << ": the cloth never met itself";
+      if (whole) EXPECT_GT(r.self_hits, 0) << p << ": the cloth never met itself";
     }
-    if (!s.obstacles.empty()) {
+    if (!s.obstacles.empty() && whole) {
       EXPECT_GT(r.collisions, 0) << p << ": the cloth never arrived";
     }
   }

@@ -17,6 +17,7 @@
 // the culling.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -39,11 +40,48 @@ struct NormalBox {
   Vec3 lo, hi;
   double err = 0;
 };
-NormalBox swept_normals(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1);
-NormalBox merge(const NormalBox& a, const NormalBox& b);
 
-// The directions d (bits) with d·n > 0 certainly for every normal n held by the box.
+namespace normal_cone_detail {
+inline constexpr double kU = 0x1p-53;  // unit roundoff
+// Underflow: an absolute term far above the error of any product of subnormal size.
+inline constexpr double kTiny = 1e-290;
+inline double lo3(double a, double b, double c) {
+  const double ab = a < b ? a : b;
+  return ab < c ? ab : c;
+}
+inline double hi3(double a, double b, double c) {
+  const double ab = a > b ? a : b;
+  return ab > c ? ab : c;
+}
+}  // namespace normal_cone_detail
+
+// Error of each control vector's coordinates: the inputs carry a relative error u per
+// coordinate; a cross-product coordinate a·b - c·e of inputs bounded by P and Q is then within
+// (2u + u²)·2PQ (inputs) + 2u·PQ (products) + u·2PQ(1 + 4u) (difference) <= 8.1u·PQ; the middle
+// vector's sum and halving keep it within 10.2u·PQ. 16u·PQ + kTiny is used. (Inline: the self
+// pass calls it for every triangle of every step.)
+inline NormalBox swept_normals(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
+  using namespace normal_cone_detail;
+  const Vec3 n0 = cross(p0, q0), n2 = cross(p1, q1);
+  const Vec3 n1 = 0.5 * (cross(p0, q1) + cross(p1, q0));
+  const double pm = std::max(max_abs(p0), max_abs(p1)), qm = std::max(max_abs(q0), max_abs(q1));
+  return {{lo3(n0.x, n1.x, n2.x), lo3(n0.y, n1.y, n2.y), lo3(n0.z, n1.z, n2.z)},
+          {hi3(n0.x, n1.x, n2.x), hi3(n0.y, n1.y, n2.y), hi3(n0.z, n1.z, n2.z)},
+          16 * kU * pm * qm + kTiny};
+}
+
+inline NormalBox merge(const NormalBox& a, const NormalBox& b) {
+  const auto mn = [](double x, double y) { return x < y ? x : y; };
+  const auto mx = [](double x, double y) { return x > y ? x : y; };
+  return {{mn(a.lo.x, b.lo.x), mn(a.lo.y, b.lo.y), mn(a.lo.z, b.lo.z)},
+          {mx(a.hi.x, b.hi.x), mx(a.hi.y, b.hi.y), mx(a.hi.z, b.hi.z)},
+          mx(a.err, b.err)};
+}
+
+// The directions d (bits) with d·n > 0 certainly for every normal n held by the box; and
+// whether the one of `bit` is.
 DirectionMask positive_directions(const NormalBox& b);
+bool leans(const NormalBox& b, int bit);
 
 // The direction of bit `bit` (0-25) as a vector.
 Vec3 mask_direction(int bit);
