@@ -70,10 +70,14 @@ void Cloth::index_springs() {
   for (const Spring& s : springs_) stiffness_.push_back(s.k), rest_.push_back(s.rest);
 }
 
+// Chunk sizes: a cloth up to about 60x60 is one chunk of each, run on the calling thread (waking
+// other threads costs more than its whole step); larger ones are cut into chunks for every core.
+constexpr int kSpringChunk = 1 << 15, kParticleChunk = 1 << 12;
+
 // Hooke: k·(|d| - rest)·d/|d| with d = x_j - x_i, in three passes per chunk so that the middle
 // one (the square roots and divisions, most of the time) runs on vector registers.
 void Cloth::spring_forces() {
-  for_chunks(int(springs_.size()), 4096, [&](int begin, int end) {
+  for_chunks(int(springs_.size()), kSpringChunk, [&](int begin, int end) {
     for (int s = begin; s < end; ++s) {
       const Vec3 d = x_[springs_[s].j] - x_[springs_[s].i];
       pull_[2 * s] = d;
@@ -94,10 +98,14 @@ void Cloth::spring_forces() {
 
 void Cloth::integrate(double dt, std::vector<Vec3>& x_next) {
   const int n = this->n();
-  spring_forces();
   x_next.resize(n);
+  if (int(springs_.size()) <= kSpringChunk && n <= kParticleChunk) {
+    integrate_serial(dt, x_next);
+    return;
+  }
+  spring_forces();
   const double h = dt / m_;  // Δt·a = Δt·F/m, eqs. (1)–(2)
-  for_chunks(n, 2048, [&](int begin, int end) {
+  for_chunks(n, kParticleChunk, [&](int begin, int end) {
     for (int i = begin; i < end; ++i) {
       if (pinned_[i]) {
         v_[i] = Vec3{};
@@ -111,6 +119,33 @@ void Cloth::integrate(double dt, std::vector<Vec3>& x_next) {
       x_next[i] = x_[i] + dt * v_[i];  // eq. (3), with the new velocity
     }
   });
+}
+
+// The same sums in the same order (each particle's force, then its springs in spring order),
+// scattered spring by spring: faster on one thread.
+void Cloth::integrate_serial(double dt, std::vector<Vec3>& x_next) {
+  const int n = this->n();
+  force_.resize(n);
+  for (int i = 0; i < n; ++i)  // gravity and air: F = m·g - c·m·(v - wind)
+    force_[i] = m_ * spec_.gravity - (spec_.damping * m_) * (v_[i] - spec_.wind);
+  for (const Spring& s : springs_) {  // Hooke: k·(|d| - rest)·d/|d|
+    const Vec3 d = x_[s.j] - x_[s.i];
+    if (d == Vec3{}) continue;  // no direction to push along
+    const double len = std::sqrt(dot(d, d));
+    const Vec3 f = (s.k * (len - s.rest) / (len == 0 ? 1.0 : len)) * d;
+    force_[s.i] += f;
+    force_[s.j] += -f;  // as the parallel path adds it
+  }
+  const double h = dt / m_;  // Δt·a = Δt·F/m, eqs. (1)–(2)
+  for (int i = 0; i < n; ++i) {
+    if (pinned_[i]) {
+      v_[i] = Vec3{};
+      x_next[i] = x_[i];
+      continue;
+    }
+    v_[i] += h * force_[i];
+    x_next[i] = x_[i] + dt * v_[i];  // eq. (3), with the new velocity
+  }
 }
 
 double Cloth::energy() const {

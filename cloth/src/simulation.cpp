@@ -23,6 +23,10 @@ struct Simulation::BroadPhase {
   virtual void pairs(std::vector<std::pair<int, int>>& out) = 0;
 };
 
+// Below this many cloth nodes (a cloth of about 90x90 particles) the refit and the traversal
+// stay on the calling thread.
+constexpr std::size_t kParallelNodes = 1 << 14;
+
 template <int K>
 struct Simulation::BroadPhaseK : Simulation::BroadPhase {
   Bvh<K> cloth, obstacles;
@@ -43,17 +47,30 @@ struct Simulation::BroadPhaseK : Simulation::BroadPhase {
     split(n.left, depth + 1);
     split(n.right, depth + 1);
   }
+  // A large tree by subtrees side by side; a small one on this thread (waking the others would
+  // cost more than the refit).
   void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) override {
+    const double w = Bvh<K>::widening(x0, x1);
+    if (cloth.nodes().size() < kParallelNodes) {
+      for (int i = int(cloth.nodes().size()) - 1; i >= 0; --i) cloth.refit_node(i, x0, x1, w);
+      return;
+    }
     for_chunks(int(roots.size()), 1, [&](int begin, int end) {
       for (int r = begin; r < end; ++r)
         for (int i = cloth.subtree_end(roots[r]) - 1; i >= roots[r]; --i)
-          cloth.refit_node(i, x0, x1);
+          cloth.refit_node(i, x0, x1, w);
     });
-    for (auto i = top.rbegin(); i != top.rend(); ++i) cloth.refit_node(*i, x0, x1);
+    for (auto i = top.rbegin(); i != top.rend(); ++i) cloth.refit_node(*i, x0, x1, w);
   }
   void pairs(std::vector<std::pair<int, int>>& out) override {
     // §3.1: the y slab first.
     const auto overlaps = [](const Kdop<K>& a, const Kdop<K>& b) { return overlap(a, b, 1); };
+    if (cloth.nodes().size() < kParallelNodes) {
+      std::vector<std::pair<int, int>> stack = {{0, 0}};
+      if (!cloth.empty() && !obstacles.empty())
+        descend_pairs(cloth, obstacles, stack, out, overlaps);
+      return;
+    }
     const auto work = frontier(cloth, obstacles, 64, overlaps);
     gather_chunks(int(work.size()), parts, out, [&](int c, std::vector<std::pair<int, int>>& part) {
       std::vector<std::pair<int, int>> stack = {work[c]};
@@ -110,7 +127,7 @@ void Simulation::step() {
 
   const auto& tris = mesh_.tris;
   queries_.resize(pairs_.size());
-  for_chunks(int(pairs_.size()), 512, [&](int begin, int end) {
+  for_chunks(int(pairs_.size()), 4096, [&](int begin, int end) {
     for (int q = begin; q < end; ++q) {
       const auto [p, t] = pairs_[q];
       const Tri& tri = tris[t];

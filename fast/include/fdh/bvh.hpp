@@ -62,19 +62,40 @@ class Bvh {
   // New positions, same topology: leaves recomputed, internal nodes merged bottom up (children
   // always follow their parent in nodes()).
   void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1 = {}) {
-    for (int i = int(nodes_.size()) - 1; i >= 0; --i) refit_node(i, x0, x1);
+    const double w = widening(x0, x1);
+    for (int i = int(nodes_.size()) - 1; i >= 0; --i) refit_node(i, x0, x1, w);
   }
 
-  // One node of a refit: a leaf from the positions, an internal node from its children (which
-  // must be refit already). Nodes are in preorder, so node i's subtree is the index range
-  // [i, subtree_end(i)): refitting such a range from its end is a refit of that subtree, and
-  // disjoint subtrees can be refit at the same time.
-  void refit_node(int i, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  // One widening for every leaf of a refit: kdop.hpp's bound for the largest coordinate of all
+  // the points covers each leaf's own (a larger mag only widens more). Four running maxima, so
+  // that the pass is not one long chain of dependent comparisons.
+  static double widening(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+    double m[4] = {0, 0, 0, 0};
+    for (const std::vector<Vec3>* x : {&x0, &x1}) {
+      const double* p = x->empty() ? nullptr : &(*x)[0].x;
+      const std::size_t n = 3 * x->size();
+      std::size_t i = 0;
+      for (; i + 4 <= n; i += 4)
+        for (int k = 0; k < 4; ++k) {
+          const double a = std::fabs(p[i + k]);
+          m[k] = a > m[k] ? a : m[k];
+        }
+      for (; i < n; ++i) m[0] = std::max(m[0], std::fabs(p[i]));
+    }
+    return widening_of(std::max(std::max(m[0], m[1]), std::max(m[2], m[3])));
+  }
+
+  // One node of a refit: a leaf from the positions (widened by w, from widening()), an
+  // internal node from its children (which must be refit already). Nodes are in preorder, so
+  // node i's subtree is the index range [i, subtree_end(i)): refitting such a range from its end
+  // is a refit of that subtree, and disjoint subtrees can be refit at the same time.
+  void refit_node(int i, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, double w) {
     Node& n = nodes_[i];
     if (n.leaf()) {
       const Tri& t = tris_[prims_[n.first]];
       if (n.count == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: the cloth's leaves
-        point_box(n.box, x0[t[0]], x1.empty() ? x0[t[0]] : x1[t[0]]);
+        set_point(n.box, x0[t[0]], w);
+        if (!x1.empty()) add_point(n.box, x1[t[0]], w);
       } else {
         range_box(n.box, n.first, n.first + n.count, x0, x1);
       }
@@ -95,16 +116,6 @@ class Bvh {
   const std::vector<Tri>& tris() const { return tris_; }
 
  private:
-  // The box of one point swept from a to b. Each leaf is widened for its own coordinates
-  // (kdop.hpp's bound holds for any mag at least the points' largest |coordinate|): no pass over
-  // all the points first, and tighter boxes.
-  static void point_box(Kdop<K>& b, const Vec3& a, const Vec3& c) {
-    const double ma = max_abs(a), mc = max_abs(c);
-    const double w = widening_of(ma > mc ? ma : mc);
-    set_point(b, a, w);
-    add_point(b, c, w);
-  }
-
   // The box of primitives prims_[first, last): their distinct vertices at x0 (and x1).
   void range_box(Kdop<K>& b, int first, int last, const std::vector<Vec3>& x0,
                  const std::vector<Vec3>& x1) const {
@@ -206,6 +217,23 @@ double size(const Kdop<K>& b) {  // slabs 0-2 are the axes for every k
   return (b.hi[0] - b.lo[0]) + (b.hi[1] - b.lo[1]) + (b.hi[2] - b.lo[2]);
 }
 
+// The children to descend into from the overlapping node pair (i, j): the larger box's (or the
+// one that is not a leaf), as (first, second); none for two leaves.
+template <int K>
+bool split_pair(const Bvh<K>& a, const Bvh<K>& b, int i, int j, std::pair<int, int>& first,
+                std::pair<int, int>& second) {
+  const auto& na = a.nodes()[i];
+  const auto& nb = b.nodes()[j];
+  if (!na.leaf() && (nb.leaf() || size(na.box) >= size(nb.box))) {
+    first = {na.left, j}, second = {na.right, j};
+  } else if (!nb.leaf()) {
+    first = {i, nb.left}, second = {i, nb.right};
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // Every pair of primitives under the node pairs on `stack`, one from each side, whose leaf
 // boxes overlap: the loop of traverse() and traverse_self().
 template <int K, class Overlaps>
@@ -217,12 +245,10 @@ void descend_pairs(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, 
     const auto& na = a.nodes()[i];
     const auto& nb = b.nodes()[j];
     if (!overlaps(na.box, nb.box)) continue;
-    if (!na.leaf() && (nb.leaf() || size(na.box) >= size(nb.box))) {
-      stack.push_back({na.right, j});
-      stack.push_back({na.left, j});
-    } else if (!nb.leaf()) {
-      stack.push_back({i, nb.right});
-      stack.push_back({i, nb.left});
+    std::pair<int, int> first, second;
+    if (split_pair(a, b, i, j, first, second)) {
+      stack.push_back(second);
+      stack.push_back(first);
     } else {
       for (int p = na.first; p < na.first + na.count; ++p)
         for (int q = nb.first; q < nb.first + nb.count; ++q)
@@ -244,16 +270,11 @@ std::vector<std::pair<int, int>> frontier(const Bvh<K>& a, const Bvh<K>& b, std:
     split = false;
     std::vector<std::pair<int, int>> next;
     for (const auto& [i, j] : level) {
-      const auto& na = a.nodes()[i];
-      const auto& nb = b.nodes()[j];
-      if (!overlaps(na.box, nb.box)) continue;
-      if (!na.leaf() && (nb.leaf() || size(na.box) >= size(nb.box))) {
-        next.push_back({na.left, j});
-        next.push_back({na.right, j});
-        split = true;
-      } else if (!nb.leaf()) {
-        next.push_back({i, nb.left});
-        next.push_back({i, nb.right});
+      if (!overlaps(a.nodes()[i].box, b.nodes()[j].box)) continue;
+      std::pair<int, int> first, second;
+      if (split_pair(a, b, i, j, first, second)) {
+        next.push_back(first);
+        next.push_back(second);
         split = true;
       } else {
         next.push_back({i, j});
