@@ -66,32 +66,28 @@ void Cloth::index_springs() {
     incident_[next[springs_[s].j]++] = 2 * s + 1;
   }
   pull_.resize(2 * springs_.size());
-  length_.resize(springs_.size());
-  for (const Spring& s : springs_) stiffness_.push_back(s.k), rest_.push_back(s.rest);
 }
 
 // Chunk sizes: a cloth up to about 60x60 is one chunk of each, run on the calling thread (waking
 // other threads costs more than its whole step); larger ones are cut into chunks for every core.
 constexpr int kSpringChunk = 1 << 15, kParticleChunk = 1 << 12;
 
-// Hooke: k·(|d| - rest)·d/|d| with d = x_j - x_i, in three passes per chunk so that the middle
-// one (the square roots and divisions, most of the time) runs on vector registers.
+// Hooke: k·(|d| - rest)·d/|d| with d = x_j - x_i, each spring's pull on both its ends. (One
+// pass: splitting it so that the square roots run on vector registers was slower, the extra
+// passes over memory costing more than the square roots.)
 void Cloth::spring_forces() {
   for_chunks(int(springs_.size()), kSpringChunk, [&](int begin, int end) {
     for (int s = begin; s < end; ++s) {
-      const Vec3 d = x_[springs_[s].j] - x_[springs_[s].i];
-      pull_[2 * s] = d;
-      length_[s] = dot(d, d);
-    }
-    for (int s = begin; s < end; ++s) {  // branch-free, so that it vectorises
-      const double len = std::sqrt(length_[s]);
-      const double safe = len == 0 ? 1.0 : len;
-      length_[s] = stiffness_[s] * (len - rest_[s]) / safe;
-    }
-    for (int s = begin; s < end; ++s) {  // no direction to push along at length 0: no force
-      const Vec3 d = pull_[2 * s];
-      pull_[2 * s] = d == Vec3{} ? Vec3{} : length_[s] * d;
-      pull_[2 * s + 1] = -pull_[2 * s];  // exact: adding it is subtracting the pull
+      const Spring& sp = springs_[s];
+      const Vec3 d = x_[sp.j] - x_[sp.i];
+      if (d == Vec3{}) {  // no direction to push along
+        pull_[2 * s] = pull_[2 * s + 1] = Vec3{};
+        continue;
+      }
+      const double len = std::sqrt(dot(d, d));
+      const Vec3 f = (sp.k * (len - sp.rest) / (len == 0 ? 1.0 : len)) * d;
+      pull_[2 * s] = f;
+      pull_[2 * s + 1] = -f;  // exact: adding it is subtracting the pull
     }
   });
 }

@@ -100,11 +100,8 @@ class Cloth {
   // The springs at each particle, in spring order: incident_[incident_start_[i] ..
   // incident_start_[i + 1]), each the index in pull_ of that spring's force on i.
   std::vector<int> incident_, incident_start_;
-  std::vector<Vec3> pull_;  // per spring s: at 2s the force on its i end, at 2s + 1 on its j end
-  std::vector<double> length_;  // per spring, scratch for the vectorised pass
-  std::vector<double> stiffness_, rest_;
-  std::vector<Vec3>
-      force_;  // per particle, for the serial path  // per spring, as in springs_, for that pass
+  std::vector<Vec3> pull_;     // per spring s: at 2s the force on its i end, at 2s + 1 on its j end
+  std::vector<Vec3> force_;    // per particle, for the serial path
   std::vector<double> k_sum_;  // Σ_j k_ij per particle
   std::vector<Tri> tris_;
   std::vector<std::array<int, 2>> edges_;
