@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "fdh/cloth/parallel.hpp"
-
 namespace fdh::cloth {
 
 PatchTree::PatchTree(const Cloth& cloth) : cloth_(cloth), grid_(cloth.grid()), cols_(grid_ - 1) {
@@ -11,9 +9,19 @@ PatchTree::PatchTree(const Cloth& cloth) : cloth_(cloth), grid_(cloth.grid()), c
   build(0, 0, cols_, cols_);
   own_primitives();
   normals_.resize(nodes_.size());
-  for (int i = 0; i < int(nodes_.size()); ++i)
-    if (nodes_[i].leaf()) leaves_.push_back(i);
+  split(0, 0);
   lean_.resize(nodes_.size());
+}
+
+void PatchTree::split(int node, int depth) {  // 64 subtrees: work for every core
+  const Node& n = nodes_[node];
+  if (depth == 6 || n.leaf()) {
+    roots_.push_back(node);
+    return;
+  }
+  top_.push_back(node);
+  split(n.left, depth + 1);
+  split(n.right, depth + 1);
 }
 
 int PatchTree::build(int r0, int c0, int r1, int c1) {
@@ -63,24 +71,21 @@ void PatchTree::own_primitives() {
 
 void PatchTree::update_normals(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
   const auto& tris = cloth_.triangles();
-  for_chunks(int(leaves_.size()), 1024, [&](int begin, int end) {  // the cells, side by side
-    for (int k = begin; k < end; ++k) {
-      const int i = leaves_[k];
-      const auto [s, t] = triangles(cell_of(nodes_[i]));
-      const auto swept = [&](const Tri& f) {
-        return swept_normals(x0[f[1]] - x0[f[0]], x1[f[1]] - x1[f[0]], x0[f[2]] - x0[f[0]],
-                             x1[f[2]] - x1[f[0]]);
-      };
-      normals_[i] = merge(swept(tris[s]), swept(tris[t]));
-      lean_[i] = normals_[i].lo + normals_[i].hi;  // a direction inside the box, to aim at
-    }
-  });
-  for (int i = int(nodes_.size()) - 1; i >= 0; --i) {  // then up the tree
+  bottom_up([&](int i) {
     const Node& n = nodes_[i];
-    if (n.leaf()) continue;
-    normals_[i] = merge(normals_[n.left], normals_[n.right]);
-    lean_[i] = lean_[n.left] + lean_[n.right];
-  }
+    if (!n.leaf()) {
+      normals_[i] = merge(normals_[n.left], normals_[n.right]);
+      lean_[i] = lean_[n.left] + lean_[n.right];
+      return;
+    }
+    const auto [s, t] = triangles(cell_of(n));
+    const auto swept = [&](const Tri& f) {
+      return swept_normals(x0[f[1]] - x0[f[0]], x1[f[1]] - x1[f[0]], x0[f[2]] - x0[f[0]],
+                           x1[f[2]] - x1[f[0]]);
+    };
+    normals_[i] = merge(swept(tris[s]), swept(tris[t]));
+    lean_[i] = normals_[i].lo + normals_[i].hi;  // a direction inside the box, to aim at
+  });
 }
 
 // The boundary's particles in the triangles' winding order (counter-clockwise seen from their

@@ -130,7 +130,7 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
       }
     });
     const auto& nodes = tree.nodes();
-    for (int i = int(nodes.size()) - 1; i >= 0; --i) {
+    tree.bottom_up([&](int i) {
       const auto& nd = nodes[i];
       if (nd.leaf()) {
         const int a = nd.r0 * g + nd.c0;
@@ -139,7 +139,7 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
       } else {
         box[i] = merge(box[nd.left], box[nd.right]);
       }
-    }
+    });
   }
 
   // Two disjoint patches, tree against tree: the larger one descended while their boxes meet.
