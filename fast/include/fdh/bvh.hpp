@@ -101,9 +101,14 @@ class Bvh {
       }
       return;
     }
-    // In place: a Kdop returned by value costs more in copies than the merge itself.
-    n.box = nodes_[n.left].box;
-    merge_into(n.box, nodes_[n.right].box);
+    // In place, in one pass: a Kdop returned by value, or copied then merged, costs more in
+    // stores than the merge itself.
+    const Kdop<K>& l = nodes_[n.left].box;
+    const Kdop<K>& r = nodes_[n.right].box;
+    for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
+      n.box.lo[s] = l.lo[s] < r.lo[s] ? l.lo[s] : r.lo[s];
+      n.box.hi[s] = l.hi[s] > r.hi[s] ? l.hi[s] : r.hi[s];
+    }
   }
   int subtree_end(int i) const {
     while (!nodes_[i].leaf()) i = nodes_[i].right;
