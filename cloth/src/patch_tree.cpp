@@ -9,19 +9,8 @@ PatchTree::PatchTree(const Cloth& cloth) : cloth_(cloth), grid_(cloth.grid()), c
   build(0, 0, cols_, cols_);
   own_primitives();
   normals_.resize(nodes_.size());
-  split(0, 0);
+  split_subtrees(nodes_, 0, roots_, top_);
   lean_.resize(nodes_.size());
-}
-
-void PatchTree::split(int node, int depth) {  // 64 subtrees: work for every core
-  const Node& n = nodes_[node];
-  if (depth == 6 || n.leaf()) {
-    roots_.push_back(node);
-    return;
-  }
-  top_.push_back(node);
-  split(n.left, depth + 1);
-  split(n.right, depth + 1);
 }
 
 int PatchTree::build(int r0, int c0, int r1, int c1) {

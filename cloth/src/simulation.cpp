@@ -35,17 +35,7 @@ struct Simulation::BroadPhaseK : Simulation::BroadPhase {
 
   BroadPhaseK(const std::vector<Vec3>& x, const TriMesh& mesh)
       : cloth(point_prims(int(x.size())), x), obstacles(mesh.tris, mesh.x) {
-    if (!cloth.empty()) split(0, 0);
-  }
-  void split(int node, int depth) {  // 64 subtrees: work for every core, little left on top
-    const auto& n = cloth.nodes()[node];
-    if (depth == 6 || n.leaf()) {
-      roots.push_back(node);
-      return;
-    }
-    top.push_back(node);
-    split(n.left, depth + 1);
-    split(n.right, depth + 1);
+    if (!cloth.empty()) split_subtrees(cloth.nodes(), 0, roots, top);
   }
   // A large tree by subtrees side by side; a small one on this thread (waking the others would
   // cost more than the refit).

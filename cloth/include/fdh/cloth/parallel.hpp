@@ -44,4 +44,20 @@ void gather_chunks(int chunks, std::vector<std::vector<T>>& out, std::vector<T>&
   for (const auto& part : out) all.insert(all.end(), part.begin(), part.end());
 }
 
+// The subtrees of a binary tree at depth 6 (or the leaves above it) into `roots`, and the nodes
+// above them into `top`, in preorder: 64 subtrees, work for every core in a bottom-up pass with
+// little left on top. Node: leaf(), left, right.
+template <class Node>
+void split_subtrees(const std::vector<Node>& nodes, int node, std::vector<int>& roots,
+                    std::vector<int>& top, int depth = 0) {
+  const Node& n = nodes[node];
+  if (depth == 6 || n.leaf()) {
+    roots.push_back(node);
+    return;
+  }
+  top.push_back(node);
+  split_subtrees(nodes, n.left, roots, top, depth + 1);
+  split_subtrees(nodes, n.right, roots, top, depth + 1);
+}
+
 }  // namespace fdh::cloth

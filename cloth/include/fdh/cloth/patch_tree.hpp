@@ -64,7 +64,6 @@ class PatchTree {
  private:
   static constexpr std::size_t kParallelNodes = 1 << 14;  // below: on the calling thread
   int build(int r0, int c0, int r1, int c1);
-  void split(int node, int depth);
   int subtree_end(int i) const {
     while (!nodes_[i].leaf()) i = nodes_[i].right;
     return i + 1;
