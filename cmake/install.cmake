@@ -5,7 +5,7 @@
 #                       and CCD methods
 #   fdhcert::cloth      the mass-spring cloth on fast
 #   fdhcert::reference  the exact twins (CGAL and GMP, linked privately)
-# fast and cloth are one export set that needs Eigen alone; reference is a second one, loaded
+# fast and cloth are one export set that needs Eigen (and oneTBB, for the cloth's threads); reference is a second one, loaded
 # when CGAL is found, so that a project using fast never needs (or links) CGAL.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)

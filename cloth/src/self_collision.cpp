@@ -1,46 +1,174 @@
 #include "fdh/cloth/self_collision.hpp"
 
+#include <algorithm>
+#include <numeric>
 #include <stdexcept>
-#include <string>
 
-#include "fdh/bvh.hpp"
+#include "fdh/cloth/parallel.hpp"
+#include "fdh/cloth/patch_tree.hpp"
 
 namespace fdh::cloth {
 
-// The three trees behind a run-time k: particles, triangles and edges, all swept.
+using Candidate = SelfCollision::Candidate;
+
+// The patch tree with a swept FDH per node, behind a run-time k.
 struct SelfCollision::Trees {
   virtual ~Trees() = default;
-  virtual void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) = 0;
-  virtual void vertex_face(std::vector<std::pair<int, int>>& out) const = 0;
-  virtual void edge_edge(std::vector<std::pair<int, int>>& out) const = 0;
+  // The candidates of the step x0 -> x1, in an order fixed by the tree alone.
+  virtual void candidates(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
+                          std::vector<Candidate>& out) = 0;
 };
+
+namespace {
+
+// A particle's swept box on the three axes only: the primitive-level filter of cell_pairs,
+// cheaper to merge than the full FDH and still conservative (a box containing the FDH).
+struct Aabb {
+  Vec3 lo, hi;
+};
+inline Aabb join(const Aabb& a, const Aabb& b) {
+  return {{std::min(a.lo.x, b.lo.x), std::min(a.lo.y, b.lo.y), std::min(a.lo.z, b.lo.z)},
+          {std::max(a.hi.x, b.hi.x), std::max(a.hi.y, b.hi.y), std::max(a.hi.z, b.hi.z)}};
+}
+inline bool meet(const Aabb& a, const Aabb& b) {
+  return !(a.hi.x < b.lo.x || b.hi.x < a.lo.x || a.hi.y < b.lo.y || b.hi.y < a.lo.y ||
+           a.hi.z < b.lo.z || b.hi.z < a.lo.z);
+}
+
+// Every pair of primitives, one owned by cell a and one by cell b (a == b: both in one cell),
+// that shares no particle and whose swept boxes (merged from the particles' boxes) overlap.
+void cell_pairs(const PatchTree& t, const Cloth& cloth, const std::vector<Aabb>& pbox, int a, int b,
+                std::vector<Candidate>& out) {
+  const auto& tris = cloth.triangles();
+  const auto& edges = cloth.edges();
+  const auto vf = [&](int from, int to) {
+    for (const int f : PatchTree::triangles(to)) {
+      const Tri& tri = tris[f];
+      const Aabb fb = join(join(pbox[tri[0]], pbox[tri[1]]), pbox[tri[2]]);
+      for (const int* p = t.vertices_begin(from); p != t.vertices_end(from); ++p) {
+        if (*p == tri[0] || *p == tri[1] || *p == tri[2] || !meet(pbox[*p], fb)) continue;
+        out.push_back({QueryKind::VertexFace, {*p, tri[0], tri[1], tri[2]}});
+      }
+    }
+  };
+  vf(a, b);
+  if (a != b) vf(b, a);
+  for (const int* e = t.edges_begin(a); e != t.edges_end(a); ++e) {
+    const auto& ea = edges[*e];
+    const Aabb eab = join(pbox[ea[0]], pbox[ea[1]]);
+    for (const int* g = a == b ? e + 1 : t.edges_begin(b); g != t.edges_end(b); ++g) {
+      const auto& eb = edges[*g];
+      if (ea[0] == eb[0] || ea[0] == eb[1] || ea[1] == eb[0] || ea[1] == eb[1]) continue;
+      if (!meet(eab, join(pbox[eb[0]], pbox[eb[1]]))) continue;
+      out.push_back({QueryKind::EdgeEdge, {ea[0], ea[1], eb[0], eb[1]}});
+    }
+  }
+}
+
+// Work for one thread: a cell against itself (b < 0) or two sibling patches.
+struct Task {
+  int a, b;
+};
+
+}  // namespace
 
 template <int K>
 struct SelfCollision::TreesK : SelfCollision::Trees {
-  Bvh<K> points, triangles, edges;
-  TreesK(const Cloth& c)
-      : points(point_prims(c.n()), c.x()),
-        triangles(c.triangles(), c.x()),
-        edges(as_edges(c.edges()), c.x()) {}
-  static std::vector<Tri> as_edges(const std::vector<std::array<int, 2>>& e) {
-    std::vector<Tri> t;
-    for (const auto& [i, j] : e) t.push_back({i, j, j});
-    return t;
+  const Cloth& cloth;
+  PatchTree tree;
+  std::vector<Kdop<K>> particle_box, box;
+  std::vector<Aabb> particle_aabb;  // particle_box's axis slabs
+  std::vector<Task> tasks;
+  std::vector<std::vector<Candidate>> parts;
+
+  explicit TreesK(const Cloth& c) : cloth(c), tree(c) {}
+
+  void candidates(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
+                  std::vector<Candidate>& out) override {
+    tree.update_normals(x0, x1);
+    tasks.clear();
+    collect(0, x0, x1);
+    if (tasks.empty()) return;  // the whole cloth is flat: nothing can touch
+    refit(x0, x1);
+    gather_chunks(int(tasks.size()), parts, out, [&](int i, std::vector<Candidate>& part) {
+      const Task& t = tasks[i];
+      if (t.b < 0)
+        cell_pairs(tree, cloth, particle_aabb, tree.cell_of(tree.nodes()[t.a]),
+                   tree.cell_of(tree.nodes()[t.a]), part);
+      else
+        patch_pairs(t.a, t.b, part);
+    });
   }
-  void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) override {
-    points.refit(x0, x1);
-    triangles.refit(x0, x1);
-    edges.refit(x0, x1);
+
+  // Top down: a flat node needs nothing; otherwise its cell, or its children and their pair.
+  void collect(int node, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+    if (tree.flat(node, x0, x1)) return;
+    const auto& n = tree.nodes()[node];
+    if (n.leaf()) {
+      tasks.push_back({node, -1});
+      return;
+    }
+    collect(n.left, x0, x1);
+    collect(n.right, x0, x1);
+    tasks.push_back({n.left, n.right});
   }
-  void vertex_face(std::vector<std::pair<int, int>>& out) const override {
-    traverse(points, triangles, out);
+
+  // Swept boxes: each particle's, then each cell's (its four corners), then up the tree.
+  void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+    const int n = int(x0.size()), g = cloth.grid();
+    particle_box.resize(n);
+    particle_aabb.resize(n);
+    box.resize(tree.nodes().size());
+    for_chunks(n, 4096, [&](int begin, int end) {
+      for (int i = begin; i < end; ++i) {
+        const double ma = max_abs(x0[i]), mb = max_abs(x1[i]);
+        const double w = widening_of(ma > mb ? ma : mb);
+        set_point(particle_box[i], x0[i], w);
+        add_point(particle_box[i], x1[i], w);
+        const Kdop<K>& b = particle_box[i];  // slabs 0-2 are x, y and z for every k
+        particle_aabb[i] = {{b.lo[0], b.lo[1], b.lo[2]}, {b.hi[0], b.hi[1], b.hi[2]}};
+      }
+    });
+    const auto& nodes = tree.nodes();
+    tree.bottom_up([&](int i) {
+      const auto& nd = nodes[i];
+      if (nd.leaf()) {
+        const int a = nd.r0 * g + nd.c0;
+        box[i] = merge(merge(particle_box[a], particle_box[a + 1]),
+                       merge(particle_box[a + g], particle_box[a + g + 1]));
+      } else {
+        box[i] = merge(box[nd.left], box[nd.right]);
+      }
+    });
   }
-  void edge_edge(std::vector<std::pair<int, int>>& out) const override {
-    traverse_self(edges, out);
+
+  // Two disjoint patches, tree against tree: the larger one descended while their boxes meet.
+  void patch_pairs(int a, int b, std::vector<Candidate>& out) const {
+    const auto& nodes = tree.nodes();
+    const auto cells = [&](int i) {
+      return (nodes[i].r1 - nodes[i].r0) * (nodes[i].c1 - nodes[i].c0);
+    };
+    std::vector<std::pair<int, int>> stack = {{a, b}};
+    while (!stack.empty()) {
+      const auto [i, j] = stack.back();
+      stack.pop_back();
+      if (!overlap(box[i], box[j])) continue;
+      const auto &ni = nodes[i], &nj = nodes[j];
+      if (ni.leaf() && nj.leaf()) {
+        cell_pairs(tree, cloth, particle_aabb, tree.cell_of(ni), tree.cell_of(nj), out);
+      } else if (!ni.leaf() && (nj.leaf() || cells(i) >= cells(j))) {
+        stack.push_back({ni.right, j});
+        stack.push_back({ni.left, j});
+      } else {
+        stack.push_back({i, nj.right});
+        stack.push_back({i, nj.left});
+      }
+    }
   }
 };
 
-SelfCollision::SelfCollision(const Cloth& cloth, int k, CcdTest exact) : exact_(exact) {
+SelfCollision::SelfCollision(const Cloth& cloth, int k, CcdTest exact, int rounds)
+    : exact_(exact), rounds_(rounds) {
   if (!exact_) throw std::invalid_argument("self-collision needs an exact CCD fallback");
   trees_ = with_k(k, [&](auto kc) -> std::unique_ptr<Trees> {
     return std::make_unique<TreesK<decltype(kc)::value>>(cloth);
@@ -49,48 +177,81 @@ SelfCollision::SelfCollision(const Cloth& cloth, int k, CcdTest exact) : exact_(
 
 SelfCollision::~SelfCollision() = default;
 
+void SelfCollision::contacts(const std::vector<Vec3>& x0, const std::vector<Vec3>& x, Result& r) {
+  candidates_.clear();
+  trees_->candidates(x0, x, candidates_);
+  hit_.assign(candidates_.size(), 0);
+  for_chunks(int(candidates_.size()), 256, [&](int begin, int end) {
+    for (int c = begin; c < end; ++c) {
+      Query q;
+      q.kind = candidates_[c].kind;
+      for (int i = 0; i < 4; ++i) {
+        q.x[i] = x0[candidates_[c].ids[i]];
+        q.x[i + 4] = x[candidates_[c].ids[i]];
+      }
+      hit_[c] = robust_ccd(q, exact_);
+    }
+  });
+  touching_.clear();
+  for (std::size_t c = 0; c < candidates_.size(); ++c)
+    if (hit_[c]) touching_.push_back(candidates_[c]);
+  r.queries += long(candidates_.size());
+  r.hits += long(touching_.size());
+}
+
+namespace {
+
+// Union–find over the particles, for the impact zones.
+struct Zones {
+  std::vector<int> parent;
+  explicit Zones(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void join(int a, int b) { parent[find(a)] = find(b); }
+};
+
+}  // namespace
+
 SelfCollision::Result SelfCollision::resolve(const Cloth& cloth, const std::vector<Vec3>& x0,
                                              std::vector<Vec3>& x, std::vector<Vec3>& v) {
-  constexpr int kRounds = 4;
+  (void)cloth;
   Result r;
-  const auto& tris = cloth.triangles();
-  const auto& edges = cloth.edges();
-  for (int round = 0; round <= kRounds; ++round) {
-    trees_->refit(x0, x);
-    stop_.assign(x.size(), 0);
-    bool any = false;
-    const auto test = [&](QueryKind kind, std::array<int, 4> ids) {
-      Query q;
-      q.kind = kind;
-      for (int i = 0; i < 4; ++i) q.x[i] = x0[ids[i]], q.x[i + 4] = x[ids[i]];
-      ++r.queries;
-      if (!robust_ccd(q, exact_)) return;
-      ++r.hits;
-      any = true;
-      for (const int i : ids) stop_[i] = 1;
-    };
-    pairs_.clear();
-    trees_->vertex_face(pairs_);
-    for (const auto& [p, t] : pairs_) {
-      const Tri& f = tris[t];
-      if (p == f[0] || p == f[1] || p == f[2]) continue;  // its own triangle
-      test(QueryKind::VertexFace, {p, f[0], f[1], f[2]});
-    }
-    pairs_.clear();
-    trees_->edge_edge(pairs_);
-    for (const auto& [a, b] : pairs_) {
-      const auto& ea = edges[a];
-      const auto& eb = edges[b];
-      if (ea[0] == eb[0] || ea[0] == eb[1] || ea[1] == eb[0] || ea[1] == eb[1]) continue;
-      test(QueryKind::EdgeEdge, {ea[0], ea[1], eb[0], eb[1]});
-    }
-    if (!any) return r;
-    if (round == kRounds) break;
-    for (std::size_t i = 0; i < x.size(); ++i)
-      if (stop_[i]) x[i] = x0[i], v[i] = Vec3{};
+  std::vector<Vec3> v_in;  // the velocities before any response, for the zones' means
+  for (int round = 0; round < rounds_; ++round) {  // stage 1
+    contacts(x0, x, r);
+    if (touching_.empty()) return r;
+    if (v_in.empty()) v_in = v;
+    ++r.rounds;
+    for (const Candidate& c : touching_)
+      for (const int i : c.ids) x[i] = x0[i], v[i] = Vec3{};
   }
-  // Still in contact after every round: the whole cloth stays where the step started.
-  x = x0;
+  contacts(x0, x, r);
+  if (touching_.empty()) return r;
+  r.zones = true;  // stage 2
+  const int n = int(x.size());
+  if (v_in.empty()) v_in = v;
+  Zones zones(n);
+  std::vector<char> in_zone(n, 0);
+  for (int round = 0; round < kZoneRounds && !touching_.empty(); ++round) {
+    for (const Candidate& c : touching_)
+      for (const int i : c.ids) zones.join(c.ids[0], i), in_zone[i] = 1;
+    std::vector<Vec3> sum(n);
+    std::vector<int> count(n, 0);
+    for (int i = 0; i < n; ++i)
+      if (in_zone[i]) sum[zones.find(i)] += v_in[i], ++count[zones.find(i)];
+    for (int i = 0; i < n; ++i) {
+      if (!in_zone[i]) continue;
+      const int z = zones.find(i);
+      x[i] = x0[i];
+      v[i] = (1.0 / count[z]) * sum[z];  // the zone's mean velocity: momentum kept
+    }
+    contacts(x0, x, r);
+  }
+  r.zone_particles = std::count(in_zone.begin(), in_zone.end(), 1);
+  if (touching_.empty()) return r;
+  x = x0;  // stage 3: still in contact after every zone iteration
   for (Vec3& u : v) u = Vec3{};
   r.stopped_all = true;
   return r;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "fdh/bvh.hpp"
+#include "fdh/cloth/parallel.hpp"
 
 namespace fdh::cloth {
 
@@ -19,19 +20,52 @@ FrameTimes& FrameTimes::operator+=(const FrameTimes& o) {
 struct Simulation::BroadPhase {
   virtual ~BroadPhase() = default;
   virtual void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) = 0;
-  virtual void pairs(std::vector<std::pair<int, int>>& out) const = 0;
+  virtual void pairs(std::vector<std::pair<int, int>>& out) = 0;
 };
+
+// Below this many cloth nodes (a cloth of about 90x90 particles) the refit and the traversal
+// stay on the calling thread.
+constexpr std::size_t kParallelNodes = 1 << 14;
 
 template <int K>
 struct Simulation::BroadPhaseK : Simulation::BroadPhase {
   Bvh<K> cloth, obstacles;
+  std::vector<int> roots, top;  // subtrees refit side by side; the nodes above them, in preorder
+  std::vector<std::vector<std::pair<int, int>>> parts;
+
   BroadPhaseK(const std::vector<Vec3>& x, const TriMesh& mesh)
-      : cloth(point_prims(int(x.size())), x), obstacles(mesh.tris, mesh.x) {}
-  void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) override {
-    cloth.refit(x0, x1);
+      : cloth(point_prims(int(x.size())), x), obstacles(mesh.tris, mesh.x) {
+    if (!cloth.empty()) split_subtrees(cloth.nodes(), 0, roots, top);
   }
-  void pairs(std::vector<std::pair<int, int>>& out) const override {
-    traverse(cloth, obstacles, out, /*first_slab=*/1);  // §3.1: the y slab first
+  // A large tree by subtrees side by side; a small one on this thread (waking the others would
+  // cost more than the refit).
+  void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) override {
+    const double w = Bvh<K>::widening(x0, x1);
+    if (cloth.nodes().size() < kParallelNodes) {
+      for (int i = int(cloth.nodes().size()) - 1; i >= 0; --i) cloth.refit_node(i, x0, x1, w);
+      return;
+    }
+    for_chunks(int(roots.size()), 1, [&](int begin, int end) {
+      for (int r = begin; r < end; ++r)
+        for (int i = cloth.subtree_end(roots[r]) - 1; i >= roots[r]; --i)
+          cloth.refit_node(i, x0, x1, w);
+    });
+    for (auto i = top.rbegin(); i != top.rend(); ++i) cloth.refit_node(*i, x0, x1, w);
+  }
+  void pairs(std::vector<std::pair<int, int>>& out) override {
+    // §3.1: the y slab first.
+    const auto overlaps = [](const Kdop<K>& a, const Kdop<K>& b) { return overlap(a, b, 1); };
+    if (cloth.nodes().size() < kParallelNodes) {
+      std::vector<std::pair<int, int>> stack = {{0, 0}};
+      if (!cloth.empty() && !obstacles.empty())
+        descend_pairs(cloth, obstacles, stack, out, overlaps);
+      return;
+    }
+    const auto work = frontier(cloth, obstacles, 64, overlaps);
+    gather_chunks(int(work.size()), parts, out, [&](int c, std::vector<std::pair<int, int>>& part) {
+      std::vector<std::pair<int, int>> stack = {work[c]};
+      descend_pairs(cloth, obstacles, stack, part, overlaps);
+    });
   }
 };
 
@@ -81,13 +115,16 @@ void Simulation::step() {
   broad_->pairs(pairs_);
   times_.traversal = seconds_since(clock);
 
-  queries_.clear();
   const auto& tris = mesh_.tris;
-  for (const auto& [p, t] : pairs_) {
-    const Tri& tri = tris[t];
-    const bool hit = narrow_(x0_[p], x1_[p], mesh_.x[tri[0]], mesh_.x[tri[1]], mesh_.x[tri[2]]);
-    queries_.push_back({p, t, hit});
-  }
+  queries_.resize(pairs_.size());
+  for_chunks(int(pairs_.size()), 4096, [&](int begin, int end) {
+    for (int q = begin; q < end; ++q) {
+      const auto [p, t] = pairs_[q];
+      const Tri& tri = tris[t];
+      queries_[q] = {p, t,
+                     narrow_(x0_[p], x1_[p], mesh_.x[tri[0]], mesh_.x[tri[1]], mesh_.x[tri[2]])};
+    }
+  });
   times_.narrow = seconds_since(clock);
 
   // Response in query order: after the first hit a particle lies outside that plane, so a

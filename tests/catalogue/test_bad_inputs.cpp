@@ -311,6 +311,16 @@ const std::vector<Row>& rows() {
          return Args{"simulate", write_text(d / "t.scene", "# skin\nthickness 1e308\n")};
        },
        2, "t.scene:2: thickness must be in [0, 1000] m, not '1e308'"},
+      {"AuditEveryZero",
+       [](const fs::path& d) {
+         return Args{"simulate", write_text(d / "a.scene", "grid 5\naudit_every 0\n")};
+       },
+       2, "a.scene:2: audit_every must be a whole number in [1, 100000000], not '0'"},
+      {"ThreadsOutOfRange",
+       [](const fs::path&) {
+         return Args{"simulate", FDH_SOURCE_DIR "/corpus/scenes/table.scene", "--threads", "0"};
+       },
+       2, "--threads: Value 0 not in range 1 to 1024"},
       {"WindNotFinite",
        [](const fs::path& d) {
          return Args{"simulate", write_text(d / "w.scene", "wind 0 inf 0\n")};

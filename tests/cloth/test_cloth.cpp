@@ -2,6 +2,7 @@
 // a known answer, the shipped scenes (stable step, audit 0 with robust), a cloth resting on a
 // table for 1,000 frames, and the energy of a swinging pinned cloth.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <nlohmann/json.hpp>
 
@@ -9,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 #include "fdh/cli/cli.hpp"
 #include "fdh/cloth/response.hpp"
@@ -135,16 +137,25 @@ TEST(Audit, CountsSelfCrossingsExactly) {
             1);
 }
 
-TEST(SelfCollision, StopsAPointBeforeItPassesThroughTheCloth) {
-  // A 3×3 cloth of side 2 centred at the origin; its corner particle 0 is lifted over the
-  // far cell (x, z in [0, 1]) and moves straight down through it.
+// A 3×3 cloth of side 2 centred at the origin; its corner particle 0 lifted over the far cell
+// (x, z in [0, 1]).
+Cloth three_by_three() {
   ClothSpec spec;
   spec.grid = 3;
   spec.size = 2;
   spec.centre = {0, 0, 0};
-  Cloth cloth(spec);
+  return Cloth(spec);
+}
+std::vector<Vec3> corner_lifted(const Cloth& cloth) {
   std::vector<Vec3> x0 = cloth.x();
   x0[0] = {0.6, 0.5, 0.6};
+  return x0;
+}
+
+TEST(SelfCollision, StopsAPointBeforeItPassesThroughTheCloth) {
+  // The lifted corner moves straight down through the far cell.
+  const Cloth cloth = three_by_three();
+  const std::vector<Vec3> x0 = corner_lifted(cloth);
   std::vector<Vec3> x = x0, v(x0.size());
   x[0] = {0.6, -0.5, 0.6};
   SelfCollision pass(cloth, 18, &exact::ccd_hit);
@@ -157,6 +168,61 @@ TEST(SelfCollision, StopsAPointBeforeItPassesThroughTheCloth) {
   y[0] = {0.6, 1.5, 0.6};
   EXPECT_EQ(pass.resolve(cloth, x0, y, w).hits, 0);
   EXPECT_EQ(y[0], (Vec3{0.6, 1.5, 0.6}));
+}
+
+// Stage 2 of the response: with no rounds of particle stops, the contact goes to an impact zone,
+// which stays where the step began and takes its particles' mean velocity; the rest of the cloth
+// keeps moving.
+TEST(SelfCollision, ImpactZonesResolveWhatTheRoundsLeave) {
+  const Cloth cloth = three_by_three();
+  const std::vector<Vec3> x0 = corner_lifted(cloth);
+  std::vector<Vec3> x = x0, v(x0.size(), Vec3{0, 0, 0.25});
+  x[0] = {0.6, -0.5, 0.6};  // down through the far cell
+  v[0] = {0, -1, 0};
+  x[2] += Vec3{0, 0, 0.001};  // a particle outside the contact, moving
+  SelfCollision pass(cloth, 18, &exact::ccd_hit, /*rounds=*/0);
+  const SelfCollision::Result r = pass.resolve(cloth, x0, x, v);
+  EXPECT_TRUE(r.zones);
+  EXPECT_FALSE(r.stopped_all);
+  EXPECT_GT(r.zone_particles, 0);
+  EXPECT_LT(r.zone_particles, cloth.n());
+  EXPECT_EQ(x[0], x0[0]);
+  EXPECT_NE(x[2], x0[2]);  // not frozen whole
+  // The zone's particles share one velocity, the mean of theirs: particle 0's -1 in y and the
+  // others' 0.25 in z, so y < 0 and z > 0.
+  EXPECT_LT(v[0].y, 0);
+  EXPECT_GT(v[0].z, 0);
+  // And the step is now free of contact.
+  std::vector<Vec3> w = v;
+  EXPECT_EQ(SelfCollision(cloth, 18, &exact::ccd_hit).resolve(cloth, x0, x, w).hits, 0);
+}
+
+// The step on one thread and on two gives the same cloth, to the bit: chunks fixed by the sizes
+// alone, outputs joined in chunk order.
+TEST(Simulation, SameResultsForAnyThreadCount) {
+  // The towel at 24x24 meets itself by frame 1200 (the self pass's tasks run in parallel); the
+  // table at 70x70 is past the sizes that stay on one thread (springs, refit, traversal).
+  for (const auto& [name, grid, frames] :
+       {std::tuple{"windy-bar.scene", 24, 1200}, std::tuple{"table.scene", 70, 300}}) {
+    Scene s = verify::read_scene(kScenes + name);
+    s.cloth.grid = grid;
+    s.dt = std::min(s.dt, 0.9 * stable_dt(s.cloth));
+    verify::SceneRunOptions opt;
+    opt.frames = frames;
+    opt.check = false;
+    const auto run = [&](int threads) {
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      return verify::run_scene(s, opt);
+    };
+    const verify::SceneRun one = run(1), two = run(2);
+    EXPECT_EQ(one.final_x, two.final_x) << name;
+    EXPECT_EQ(one.candidates, two.candidates) << name;
+    EXPECT_EQ(one.self_queries, two.self_queries) << name;
+    EXPECT_EQ(one.self_hits, two.self_hits) << name;
+    if (s.self_collision) {
+      EXPECT_GT(one.self_hits, 0) << name;
+    }
+  }
 }
 
 // Without the self-collision pass the towel on the windy bar passes through itself; with it,
@@ -229,12 +295,16 @@ TEST(Scenes, BadInputNamesTheFileAndLine) {
 }
 
 // With robust, every shipped scene ends with nothing inside and no edge crossing, in every
-// frame, and the narrow phase agrees with the exact test on every query.
+// frame, and the narrow phase agrees with the exact test on every query. Each scene runs at most
+// 2e6 particle-frames: every 25x25 scene whole, but only the first 50 frames of the 200x200 fold
+// (its whole run takes minutes; `fdhcert scenes`, in ./run verify, audits it).
 TEST(Scenes, RobustKeepsTheAuditAtZeroOnEveryShippedScene) {
   for (const auto& p : shipped_scenes()) {
     const Scene s = verify::read_scene(p.string());
     verify::SceneRunOptions opt;
     opt.narrow = "robust";
+    opt.frames = verify::bounded_frames(s, s.frames, 2000000);
+    const bool whole = opt.frames == s.frames;
     const verify::SceneRun r = verify::run_scene(s, opt);
     EXPECT_FALSE(r.dt_reduced) << p;
     EXPECT_EQ(r.audit.inside, 0) << p;
@@ -244,9 +314,11 @@ TEST(Scenes, RobustKeepsTheAuditAtZeroOnEveryShippedScene) {
     if (s.self_collision) {
       EXPECT_TRUE(r.self_audited) << p;
       EXPECT_EQ(r.audit.self_crossing, 0) << p;
-      EXPECT_GT(r.self_hits, 0) << p << ": the cloth never met itself";
+      if (whole) {
+        EXPECT_GT(r.self_hits, 0) << p << ": the cloth never met itself";
+      }
     }
-    if (!s.obstacles.empty()) {
+    if (!s.obstacles.empty() && whole) {
       EXPECT_GT(r.collisions, 0) << p << ": the cloth never arrived";
     }
   }

@@ -1,7 +1,8 @@
 // The FDH tree of Han & Jia 2013 §2-3: built top down, refit bottom up, traversed tree
 // against tree.
-// - Split direction: the direction of D along which the node's FDH is longest, in world units
-//   (slab width / |d|, so diagonals are not favoured by their length).
+// - Split direction: the direction of D along which the node is longest, in world units
+//   (slab width / |d|, so diagonals are not favoured by their length), judged on the centres of
+//   at most 32 of its primitives, evenly spaced (a constant cost per node).
 // - Split value: the median of the primitives' centroid projections on it (nth_element, so the
 //   halves are balanced even when projections tie).
 // - Leaves: `leaf_size` primitives, 1 by default as in the paper.
@@ -44,40 +45,74 @@ class Bvh {
   Bvh(std::vector<Tri> tris, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1 = {},
       int leaf_size = 1)
       : tris_(std::move(tris)), leaf_size_(std::max(1, leaf_size)) {
-    prims_.resize(tris_.size());
-    for (std::size_t i = 0; i < prims_.size(); ++i) prims_[i] = int(i);
-    // Each primitive's box once; a node's box is the exact merge of its primitives' boxes.
-    std::vector<Kdop<K>> boxes(tris_.size());
-    const double w = widening(x0, x1);
-    for (std::size_t i = 0; i < tris_.size(); ++i)
-      range_box(boxes[prims_[i]], int(i), int(i) + 1, x0, x1, w);
-    if (!tris_.empty()) build(0, int(tris_.size()), boxes, x0, x1);
+    const int n = int(tris_.size());
+    // Each primitive's centre (the sum of its corners: the centroid up to a factor) once, kept
+    // beside its index and its key for the split, so that a node's work reads memory in order.
+    std::vector<Item> items(n);
+    for (int i = 0; i < n; ++i) {
+      Vec3 c{};
+      for (const int v : tris_[i]) c += x1.empty() ? x0[v] : x0[v] + x1[v];
+      items[i] = {0.0, i, c};
+    }
+    prims_.resize(n);
+    nodes_.reserve(2 * std::size_t(n));
+    if (n > 0) build(0, n, items, x0, x1);
   }
 
   // New positions, same topology: leaves recomputed, internal nodes merged bottom up (children
   // always follow their parent in nodes()).
   void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1 = {}) {
     const double w = widening(x0, x1);
-    for (int i = int(nodes_.size()) - 1; i >= 0; --i) {
-      Node& n = nodes_[i];
-      if (n.leaf()) {
-        const Tri& t = tris_[prims_[n.first]];
-        if (n.count == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: the cloth's leaves
-          set_point(n.box, x0[t[0]], w);
-          if (!x1.empty()) add_point(n.box, x1[t[0]], w);
-        } else {
-          range_box(n.box, n.first, n.first + n.count, x0, x1, w);
+    for (int i = int(nodes_.size()) - 1; i >= 0; --i) refit_node(i, x0, x1, w);
+  }
+
+  // One widening for every leaf of a refit: kdop.hpp's bound for the largest coordinate of all
+  // the points covers each leaf's own (a larger mag only widens more). Four running maxima, so
+  // that the pass is not one long chain of dependent comparisons.
+  static double widening(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+    double m[4] = {0, 0, 0, 0};
+    for (const std::vector<Vec3>* x : {&x0, &x1}) {
+      const double* p = x->empty() ? nullptr : &(*x)[0].x;
+      const std::size_t n = 3 * x->size();
+      std::size_t i = 0;
+      for (; i + 4 <= n; i += 4)
+        for (int k = 0; k < 4; ++k) {
+          const double a = std::fabs(p[i + k]);
+          m[k] = a > m[k] ? a : m[k];
         }
-        continue;
-      }
-      // In place: a Kdop returned by value costs more in copies than the merge itself.
-      const Kdop<K>& l = nodes_[n.left].box;
-      const Kdop<K>& r = nodes_[n.right].box;
-      for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
-        n.box.lo[s] = l.lo[s] < r.lo[s] ? l.lo[s] : r.lo[s];
-        n.box.hi[s] = l.hi[s] > r.hi[s] ? l.hi[s] : r.hi[s];
-      }
+      for (; i < n; ++i) m[0] = std::max(m[0], std::fabs(p[i]));
     }
+    return widening_of(std::max(std::max(m[0], m[1]), std::max(m[2], m[3])));
+  }
+
+  // One node of a refit: a leaf from the positions (widened by w, from widening()), an
+  // internal node from its children (which must be refit already). Nodes are in preorder, so
+  // node i's subtree is the index range [i, subtree_end(i)): refitting such a range from its end
+  // is a refit of that subtree, and disjoint subtrees can be refit at the same time.
+  void refit_node(int i, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, double w) {
+    Node& n = nodes_[i];
+    if (n.leaf()) {
+      const Tri& t = tris_[prims_[n.first]];
+      if (n.count == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: the cloth's leaves
+        set_point(n.box, x0[t[0]], w);
+        if (!x1.empty()) add_point(n.box, x1[t[0]], w);
+      } else {
+        range_box(n.box, n.first, n.first + n.count, x0, x1);
+      }
+      return;
+    }
+    // In place, in one pass: a Kdop returned by value, or copied then merged, costs more in
+    // stores than the merge itself.
+    const Kdop<K>& l = nodes_[n.left].box;
+    const Kdop<K>& r = nodes_[n.right].box;
+    for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
+      n.box.lo[s] = l.lo[s] < r.lo[s] ? l.lo[s] : r.lo[s];
+      n.box.hi[s] = l.hi[s] > r.hi[s] ? l.hi[s] : r.hi[s];
+    }
+  }
+  int subtree_end(int i) const {
+    while (!nodes_[i].leaf()) i = nodes_[i].right;
+    return i + 1;
   }
 
   bool empty() const { return nodes_.empty(); }
@@ -86,74 +121,88 @@ class Bvh {
   const std::vector<Tri>& tris() const { return tris_; }
 
  private:
-  // One widening for every box of a build or refit: kdop.hpp's bound for the largest
-  // coordinate of all the points covers each box's own (a larger mag only widens more), and
-  // costs one pass instead of one per box.
-  static double widening(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
-    double mag = 0;
-    for (const Vec3& p : x0) mag = std::max(mag, max_abs(p));
-    for (const Vec3& p : x1) mag = std::max(mag, max_abs(p));
-    return widening_of(mag);
-  }
-
-  // The box of primitives prims_[first, last): their distinct vertices at x0 (and x1), the
-  // diagonal slabs pushed out by w. Written in place into b (see add_point).
+  // The box of primitives prims_[first, last): their distinct vertices at x0 (and x1).
   void range_box(Kdop<K>& b, int first, int last, const std::vector<Vec3>& x0,
-                 const std::vector<Vec3>& x1, double w) const {
-    bool started = false;
-    const auto add = [&](const Vec3& p) {
-      if (started) {
-        add_point(b, p, w);
-      } else {
-        set_point(b, p, w);
-        started = true;
-      }
-    };
+                 const std::vector<Vec3>& x1) const {
+    KdopBuilder<K> builder;
     for (int i = first; i < last; ++i) {
       const Tri& t = tris_[prims_[i]];
       for (int c = 0; c < 3; ++c) {
         if ((c > 0 && t[c] == t[c - 1]) || (c == 2 && t[2] == t[0])) continue;  // points, edges
-        add(x0[t[c]]);
-        if (!x1.empty()) add(x1[t[c]]);
+        builder.add(x0[t[c]]);
+        if (!x1.empty()) builder.add(x1[t[c]]);
       }
     }
+    b = builder.finish();
   }
 
-  int build(int first, int last, const std::vector<Kdop<K>>& boxes, const std::vector<Vec3>& x0,
+  struct Item {
+    double key;
+    int prim;
+    Vec3 centre;
+  };
+
+  // The node over items[first, last) and, below it, its subtree; returns its index. A leaf's
+  // box comes from its primitives' corners, an internal node's from its children's boxes
+  // merged: one merge per node.
+  int build(int first, int last, std::vector<Item>& items, const std::vector<Vec3>& x0,
             const std::vector<Vec3>& x1) {
     const int id = int(nodes_.size());
     nodes_.emplace_back();
-    Node node;
-    node.box = boxes[prims_[first]];
-    for (int i = first + 1; i < last; ++i) node.box = merge(node.box, boxes[prims_[i]]);
     if (last - first <= leaf_size_) {
+      for (int i = first; i < last; ++i) prims_[i] = items[i].prim;
+      Node& node = nodes_[id];
+      range_box(node.box, first, last, x0, x1);
       node.first = first;
       node.count = last - first;
-      nodes_[id] = node;
       return id;
     }
+    const Direction& d = Kdop<K>::direction(longest_slab(sample_box(first, last, items)));
+    // Each centre's projection once (not once per comparison), then the median.
+    for (int i = first; i < last; ++i) items[i].key = project(d, items[i].centre);
+    const int mid = first + (last - first) / 2;
+    std::nth_element(items.begin() + first, items.begin() + mid, items.begin() + last,
+                     [](const Item& a, const Item& b) { return a.key < b.key; });
+    const int left = build(first, mid, items, x0, x1);
+    const int right = build(mid, last, items, x0, x1);
+    Node& node = nodes_[id];
+    node.left = left;
+    node.right = right;
+    node.box = nodes_[left].box;
+    merge_into(node.box, nodes_[right].box);
+    return id;
+  }
+
+  // The k-DOP of the centres of at most 32 of the range's primitives, evenly spaced: enough to
+  // choose the split direction (the split itself is the exact median), at a constant cost per
+  // node. Only its shape is used, so it needs no widening.
+  static Kdop<K> sample_box(int first, int last, const std::vector<Item>& items) {
+    const int n = last - first, m = std::min(n, 32);
+    const double step = double(n - 1) / (m - 1);  // no integer division per sample
+    Kdop<K> b = Kdop<K>::empty();
+    for (int i = 0; i < m; ++i) add_point(b, items[first + int(i * step)].centre, 0.0);
+    return b;
+  }
+
+  // The slab along which b is longest, in world units (width / |d|).
+  static int longest_slab(const Kdop<K>& b) {
+    // 1/|d| for the axes, the corner diagonals and the edge diagonals of kDirections.
+    static const std::array<double, 3> inv_len = {1.0, 1 / std::sqrt(3.0), 1 / std::sqrt(2.0)};
     int axis = 0;
     double longest = -1;
     for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
-      const Direction& d = Kdop<K>::direction(s);
-      const double len =
-          (node.box.hi[s] - node.box.lo[s]) / std::sqrt(double(d.x * d.x + d.y * d.y + d.z * d.z));
+      const int i = Kdop<K>::kDirIndex[s];
+      const double len = (b.hi[s] - b.lo[s]) * inv_len[i < 3 ? 0 : i < 7 ? 1 : 2];
       if (len > longest) axis = s, longest = len;
     }
-    const Direction& d = Kdop<K>::direction(axis);
-    const auto centre = [&](int prim) {  // sum of the corners: the centroid up to a factor
-      double c = 0;
-      for (const int v : tris_[prim])
-        c += project(d, x0[v]) + (x1.empty() ? 0.0 : project(d, x1[v]));
-      return c;
-    };
-    const int mid = first + (last - first) / 2;
-    std::nth_element(prims_.begin() + first, prims_.begin() + mid, prims_.begin() + last,
-                     [&](int a, int b) { return centre(a) < centre(b); });
-    node.left = build(first, mid, boxes, x0, x1);
-    node.right = build(mid, last, boxes, x0, x1);
-    nodes_[id] = node;
-    return id;
+    return axis;
+  }
+
+  static void merge_into(Kdop<K>& m, const Kdop<K>& b) {
+    for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
+      m.lo[s] = b.lo[s] < m.lo[s] ? b.lo[s] : m.lo[s];
+      m.hi[s] = b.hi[s] > m.hi[s] ? b.hi[s] : m.hi[s];
+    }
   }
 
   std::vector<Tri> tris_;
@@ -173,6 +222,23 @@ double size(const Kdop<K>& b) {  // slabs 0-2 are the axes for every k
   return (b.hi[0] - b.lo[0]) + (b.hi[1] - b.lo[1]) + (b.hi[2] - b.lo[2]);
 }
 
+// The children to descend into from the overlapping node pair (i, j): the larger box's (or the
+// one that is not a leaf), as (first, second); none for two leaves.
+template <int K>
+bool split_pair(const Bvh<K>& a, const Bvh<K>& b, int i, int j, std::pair<int, int>& first,
+                std::pair<int, int>& second) {
+  const auto& na = a.nodes()[i];
+  const auto& nb = b.nodes()[j];
+  if (!na.leaf() && (nb.leaf() || size(na.box) >= size(nb.box))) {
+    first = {na.left, j}, second = {na.right, j};
+  } else if (!nb.leaf()) {
+    first = {i, nb.left}, second = {i, nb.right};
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // Every pair of primitives under the node pairs on `stack`, one from each side, whose leaf
 // boxes overlap: the loop of traverse() and traverse_self().
 template <int K, class Overlaps>
@@ -184,18 +250,44 @@ void descend_pairs(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, 
     const auto& na = a.nodes()[i];
     const auto& nb = b.nodes()[j];
     if (!overlaps(na.box, nb.box)) continue;
-    if (!na.leaf() && (nb.leaf() || size(na.box) >= size(nb.box))) {
-      stack.push_back({na.right, j});
-      stack.push_back({na.left, j});
-    } else if (!nb.leaf()) {
-      stack.push_back({i, nb.right});
-      stack.push_back({i, nb.left});
+    std::pair<int, int> first, second;
+    if (split_pair(a, b, i, j, first, second)) {
+      stack.push_back(second);
+      stack.push_back(first);
     } else {
       for (int p = na.first; p < na.first + na.count; ++p)
         for (int q = nb.first; q < nb.first + nb.count; ++q)
           out.push_back({a.prims()[p], b.prims()[q]});
     }
   }
+}
+
+// Node pairs whose descents together make traverse()'s: the root pair split by the same rule,
+// level by level, until there are at least `want` (or nothing left to split). Each can then be
+// descended on its own (descend_pairs), and the outputs joined in this order.
+template <int K, class Overlaps>
+std::vector<std::pair<int, int>> frontier(const Bvh<K>& a, const Bvh<K>& b, std::size_t want,
+                                          const Overlaps& overlaps) {
+  std::vector<std::pair<int, int>> level;
+  if (a.empty() || b.empty()) return level;
+  level.push_back({0, 0});
+  for (bool split = true; split && level.size() < want;) {
+    split = false;
+    std::vector<std::pair<int, int>> next;
+    for (const auto& [i, j] : level) {
+      if (!overlaps(a.nodes()[i].box, b.nodes()[j].box)) continue;
+      std::pair<int, int> first, second;
+      if (split_pair(a, b, i, j, first, second)) {
+        next.push_back(first);
+        next.push_back(second);
+        split = true;
+      } else {
+        next.push_back({i, j});
+      }
+    }
+    level.swap(next);
+  }
+  return level;
 }
 
 template <int K>

@@ -2,6 +2,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <tbb/global_control.h>
+
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -48,6 +50,7 @@ struct SimulateOptions {
   std::string thickness;  // "": the scene's
   std::string self;       // "on", "off" or "": the scene's
   bool json = false, no_check = false, quiet = false;
+  int threads = 0;  // 0: every core
   SceneRunOptions run;
 };
 
@@ -152,8 +155,11 @@ void print_counts(std::ostream& out, const SimulateOptions& o, const cloth::Scen
         r.audit.inside, r.audit.crossing, r.audit_last_inside, r.audit_last_crossing);
   }
   if (scene.self_collision)
-    out << fmt::format("self-collision {} CCD queries, {} contacts, {} frames stopped whole\n",
-                       r.self_queries, r.self_hits, r.self_stops);
+    out << fmt::format(
+        "self-collision {} CCD queries, {} contacts; frames resolved by particle stops {}, "
+        "by impact zones {} ({} particles), stopped whole {}\n",
+        r.self_queries, r.self_hits, r.self_round_frames - r.self_zone_frames, r.self_zone_frames,
+        r.self_zone_particles, r.self_stops);
   if (r.self_audited)
     out << fmt::format(
         "self (exact)   {} cloth edges through the cloth's own triangles, summed "
@@ -175,6 +181,10 @@ void check_outputs(const SimulateOptions& o) {
 
 int run_simulate(SimulateOptions& o, const Io& io) {
   check_outputs(o);
+  // The step's loops use at most this many threads; the results are the same for any number.
+  std::optional<tbb::global_control> threads;
+  if (o.threads > 0)
+    threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
   o.run.check = !o.no_check;
   const cloth::Scene scene = read_scene_as_asked(o);
   Outputs outputs(o, scene);
@@ -257,6 +267,11 @@ void add_output_options(CLI::App& cmd, SimulateOptions& o) {
                  "write every narrow-phase query of the run to FILE in the\n"
                  "native vf format, for `fdhcert classify FILE`")
       ->type_name("FILE");
+  cmd.add_option("--threads", o.threads,
+                 "threads for the step (default: every core); the results\n"
+                 "are the same for any number")
+      ->type_name("N")
+      ->check(CLI::Range(1, 1024));
   cmd.add_flag("--json", o.json, "print one JSON object instead of the text");
   cmd.add_flag("--no-check", o.no_check, "skip the accuracy count and the audit");
   add_quiet_flag(cmd, o.quiet);

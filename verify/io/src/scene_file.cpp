@@ -187,6 +187,10 @@ const std::map<std::string, Reader>& readers() {
        [](const Line& l, Scene& s) {
          l.expect(1, 1), s.response.friction = l.ranged(0, "friction", kFriction);
        }},
+      {"audit_every",
+       [](const Line& l, Scene& s) {
+         l.expect(1, 1), s.audit_every = int(l.integer(0, 1, kMaxFrames));
+       }},
       {"self_collision",
        [](const Line& l, Scene& s) {
          l.expect(1, 1);

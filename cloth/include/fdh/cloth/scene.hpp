@@ -38,6 +38,10 @@ struct Scene {
   double thickness = -1;
   // The cloth against itself (fdh/cloth/self_collision.hpp), after the obstacle response.
   bool self_collision = false;
+  // A checked run (verify's run_scene) checks every audit_every-th frame and the last: the
+  // narrow phase against the exact test and the exact audit. A large cloth's checks cost far
+  // more than its frames.
+  int audit_every = 1;
 
   double skin() const;  // the thickness in use, m
 };

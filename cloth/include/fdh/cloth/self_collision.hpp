@@ -1,16 +1,27 @@
 // The cloth against itself (optional, scene keyword `self_collision on`): after the obstacle
 // response, every moving vertex–triangle and edge–edge pair of the cloth's own primitives that
-// share no particle is tested over the step with `robust` CCD (fdh/ccd/robust.hpp), the
-// candidates coming from FDH trees over the swept particles, triangles and edges.
+// share no particle is tested over the step with `robust` CCD (fdh/ccd/robust.hpp).
 //
-// Response: the particles of every pair that touches go back to where the step started, at
-// rest (an inelastic stop). The start of a step is free of self-contact, so this can only
-// remove contacts, but it can create new ones with neighbours that kept moving: the test runs
-// again, up to four rounds, and if contacts remain the whole cloth goes back to the start of
-// the step. Exact CCD (no false negatives) and an intersection-free start make the end of every
-// step intersection-free.
+// Candidates: the grid's patch tree (fdh/cloth/patch_tree.hpp), top down. A flat patch cannot
+// touch itself over the step and is skipped whole (normal cones with the contour test, Volino &
+// Magnenat-Thalmann 1994); otherwise each cell is tested on its own, and each pair of sibling
+// patches tree against tree with swept FDHs (k-DOPs of the run's k).
+//
+// Response, in three stages, each used only when the one before did not resolve the step:
+// 1. rounds: the particles of every pair that touches go back to where the step started, at
+//    rest; the test runs again (new contacts can appear with neighbours that kept moving), up
+//    to kRounds rounds;
+// 2. impact zones (Provot 1997; Bridson, Fedkiw & Anderson 2002): the particles of touching
+//    pairs are merged into zones (sets joined by contacts, growing over the iterations), and
+//    each zone moves as one rigid body for the step: it stays where the step started and every
+//    particle of it takes the zone's mean velocity (momentum kept; a zone at rest in a
+//    contact-free start has no contact inside it), up to kZoneRounds iterations;
+// 3. last resort: the whole cloth stays where the step started.
+// Exact CCD (no false negatives) and an intersection-free start make the end of every step
+// intersection-free, whatever stage ends it.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -21,28 +32,45 @@ namespace fdh::cloth {
 
 class SelfCollision {
  public:
-  // k: the FDH's k. exact: robust's fallback (fdh::exact::ccd_hit in this project).
-  SelfCollision(const Cloth& cloth, int k, CcdTest exact);
+  static constexpr int kRounds = 4;
+  static constexpr int kZoneRounds = 32;
+
+  // k: the FDH's k. exact: robust's fallback (fdh::exact::ccd_hit in this project). rounds:
+  // stage 1's (fewer only to test stage 2).
+  SelfCollision(const Cloth& cloth, int k, CcdTest exact, int rounds = kRounds);
   ~SelfCollision();
 
   struct Result {
-    long queries = 0;  // CCD queries run
-    long hits = 0;     // of them, contacts
-    bool stopped_all = false;
+    long queries = 0;          // CCD queries run
+    long hits = 0;             // of them, contacts
+    int rounds = 0;            // rounds of stage 1 that stopped particles
+    bool zones = false;        // stage 2 ran
+    long zone_particles = 0;   // particles in impact zones at the end of stage 2
+    bool stopped_all = false;  // stage 3 ran
   };
 
   // Makes the step from x0 to x free of self-contact, changing x and v where needed.
   Result resolve(const Cloth& cloth, const std::vector<Vec3>& x0, std::vector<Vec3>& x,
                  std::vector<Vec3>& v);
 
+  // One test of a candidate: its kind and its four particles (vf: p a b c; ee: a0 a1 b0 b1).
+  struct Candidate {
+    QueryKind kind;
+    std::array<int, 4> ids;
+  };
+
  private:
   struct Trees;
   template <int K>
   struct TreesK;
+  // The contacts of the step x0 -> x (queries counted into r).
+  void contacts(const std::vector<Vec3>& x0, const std::vector<Vec3>& x, Result& r);
+
   std::unique_ptr<Trees> trees_;
   CcdTest exact_;
-  std::vector<std::pair<int, int>> pairs_;
-  std::vector<char> stop_;
+  int rounds_;
+  std::vector<Candidate> candidates_, touching_;
+  std::vector<char> hit_;
 };
 
 }  // namespace fdh::cloth

@@ -32,10 +32,15 @@ struct SceneRun {
   cloth::FrameTimes time;   // summed over the frames, s
   long candidates = 0, collisions = 0, fp = 0, fn = 0;
   long broken = 0;           // narrow-phase verdicts that break the method's promise (checker.hpp)
-  exact::AuditCounts audit;  // summed over the frames
+  exact::AuditCounts audit;  // summed over the checked frames
+  long audited_frames = 0;   // checked: every frame, or the scene's audit_every-th and the last
   long audit_last_inside = 0, audit_last_crossing = 0;
   bool self_audited = false;
-  long self_queries = 0, self_hits = 0, self_stops = 0;  // the self-collision pass
+  // The self-collision pass: its queries and contacts, and how often each stage of its response
+  // ended a frame (fdh/cloth/self_collision.hpp): frames whose contacts took particle stops,
+  // frames that needed impact zones (and their particles, summed), frames stopped whole.
+  long self_queries = 0, self_hits = 0, self_round_frames = 0, self_zone_frames = 0,
+       self_zone_particles = 0, self_stops = 0;
   double energy_start = 0, energy_end = 0;
   std::vector<Vec3> final_x;  // the cloth's particles after the last frame
 
@@ -43,5 +48,10 @@ struct SceneRun {
 };
 
 SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt);
+
+// The frames a bounded run of `scene` takes: its own, at most `frames`, and at most
+// `particle_frames` / particles, so that a large cloth (a 200x200 one costs 64 times a 25x25
+// one per frame) does not swamp a quick check.
+int bounded_frames(const cloth::Scene& scene, long frames, long particle_frames);
 
 }  // namespace fdh::verify

@@ -1,0 +1,19 @@
+// The benchmarks whose list is known only at run time (the registry's methods and families, the
+// benchmark sample's sets), registered by main() before the run.
+#pragma once
+
+namespace fdh::bench {
+
+// narrow/<method>/<family>: ns per query, over 256 cases of each generator family.
+void register_narrow_phase();
+
+// ccd_sample/<method>/<set>: mean, median and maximum time per query of each set of
+// ../shared/ccd-sample (none when it is absent).
+void register_ccd_sample();
+
+// frame/grid:<n>/self:<0|1>: the table scene's first frames, per grid, without and with the
+// self-collision pass (fewer frames at large grids: a benchmark's iteration count is fixed
+// at registration).
+void register_frames();
+
+}  // namespace fdh::bench
