@@ -258,20 +258,18 @@ void add_output_options(CLI::App& cmd, SimulateOptions& o) {
                  "render the run to FILE as an animated PNG (APNG, 400x300,\n"
                  "16 frames per second, looping; browsers play it)")
       ->type_name("FILE");
-  cmd.add_option("--movie-frames", o.movie_frames,
-                 "about how many frames the movie shows, evenly spread\n"
-                 "over the run (default 48)")
-      ->type_name("N")
-      ->check(CLI::Range(1, 10000));
+  add_number_option(cmd, "--movie-frames", o.movie_frames,
+                    "about how many frames the movie shows, evenly spread\n"
+                    "over the run (default 48)",
+                    "N", 1, 10000);
   cmd.add_option("--record", o.record,
                  "write every narrow-phase query of the run to FILE in the\n"
                  "native vf format, for `fdhcert classify FILE`")
       ->type_name("FILE");
-  cmd.add_option("--threads", o.threads,
-                 "threads for the step (default: every core); the results\n"
-                 "are the same for any number")
-      ->type_name("N")
-      ->check(CLI::Range(1, 1024));
+  add_number_option(cmd, "--threads", o.threads,
+                    "threads for the step (default: every core); the results\n"
+                    "are the same for any number",
+                    "N", 1, 1024);
   cmd.add_flag("--json", o.json, "print one JSON object instead of the text");
   cmd.add_flag("--no-check", o.no_check, "skip the accuracy count and the audit");
   add_quiet_flag(cmd, o.quiet);
