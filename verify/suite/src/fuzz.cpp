@@ -108,21 +108,27 @@ class Workspace {
     try {
       lock(lock_wait_seconds);
       make_folder(tmp_);
-      // Emptied below: it must be the folder itself, never a link to someone else's.
+      // Emptied by clear_stale_temporaries: it must be the folder itself, never a link to
+      // someone else's.
       std::error_code ec;
       if (!fs::is_directory(fs::symlink_status(tmp_, ec)))
         throw std::runtime_error(tmp_.string() + ": is not a folder (fuzz's temporaries go there)");
-      // Under the lock no live run owns a temporary: whatever is in tmp/ is a killed run's.
-      std::vector<fs::path> stale;
-      for (fs::directory_iterator it(tmp_, ec), end; !ec && it != end; it.increment(ec))
-        stale.push_back(it->path());
-      for (const fs::path& p : stale)
-        if (!ec) fs::remove_all(p, ec);
-      if (ec) throw std::runtime_error(tmp_.string() + ": cannot clean up: " + ec.message());
     } catch (...) {
       if (lock_fd_ >= 0) ::close(lock_fd_);
       throw;
     }
+  }
+
+  // Under the lock no live run owns a temporary: whatever is in tmp/ is a killed run's. Called
+  // once the run knows it will go on, so that a run that refuses changes nothing.
+  void clear_stale_temporaries() const {
+    std::error_code ec;
+    std::vector<fs::path> stale;
+    for (fs::directory_iterator it(tmp_, ec), end; !ec && it != end; it.increment(ec))
+      stale.push_back(it->path());
+    for (const fs::path& p : stale)
+      if (!ec) fs::remove_all(p, ec);
+    if (ec) throw std::runtime_error(tmp_.string() + ": cannot clean up: " + ec.message());
   }
   ~Workspace() {
     if (lock_fd_ >= 0) ::close(lock_fd_);
@@ -361,17 +367,21 @@ struct Run {
   fs::path run_dir = space.meta() / params.folder_name();
   std::vector<Range> todo;  // the cases no marker covered when the run started
 
+  // Every refusal comes before anything in OUT changes.
   explicit Run(const FuzzOptions& o) : opt(o), space(out, o.lock_wait_seconds) {
     refuse_other_unfinished_runs(space.meta(), out, params);
-    make_folder(case_dir);
-    make_folder(run_dir);
     const fs::path manifest = run_dir / "manifest";
-    if (fs::exists(manifest)) {
+    const bool resumed = fs::exists(manifest);
+    if (resumed) {
       const std::optional<Params> p = read_manifest(manifest);
       if (!p || !(*p == params))
         throw FuzzRefused(manifest.string() + " does not record this run (" + params.options() +
                           "): delete " + run_dir.string() + " to start it afresh");
-    } else {
+    }
+    space.clear_stale_temporaries();
+    make_folder(case_dir);
+    make_folder(run_dir);
+    if (!resumed) {
       space.write_whole(manifest, params.manifest());  // before any case
       sync_folder(run_dir);
     }

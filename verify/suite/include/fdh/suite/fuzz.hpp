@@ -13,8 +13,9 @@
 //   lock            held (flock) for the whole run by the run and its workers: a second run on
 //                   the same OUT waits briefly for a killed run's workers to die, then refuses.
 //   tmp/            every temporary file of every run, and nothing else. A case file or marker
-//                   is written there, synced, then renamed into place; a run starts by emptying
-//                   tmp/ (under the lock, so no live run owns anything in it). A user's files,
+//                   is written there, synced, then renamed into place; a run that goes on (one
+//                   that refuses changes nothing) starts by emptying tmp/ (under the lock, so no
+//                   live run owns anything in it). A user's files,
 //                   whatever their names, are never removed.
 //   RUN/manifest    RUN is method.family.seedS.countN.shardIofS (prefixed "metamorphic." in
 //                   that mode); the manifest records those parameters and the mode, and is
