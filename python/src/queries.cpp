@@ -82,27 +82,25 @@ void add_queries(py::module_& m) {
         return names;
       },
       "The query methods of the registry, the exact twin first.");
-  m.def(
-      "point_triangle",
-      [](const Points& a, const std::string& method) {
-        return decide(a, method, verify::Decision::PointTriangle);
-      },
-      py::arg("queries"), py::arg("method") = "robust",
-      "Static vertex-face: does B→B' touch the still triangle DEF? N×8×3 → N booleans.");
-  m.def(
-      "vertex_face_ccd",
-      [](const Points& a, const std::string& method) {
-        return decide(a, method, verify::Decision::VertexFaceCcd);
-      },
-      py::arg("queries"), py::arg("method") = "robust",
-      "Moving point against moving triangle over the step. N×8×3 → N booleans.");
-  m.def(
-      "edge_edge_ccd",
-      [](const Points& a, const std::string& method) {
-        return decide(a, method, verify::Decision::EdgeEdgeCcd);
-      },
-      py::arg("queries"), py::arg("method") = "robust",
-      "Two moving edges over the step. N×8×3 → N booleans.");
+  // One batched function per query decision.
+  const struct {
+    const char* name;
+    verify::Decision decision;
+    const char* doc;
+  } decisions[] = {
+      {"point_triangle", verify::Decision::PointTriangle,
+       "Static vertex-face: does B→B' touch the still triangle DEF? N×8×3 → N booleans."},
+      {"vertex_face_ccd", verify::Decision::VertexFaceCcd,
+       "Moving point against moving triangle over the step. N×8×3 → N booleans."},
+      {"edge_edge_ccd", verify::Decision::EdgeEdgeCcd,
+       "Two moving edges over the step. N×8×3 → N booleans."}};
+  for (const auto& d : decisions)
+    m.def(
+        d.name,
+        [decision = d.decision](const Points& a, const std::string& method) {
+          return decide(a, method, decision);
+        },
+        py::arg("queries"), py::arg("method") = "robust", d.doc);
   m.def("contact_time", &contact_time, py::arg("query"), py::arg("kind") = "vertex-face",
         "The exact earliest contact of one moving query (8×3): hit, the time as a Fraction "
         "when it is rational, and an isolating interval of Fractions.");
