@@ -40,11 +40,8 @@ struct Simulation::BroadPhaseK : Simulation::BroadPhase {
   // A large tree by subtrees side by side; a small one on this thread (waking the others would
   // cost more than the refit).
   void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) override {
+    if (cloth.nodes().size() < kParallelNodes) return cloth.refit(x0, x1);
     const double w = Bvh<K>::widening(x0, x1);
-    if (cloth.nodes().size() < kParallelNodes) {
-      for (int i = int(cloth.nodes().size()) - 1; i >= 0; --i) cloth.refit_node(i, x0, x1, w);
-      return;
-    }
     for_chunks(int(roots.size()), 1, [&](int begin, int end) {
       for (int r = begin; r < end; ++r)
         for (int i = cloth.subtree_end(roots[r]) - 1; i >= roots[r]; --i)
@@ -54,13 +51,8 @@ struct Simulation::BroadPhaseK : Simulation::BroadPhase {
   }
   void pairs(std::vector<std::pair<int, int>>& out) override {
     // §3.1: the y slab first.
+    if (cloth.nodes().size() < kParallelNodes) return traverse(cloth, obstacles, out, 1);
     const auto overlaps = [](const Kdop<K>& a, const Kdop<K>& b) { return overlap(a, b, 1); };
-    if (cloth.nodes().size() < kParallelNodes) {
-      std::vector<std::pair<int, int>> stack = {{0, 0}};
-      if (!cloth.empty() && !obstacles.empty())
-        descend_pairs(cloth, obstacles, stack, out, overlaps);
-      return;
-    }
     const auto work = frontier(cloth, obstacles, 64, overlaps);
     gather_chunks(int(work.size()), parts, out, [&](int c, std::vector<std::pair<int, int>>& part) {
       std::vector<std::pair<int, int>> stack = {work[c]};

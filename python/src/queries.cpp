@@ -75,12 +75,7 @@ py::dict contact_time(const Points& a, const std::string& kind) {
 
 void add_queries(py::module_& m) {
   m.def(
-      "methods",
-      [] {
-        std::vector<std::string> names;
-        for (const verify::Method& x : verify::all_methods()) names.push_back(x.name);
-        return names;
-      },
+      "methods", [] { return verify::method_names(); },
       "The query methods of the registry, the exact twin first.");
   // One batched function per query decision.
   const struct {

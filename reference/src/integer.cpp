@@ -59,7 +59,7 @@ Int& Int::operator=(const Int& o) {
   if (o.big_)
     mpz_set(make_big(), &o.z_);  // reuses this one's limbs
   else
-    *this = of(o.small_);
+    set(o.small_);  // keeps this one's GMP storage, if any
   return *this;
 }
 

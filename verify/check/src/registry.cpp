@@ -201,11 +201,16 @@ std::string joined(const Names& names) {
 
 }  // namespace
 
+std::vector<std::string> method_names() {
+  std::vector<std::string> names;
+  for (const Method& m : all_methods()) names.push_back(m.name);
+  return names;
+}
+
 std::vector<Method> select_methods(const std::vector<std::string>& names, int gate_k) {
   const std::vector<Method> all = all_methods(gate_k);
   std::vector<Method> out;
-  std::vector<std::string> known;
-  for (const Method& m : all) known.push_back(m.name);
+  const std::vector<std::string> known = method_names();
   for (const std::string& n : names) {
     const auto it =
         std::find_if(all.begin(), all.end(), [&](const Method& m) { return m.name == n; });

@@ -221,11 +221,7 @@ Command add_classify(CLI::App& app) {
                   "time over BASE's: the maximum over the queries (and\n"
                   "where), the median and how many exceed --ratio-limit")
       ->type_name("BASE")
-      ->check(one_of([] {
-        std::vector<std::string> known;
-        for (const Method& m : all_methods()) known.push_back(m.name);
-        return known;
-      }()));
+      ->check(known_method());
   add_number_option(*cmd, "--ratio-limit", o->ratio_limit,
                     "the ratio --time-ratio counts the queries above (default 1.1)", "R", 1e-3,
                     1e3);

@@ -23,22 +23,20 @@ std::string quoted_input(std::string_view s, std::size_t shown) {
   return out;
 }
 
+CLI::Validator known_method() {
+  // The registry asked when the value is checked (parsing's end), not when the option is
+  // declared, so that a --plugin's methods count wherever it stands.
+  return CLI::Validator([](std::string& s) { return one_of(method_names())(s); }, "");
+}
+
 CLI::Option* add_methods_option(CLI::App& cmd, std::vector<std::string>& names,
                                 const std::string& help) {
-  // Checked when parsing ends, so that a --plugin's methods count wherever it stands.
-  const CLI::Validator known_method(
-      [](std::string& s) {
-        std::vector<std::string> known;
-        for (const Method& m : all_methods()) known.push_back(m.name);
-        return one_of(known)(s);
-      },
-      "");
   // One word per --methods (not the files after it), split at commas.
   return cmd.add_option("--methods", names, help)
       ->delimiter(',')
       ->allow_extra_args(false)
       ->type_name("LIST")
-      ->check(known_method);
+      ->check(known_method());
 }
 
 CLI::Validator one_of(std::vector<std::string> choices) {

@@ -61,6 +61,8 @@ CLI::Option* add_methods_option(CLI::App& cmd, std::vector<std::string>& names,
                                 const std::string& help);
 // A word from a fixed list (a method, a family, on|off); the error lists the choices.
 CLI::Validator one_of(std::vector<std::string> choices);
+// A method of the registry, plug-ins' included (checked when parsing ends).
+CLI::Validator known_method();
 // A k-DOP's k: 6, 14, 18 or 26 (and 0 for "none" when allow_none).
 CLI::Validator kdop_k_validator(bool allow_none);
 // A subcommand with its one-line description and its long footer.

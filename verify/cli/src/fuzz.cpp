@@ -135,9 +135,7 @@ Command add_fuzz(CLI::App& app) {
   auto o = std::make_shared<FuzzCommandOptions>();
   FuzzOptions& opt = o->run;
   CLI::App* cmd = add_command(app, "fuzz", kFuzzAbout, kFuzzFooter);
-  std::vector<std::string> methods;
-  for (const Method& m : all_methods()) methods.push_back(m.name);
-  cmd->add_option("--method", opt.method, wrapped(methods, 56))->required()->type_name("M");
+  cmd->add_option("--method", opt.method, wrapped(method_names(), 56))->required()->type_name("M");
   cmd->add_option("--family", opt.family, wrapped(every_family_name(), 56))
       ->required()
       ->type_name("F")

@@ -71,15 +71,15 @@ cloth::Scene read_scene_as_asked(const SimulateOptions& o) {
 // `fdhcert scenes` draws it).
 class Outputs {
  public:
-  Outputs(const SimulateOptions& o, const cloth::Scene& scene) : o_(o) {
-    for (const auto& ob : scene.obstacles) obstacles_.append(cloth::obstacle_mesh(ob));
+  // `frames`: the run's, for spreading the movie's frames over it.
+  Outputs(const SimulateOptions& o, const cloth::Scene& scene, int frames)
+      : o_(o), obstacles_(obstacles_of(scene)) {
     if (!o.obj_dir.empty()) {
       std::error_code ec;
       std::filesystem::create_directories(o.obj_dir, ec);
       if (ec) throw std::runtime_error(o.obj_dir + ": cannot create folder: " + ec.message());
     }
-    if (!o.movie.empty())
-      movie_.emplace(scene, o.run.frames < 0 ? scene.frames : o.run.frames, o.movie_frames);
+    if (!o.movie.empty()) movie_.emplace(scene, frames, o.movie_frames);
     if (!o.record.empty()) {
       recording_ = std::make_unique<AtomicFile>(o.record);
       recording_->stream() << "# fdhcert simulate " << o.scene_path
@@ -187,9 +187,9 @@ int run_simulate(SimulateOptions& o, const Io& io) {
     threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
   o.run.check = !o.no_check;
   const cloth::Scene scene = read_scene_as_asked(o);
-  Outputs outputs(o, scene);
+  const int frames = o.run.frames < 0 ? scene.frames : o.run.frames;
+  Outputs outputs(o, scene, frames);
   ProgressLine progress(io.err, progress_wanted(io, o.quiet));
-  const long frames = o.run.frames < 0 ? scene.frames : o.run.frames;
   o.run.on_frame = [&](const cloth::Simulation& sim, int frame) {
     outputs.frame(sim, frame);
     progress.update("simulate " + scene.name, frame, frames, "frames");

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <random>
 
+#include "fdh/dyadic.hpp"
 #include "fdh/kdop.hpp"
 
 namespace fdh::verify {
@@ -27,12 +28,6 @@ Vec3 random_vec(Rng& rng, double r) {
   return {uniform(rng, -r, r), uniform(rng, -r, r), uniform(rng, -r, r)};
 }
 
-// a + b is exact (two-sum: the rounding error of a double sum is itself a double).
-bool sum_is_exact(double a, double b) {
-  const double s = a + b, bb = s - a;
-  return (a - (s - bb)) + (b - bb) == 0;
-}
-
 // q with d·q = d·p exactly, q != p where an exact step is found: a step t with d·t = 0 on two
 // coordinates, a multiple of both coordinates' ulps, at most about r. Else p itself.
 Vec3 step_along_plane(Rng& rng, const Vec3& p, const Direction& d, double r) {
@@ -49,9 +44,10 @@ Vec3 step_along_plane(Rng& rng, const Vec3& p, const Direction& d, double r) {
     const double delta = std::ldexp(double(integer(rng, 1, 1 << 20)), e + integer(rng, 0, spare));
     // d_i t_i + d_j t_j = 0: t_i = delta d_i, t_j = -delta d_j (an axis d leaves j free).
     const double ti = dd[j] ? delta * dd[i] : 0, tj = dd[j] ? -delta * dd[j] : delta;
-    if (!sum_is_exact(pi, ti) || !sum_is_exact(pj, tj)) continue;
+    double qi, qj;
+    if (!add_exactly(pi, ti, qi) || !add_exactly(pj, tj, qj)) continue;
     double q[3] = {p.x, p.y, p.z};
-    q[i] += ti, q[j] += tj;
+    q[i] = qi, q[j] = qj;
     return {q[0], q[1], q[2]};
   }
   return p;

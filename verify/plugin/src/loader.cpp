@@ -130,7 +130,8 @@ BoxMethod box_method(const LoadedPtr& p, int k) {
   b.k = k;
   b.promise = Promise::Conservative;
   b.build = [p, k](const Vec3* pts, std::size_t n, double* lo, double* hi) {
-    std::vector<double> xyz;
+    std::vector<double> xyz;  // the ABI's plain rows of three doubles
+    xyz.reserve(3 * n);
     for (std::size_t i = 0; i < n; ++i) xyz.insert(xyz.end(), {pts[i].x, pts[i].y, pts[i].z});
     const CallSite site{p->name.c_str(), "kdop", nullptr, k, n};
     {

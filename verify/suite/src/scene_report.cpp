@@ -101,13 +101,13 @@ namespace {
 
 const std::array<double, 3> kCloth = {0.85, 0.25, 0.2}, kObstacles = {0.7, 0.7, 0.65};
 
+}  // namespace
+
 TriMesh obstacles_of(const cloth::Scene& scene) {
   TriMesh obstacles;
   for (const auto& o : scene.obstacles) obstacles.append(cloth::obstacle_mesh(o));
   return obstacles;
 }
-
-}  // namespace
 
 void write_scene_png(const std::string& path, const cloth::Scene& scene, const SceneRun& run) {
   const TriMesh obstacles = obstacles_of(scene);

@@ -6,8 +6,6 @@
 #include <cmath>
 #include <iterator>
 #include <random>
-#include <stdexcept>
-#include <utility>
 #include <vector>
 
 #include "fdh/check/checker.hpp"
@@ -169,28 +167,37 @@ Query coplanar_query(int p, Sampler& s) {
   return shuffled(q, s);
 }
 
-Query sample(const std::string& sweep, int p, Sampler& s) {
-  using Make = Query (*)(int, Sampler&);
-  static const std::vector<std::pair<std::string, Make>> makers = {
-      {"angle", angle_query},   {"edge", edge_query},         {"magnitude", magnitude_query},
-      {"aspect", aspect_query}, {"tangency", tangency_query}, {"coplanar", coplanar_query}};
-  for (const auto& [name, make_query] : makers)
-    if (name == sweep) return make_query(p, s);
-  throw std::logic_error("no stability sweep named " + sweep);
+// Every sweep with the construction of its queries.
+struct SweepDef {
+  StabilitySweep sweep;
+  Query (*make)(int p, Sampler& s);
+};
+
+const std::vector<SweepDef>& sweep_defs() {
+  static const std::vector<SweepDef> defs = {
+      {{"angle", 60, "motion-to-plane angle 2^{-p}: p"}, angle_query},
+      {{"edge", 64, "distance of the crossing from an edge 2^{-p}: p"}, edge_query},
+      {{"magnitude", 40, "distance from the origin 2^{p}: p"}, magnitude_query},
+      {{"aspect", 60, "triangle height / base 2^{-p}: p"}, aspect_query},
+      {{"tangency", 56, "moving: depth of a tangential dip 2^{-p}: p"}, tangency_query},
+      {{"coplanar", 60, "moving: distance of all four points from one plane 2^{-p}: p"},
+       coplanar_query}};
+  return defs;
 }
 
 // failure[m][p]: the share of the queries of each p that methods[m] applies to and gets
 // wrong; empty for a method that applies to none of the sweep's queries.
-std::vector<std::vector<double>> sweep_rates(const StabilitySweep& sw,
+std::vector<std::vector<double>> sweep_rates(const SweepDef& def,
                                              const std::vector<Method>& methods, long per_point,
                                              std::uint64_t seed) {
+  const StabilitySweep& sw = def.sweep;
   std::vector<std::vector<double>> failure(methods.size(), std::vector<double>(sw.last + 1));
   std::vector<long> applied_in_sweep(methods.size());
   for (int p = 0; p <= sw.last; ++p) {
     Sampler s(seed * 7919 + std::uint64_t(p) * 131 + std::uint64_t(sw.name[0]));
     std::vector<long> wrong(methods.size()), applied(methods.size());
     for (long i = 0; i < per_point; ++i) {
-      const Query q = sample(sw.name, p, s);
+      const Query q = def.make(p, s);
       const bool twin = twin_hit(q);
       for (std::size_t m = 0; m < methods.size(); ++m) {
         if (!methods[m].applies_to(q)) continue;
@@ -212,13 +219,11 @@ std::vector<std::vector<double>> sweep_rates(const StabilitySweep& sw,
 }  // namespace
 
 const std::vector<StabilitySweep>& stability_sweeps() {
-  static const std::vector<StabilitySweep> sweeps = {
-      {"angle", 60, "motion-to-plane angle 2^{-p}: p", false},
-      {"edge", 64, "distance of the crossing from an edge 2^{-p}: p", false},
-      {"magnitude", 40, "distance from the origin 2^{p}: p", false},
-      {"aspect", 60, "triangle height / base 2^{-p}: p", false},
-      {"tangency", 56, "moving: depth of a tangential dip 2^{-p}: p", true},
-      {"coplanar", 60, "moving: distance of all four points from one plane 2^{-p}: p", true}};
+  static const std::vector<StabilitySweep> sweeps = [] {
+    std::vector<StabilitySweep> out;
+    for (const SweepDef& d : sweep_defs()) out.push_back(d.sweep);
+    return out;
+  }();
   return sweeps;
 }
 
@@ -229,9 +234,10 @@ std::vector<StabilityRow> stability(long per_point, std::uint64_t seed, const Ti
       methods.end());
   std::vector<StabilityRow> rows;
   long done = 0;
-  for (const StabilitySweep& sw : stability_sweeps()) {
-    if (tick) tick(done++, long(stability_sweeps().size()));
-    const auto failure = sweep_rates(sw, methods, per_point, seed);
+  for (const SweepDef& def : sweep_defs()) {
+    const StabilitySweep& sw = def.sweep;
+    if (tick) tick(done++, long(sweep_defs().size()));
+    const auto failure = sweep_rates(def, methods, per_point, seed);
     for (std::size_t m = 0; m < methods.size(); ++m)
       for (std::size_t p = 0; p < failure[m].size(); ++p)
         rows.push_back({sw.name, int(p), methods[m].name, failure[m][p]});

@@ -105,6 +105,8 @@ std::vector<Method> select_methods(const std::vector<std::string>& names, int ga
 // The methods that can run as the cloth's narrow phase (point_triangle set), and one by name
 // (std::invalid_argument listing the known ones when unknown).
 std::vector<std::string> narrow_phase_names();
+// The names of all_methods(), in its order.
+std::vector<std::string> method_names();
 PointTriangleTest narrow_phase_named(const std::string& name);
 
 // The k-DOP methods for each certified k (6, 14, 18, 26), then the added ones.

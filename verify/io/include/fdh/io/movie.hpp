@@ -18,7 +18,6 @@ class Movie {
   Movie(int width, int height, int fps, double margin = 1.1);
 
   void add_frame(const std::vector<SceneMesh>& meshes);
-  int frames() const { return int(frames_.size()); }
 
   // The APNG bytes of every frame added. Throws std::logic_error without a frame.
   std::string bytes() const;

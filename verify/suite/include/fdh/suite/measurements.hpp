@@ -47,7 +47,6 @@ struct StabilitySweep {
   const char* name;
   int last;
   const char* axis;
-  bool moving;  // its queries are moving vertex-face ones (CCD); else static
 };
 const std::vector<StabilitySweep>& stability_sweeps();
 

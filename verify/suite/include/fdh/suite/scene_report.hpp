@@ -20,6 +20,9 @@ namespace fdh::verify {
 nlohmann::ordered_json scene_run_json(const cloth::Scene& scene, const SceneRunOptions& opt,
                                       const SceneRun& run);
 
+// The scene's obstacles as one triangle mesh.
+TriMesh obstacles_of(const cloth::Scene& scene);
+
 // The last frame of `run` rendered to a PNG: the cloth and the scene's obstacles.
 void write_scene_png(const std::string& path, const cloth::Scene& scene, const SceneRun& run);
 
