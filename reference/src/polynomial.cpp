@@ -323,14 +323,19 @@ int sign_at(const Poly& g, Root& r) {
   if (g.is_zero()) return 0;
   if (r.exact()) return sign_at(g, r.lo());
   if (const int s = sign_over(g, r)) return s;  // the common case: no gcd needed
+  // Narrow the interval to two adjacent doubles first: g is mostly small at the root but not
+  // zero, and then the narrower interval decides without the gcd.
+  if (!r.narrowed) {
+    jump(r);
+    r.narrowed = true;
+    if (r.exact()) return sign_at(g, r.lo());
+    if (const int s = sign_over(g, r)) return s;
+  }
   // g vanishes at the root iff gcd(s, g) does; that gcd divides s, so its only root in
   // [lo, hi] can be ours, and then it changes sign across the interval.
   const Poly h = gcd(*r.s, g);
   if (h.degree() >= 1 && sign_at(h, r.lo()) * sign_at(h, r.hi()) < 0) return 0;
   // g(root) != 0: shrink the interval until g's sign over it is certain.
-  jump(r);
-  if (r.exact()) return sign_at(g, r.lo());
-  if (const int s = sign_over(g, r)) return s;
   for (;;) {
     if (!bisect_once(r)) return sign_at(g, r.lo());
     if (const int s = sign_over(g, r)) return s;

@@ -65,7 +65,8 @@ struct Root {
   const Poly* s = nullptr;
   Int a, b;
   unsigned long k = 0;
-  static Root at(const Dyadic& t) { return Root{nullptr, t.a, t.a, t.k}; }
+  bool narrowed = false;  // by the one-step float bisection (polynomial.cpp), once is enough
+  static Root at(const Dyadic& t) { return Root{nullptr, t.a, t.a, t.k, false}; }
   bool exact() const { return a == b; }
   Dyadic lo() const { return {a, k}; }
   Dyadic hi() const { return {b, k}; }
