@@ -5,6 +5,7 @@
 #include <cmath>
 #include <deque>
 #include <stdexcept>
+#include <vector>
 
 #include "polynomial.hpp"
 
@@ -82,7 +83,7 @@ class Search {
  private:
   // Records the first of `roots` (increasing) where `ok` holds.
   template <class Ok>
-  bool first_where(std::vector<Root> roots, Ok ok) {
+  bool first_where(algebra::Roots roots, Ok ok) {
     for (Root& r : roots)
       if (ok(r)) {
         found_.push_back(r);
@@ -99,7 +100,7 @@ class Search {
   // (when f != 0), the contact condition at a coplanar time, and the (vertex, edge start, edge
   // end) triples that a first contact of a coplanar-throughout motion must pass through.
   template <class Touch>
-  void first_contact(const Poly& f, std::vector<Root> times, Touch touch,
+  void first_contact(const Poly& f, algebra::Roots times, Touch touch,
                      std::initializer_list<std::array<const PVec*, 3>> vertex_edge) {
     if (!f.is_zero()) {
       first_where(std::move(times), touch);
@@ -111,7 +112,7 @@ class Search {
       if (!done()) point_edge(*e[0], *e[1], *e[2]);
   }
   // The roots in [t0, t1] common to `zeros` (not all zero), increasing.
-  std::vector<Root> common_roots(std::initializer_list<const Poly*> zeros) {
+  algebra::Roots common_roots(std::initializer_list<const Poly*> zeros) {
     Poly g;
     for (const Poly* z : zeros) {
       g = algebra::gcd(g, *z);
@@ -158,7 +159,7 @@ bool Search::point_edge(const PVec& p, const PVec& a, const PVec& b) {
 void Search::vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec& c) {
   const PVec ap = a - p, bp = b - p, cp = c - p, bc = cross(bp, cp);
   const Poly f = dot(ap, bc);  // 6 x signed volume: 0 iff coplanar
-  const std::vector<Root> times = f.is_zero() ? std::vector<Root>{} : common_roots({&f});
+  algebra::Roots times = f.is_zero() ? algebra::Roots{} : common_roots({&f});
   if (!f.is_zero() && times.empty()) return;  // never coplanar: the common case, decided here
   const PVec n = cross(b - a, c - a);
   // At a coplanar time with n != 0, these are |n|^2 times p's barycentric coordinates.
@@ -170,13 +171,13 @@ void Search::vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec
   };
   // Coplanar throughout: a first contact after the start puts p on an edge, since inside a
   // non-degenerate triangle it would have been inside a moment earlier.
-  first_contact(f, times, inside, {{&p, &a, &b}, {&p, &b, &c}, {&p, &c, &a}});
+  first_contact(f, std::move(times), inside, {{&p, &a, &b}, {&p, &b, &c}, {&p, &c, &a}});
 }
 
 void Search::edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVec& b1) {
   const PVec ea = a1 - a0, eb = b1 - b0, w = b0 - a0;
   const Poly f = dot(ea, cross(w, b1 - a0));
-  const std::vector<Root> times = f.is_zero() ? std::vector<Root>{} : common_roots({&f});
+  algebra::Roots times = f.is_zero() ? algebra::Roots{} : common_roots({&f});
   if (!f.is_zero() && times.empty()) return;
   const PVec m = cross(ea, eb);
   // At a coplanar time with m != 0: a0 + (s/mm) ea = b0 + (u/mm) eb.
@@ -192,7 +193,7 @@ void Search::edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVe
   };
   // Coplanar throughout: segments that cross properly crossed a moment earlier too, so a first
   // contact after the start puts an end of one on the other.
-  first_contact(f, times, meet,
+  first_contact(f, std::move(times), meet,
                 {{&a0, &b0, &b1}, {&a1, &b0, &b1}, {&b0, &a0, &a1}, {&b1, &a0, &a1}});
 }
 

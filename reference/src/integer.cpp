@@ -1,239 +1,208 @@
 #include "integer.hpp"
 
-#include <cmath>
-#include <cstdint>
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
 #include <utility>
 
 namespace fdh::exact::algebra {
 namespace {
 
-using u128 = unsigned __int128;
-static_assert(GMP_NUMB_BITS == 64, "the machine form converts 64-bit limbs");
+using Size = mp_size_t;  // a signed limb count, GMP's convention: negative for negative values
 
-u128 magnitude(__int128 v) {
-  return v < 0 ? u128(0) - u128(v) : u128(v);  // also for the most negative v
-}
+// Room for n limbs for one result: on the stack for the CCD's sizes, on the heap beyond (the
+// pseudo-remainders of a gcd can reach a few thousand bits).
+class Buffer {
+ public:
+  explicit Buffer(Size n)
+      : data_(n <= kStack ? stack_ : (heap_ = std::make_unique<mp_limb_t[]>(n)).get()) {}
+  mp_limb_t* data() { return data_; }
 
-void set_mpz(mpz_ptr z, __int128 v) {
-  const u128 m = magnitude(v);
-  const mp_limb_t lo = mp_limb_t(m), hi = mp_limb_t(m >> 64);
-  mp_limb_t* d = mpz_limbs_write(z, 2);  // z's storage, grown to two limbs if it has fewer
-  d[0] = lo, d[1] = hi;
-  const mp_size_t n = hi != 0 ? 2 : (lo != 0 ? 1 : 0);
-  mpz_limbs_finish(z, v < 0 ? -n : n);
-}
-
-// Scratch integers for machine operands of GMP operations: they keep their storage, so a view
-// costs no allocation after the first few.
-struct Scratch {
-  mpz_class a, b;
+ private:
+  static constexpr Size kStack = 48;
+  mp_limb_t stack_[kStack];
+  std::unique_ptr<mp_limb_t[]> heap_;
+  mp_limb_t* data_;
 };
-Scratch& scratch() {
-  thread_local Scratch s;
-  return s;
+
+// r = x + y on magnitudes with signed sizes. r has room for max(|xn|, |yn|) + 1 limbs and
+// overlaps neither operand. Returns r's signed size.
+Size add(mp_limb_t* r, const mp_limb_t* x, Size xn, const mp_limb_t* y, Size yn) {
+  Size ax = std::abs(xn), ay = std::abs(yn);
+  const bool same_sign = (xn < 0) == (yn < 0);
+  // Make |x| >= |y| (by length alone when the magnitudes add).
+  if (ax < ay || (ax == ay && !same_sign && ax > 0 && mpn_cmp(x, y, ax) < 0))
+    std::swap(x, y), std::swap(xn, yn), std::swap(ax, ay);
+  if (ay == 0) {
+    std::copy(x, x + ax, r);
+    return xn;
+  }
+  Size n = ax;
+  if (same_sign) {
+    r[ax] = mpn_add(r, x, ax, y, ay);
+    n += r[ax] != 0;
+  } else {
+    mpn_sub(r, x, ax, y, ay);
+    while (n > 0 && r[n - 1] == 0) --n;
+  }
+  return xn < 0 ? -n : n;
+}
+
+// r = x y with signed sizes. r has room for |xn| + |yn| limbs and overlaps neither operand.
+Size multiply(mp_limb_t* r, const mp_limb_t* x, Size xn, const mp_limb_t* y, Size yn) {
+  Size ax = std::abs(xn), ay = std::abs(yn);
+  if (ax == 0 || ay == 0) return 0;
+  if (ax < ay) std::swap(x, y), std::swap(ax, ay);  // mpn_mul wants the longer one first
+  if (ay == 1)
+    r[ax] = mpn_mul_1(r, x, ax, y[0]);
+  else
+    mpn_mul(r, x, ax, y, ay);
+  const Size n = ax + ay - (r[ax + ay - 1] == 0);
+  return (xn < 0) != (yn < 0) ? -n : n;
+}
+
+int sign_of(int c) {
+  return (c > 0) - (c < 0);
 }
 
 }  // namespace
 
-Int::Int(const mpz_class& z) : big_(true) {
-  mpz_init_set(&z_, z.get_mpz_t());
-  shrink();
+Int::Int(long v) {
+  if (v == 0) return;
+  inline_[0] = v < 0 ? 0 - mp_limb_t(v) : mp_limb_t(v);  // also for the most negative v
+  size_ = v < 0 ? -1 : 1;
 }
 
-Int::Int(const Int& o) : big_(o.big_) {
-  if (big_)
-    mpz_init_set(&z_, &o.z_);
-  else
-    small_ = o.small_;
+Int::Int(const mpz_class& z) {
+  assign(z.get_mpz_t());
 }
 
-Int::Int(Int&& o) noexcept : big_(o.big_) {
-  if (big_)
-    z_ = o.z_, o.big_ = false, o.small_ = 0;  // the limbs change owner
-  else
-    small_ = o.small_;
-}
-
-Int& Int::operator=(const Int& o) {
-  if (this == &o) return *this;
-  if (o.big_)
-    mpz_set(make_big(), &o.z_);  // reuses this one's limbs
-  else
-    set(o.small_);  // keeps this one's GMP storage, if any
-  return *this;
-}
-
-Int& Int::operator=(Int&& o) noexcept {
-  if (this == &o) return *this;
-  if (big_) mpz_clear(&z_);
-  big_ = o.big_;
-  if (big_)
-    z_ = o.z_, o.big_ = false, o.small_ = 0;
-  else
-    small_ = o.small_;
-  return *this;
-}
-
-Int::~Int() {
-  if (big_) mpz_clear(&z_);
-}
-
-mpz_ptr Int::make_big() {
-  if (!big_) {
-    const __int128 v = small_;
-    mpz_init(&z_);
-    big_ = true;
-    set_mpz(&z_, v);
+void Int::assign(const mp_limb_t* d, int n, bool negative) {
+  while (n > 0 && d[n - 1] == 0) --n;
+  if (n > capacity_) {  // d cannot be ours then
+    const int grown = std::max(n, 2 * capacity_);
+    delete[] heap_;
+    heap_ = new mp_limb_t[std::size_t(grown)];
+    capacity_ = grown;
   }
-  return &z_;
+  mp_limb_t* to = heap_ ? heap_ : inline_;
+  for (int i = 0; i < n; ++i) to[i] = d[i];  // a few limbs: cheaper than a call to memmove
+  size_ = negative ? -n : n;
 }
 
-void Int::set(__int128 v) {
-  if (big_)
-    set_mpz(&z_, v);
-  else
-    small_ = v;
+void Int::assign(mpz_srcptr z) {
+  assign(mpz_limbs_read(z), int(mpz_size(z)), mpz_sgn(z) < 0);
 }
 
-void Int::shrink() {
-  if (!big_ || mpz_sizeinbase(&z_, 2) > 126) return;
-  const u128 m = (u128(mpz_getlimbn(&z_, 1)) << 64) | u128(mpz_getlimbn(&z_, 0));
-  const bool negative = mpz_sgn(&z_) < 0;
-  mpz_clear(&z_);
-  big_ = false;
-  small_ = negative ? -__int128(m) : __int128(m);
-}
-
-mpz_srcptr Int::view(const Int& x, mpz_ptr scratch) {
-  if (x.big_) return &x.z_;
-  set_mpz(scratch, x.small_);
-  return scratch;
+mpz_srcptr Int::view(mpz_ptr scratch) const {
+  return mpz_roinit_n(scratch, limbs(), size_);
 }
 
 mpz_class Int::to_mpz() const {
-  mpz_class z;
-  if (big_)
-    mpz_set(z.get_mpz_t(), &z_);
-  else
-    set_mpz(z.get_mpz_t(), small_);
-  return z;
+  mpz_t v;
+  return mpz_class(view(v));
 }
 
 double Int::frexp(long* e) const {
-  if (big_) return mpz_get_d_2exp(e, &z_);
-  const u128 m = magnitude(small_);
-  if (m == 0) return *e = 0, 0.0;
-  const std::uint64_t hi = std::uint64_t(m >> 64), lo = std::uint64_t(m);
-  const int bits = hi ? 128 - __builtin_clzll(hi) : 64 - __builtin_clzll(lo);
-  const int drop = bits > 53 ? bits - 53 : 0;  // truncate to 53 bits: exact as a double
-  const double t = std::ldexp(double(std::uint64_t(m >> drop)), drop - bits);
-  *e = bits;
-  return small_ < 0 ? -t : t;
-}
-
-// The machine result if `machine` reports no overflow, else GMP's.
-template <class Machine, class Gmp>
-Int Int::binary(const Int& a, const Int& b, Machine machine, Gmp gmp) {
-  __int128 r;
-  if (!a.big_ && !b.big_ && !machine(a.small_, b.small_, &r)) return of(r);
-  Int out;
-  mpz_srcptr x = view(a, scratch().a.get_mpz_t()), y = view(b, scratch().b.get_mpz_t());
-  gmp(out.make_big(), x, y);
-  out.shrink();
-  return out;
+  if (size_ == 0) return *e = 0, 0.0;
+  mpz_t v;
+  return mpz_get_d_2exp(e, view(v));
 }
 
 Int operator+(const Int& a, const Int& b) {
-  return Int::binary(
-      a, b, [](__int128 x, __int128 y, __int128* r) { return __builtin_add_overflow(x, y, r); },
-      mpz_add);
+  __int128 x, y, z;
+  Int r;
+  if (a.machine(&x) && b.machine(&y) && !__builtin_add_overflow(x, y, &z)) return r.set(z), r;
+  Buffer s(std::max(a.length(), b.length()) + 1);
+  const Size n = add(s.data(), a.limbs(), a.size_, b.limbs(), b.size_);
+  r.assign(s.data(), int(std::abs(n)), n < 0);
+  return r;
 }
 
 Int operator-(const Int& a, const Int& b) {
-  return Int::binary(
-      a, b, [](__int128 x, __int128 y, __int128* r) { return __builtin_sub_overflow(x, y, r); },
-      mpz_sub);
+  __int128 x, y, z;
+  Int r;
+  if (a.machine(&x) && b.machine(&y) && !__builtin_sub_overflow(x, y, &z)) return r.set(z), r;
+  Buffer s(std::max(a.length(), b.length()) + 1);
+  const Size n = add(s.data(), a.limbs(), a.size_, b.limbs(), -Size(b.size_));
+  r.assign(s.data(), int(std::abs(n)), n < 0);
+  return r;
 }
 
 Int operator*(const Int& a, const Int& b) {
-  return Int::binary(
-      a, b, [](__int128 x, __int128 y, __int128* r) { return __builtin_mul_overflow(x, y, r); },
-      mpz_mul);
+  Int r;
+  mul(r, a, b);
+  return r;
 }
 
 Int operator<<(const Int& a, unsigned long k) {
-  Int out;
-  mul_2exp(out, a, k);
-  return out;
+  Int r;
+  mul_2exp(r, a, k);
+  return r;
 }
 
 Int gcd(const Int& a, const Int& b) {
-  const auto machine = [](__int128 x, __int128 y, __int128* r) {
-    u128 u = magnitude(x), v = magnitude(y);  // Euclid on magnitudes: no overflow
-    while (v != 0) u = std::exchange(v, u % v);
-    *r = __int128(u);
-    return u >> 126 != 0;  // 2^127 (both the most negative value, or one and 0) does not fit
-  };
-  return Int::binary(a, b, machine, mpz_gcd);
+  thread_local mpz_class g;  // keeps its storage
+  mpz_t x, y;
+  mpz_gcd(g.get_mpz_t(), a.view(x), b.view(y));
+  return Int(g);
 }
 
 Int divexact(const Int& a, const Int& b) {
-  const auto machine = [](__int128 x, __int128 y, __int128* r) {
-    if (y == -1 && x < -(__int128(1) << 126)) return true;  // the one overflowing quotient
-    *r = x / y;
-    return false;
-  };
-  return Int::binary(a, b, machine, mpz_divexact);
+  thread_local mpz_class q;
+  mpz_t x, y;
+  mpz_divexact(q.get_mpz_t(), a.view(x), b.view(y));
+  return Int(q);
 }
 
 int compare(const Int& a, const Int& b) {
-  if (!a.big_ && !b.big_) return (a.small_ > b.small_) - (a.small_ < b.small_);
-  const int c =
-      mpz_cmp(Int::view(a, scratch().a.get_mpz_t()), Int::view(b, scratch().b.get_mpz_t()));
-  return (c > 0) - (c < 0);
+  if (a.size_ != b.size_) return a.size_ < b.size_ ? -1 : 1;
+  const int c = sign_of(mpn_cmp(a.limbs(), b.limbs(), a.length()));
+  return a.size_ < 0 ? -c : c;
 }
 
 int compare_abs(const Int& a, const Int& b) {
-  if (!a.big_ && !b.big_) {
-    const u128 x = magnitude(a.small_), y = magnitude(b.small_);
-    return (x > y) - (x < y);
-  }
-  const int c =
-      mpz_cmpabs(Int::view(a, scratch().a.get_mpz_t()), Int::view(b, scratch().b.get_mpz_t()));
-  return (c > 0) - (c < 0);
+  if (a.length() != b.length()) return a.length() < b.length() ? -1 : 1;
+  return sign_of(mpn_cmp(a.limbs(), b.limbs(), a.length()));
 }
 
 void mul(Int& r, const Int& a, const Int& b) {
-  __int128 p;
-  if (!a.big_ && !b.big_ && !__builtin_mul_overflow(a.small_, b.small_, &p)) return r.set(p);
-  mpz_srcptr x = Int::view(a, scratch().a.get_mpz_t()), y = Int::view(b, scratch().b.get_mpz_t());
-  mpz_mul(r.make_big(), x, y);  // the views first: r may be a or b
+  __int128 x, y, z;
+  if (a.machine(&x) && b.machine(&y) && !__builtin_mul_overflow(x, y, &z)) return r.set(z);
+  Buffer p(a.length() + b.length());
+  const Size n = multiply(p.data(), a.limbs(), a.size_, b.limbs(), b.size_);
+  r.assign(p.data(), int(std::abs(n)), n < 0);
 }
 
 void mul_2exp(Int& r, const Int& a, unsigned long k) {
-  if (!a.big_) {
-    const u128 m = magnitude(a.small_);
-    if (m == 0) return r.set(0);
-    if (k < 126 && (m >> (126 - k)) == 0) {
-      const __int128 s = __int128(m << k);
-      return r.set(a.small_ < 0 ? -s : s);
-    }
+  const Size n = a.length(), whole = Size(k / GMP_NUMB_BITS);
+  const unsigned bits = unsigned(k % GMP_NUMB_BITS);
+  if (n == 0) return r.assign(nullptr, 0, false);
+  Buffer s(n + whole + 1);
+  mp_limb_t* d = s.data();
+  std::fill(d, d + whole, mp_limb_t(0));
+  if (bits != 0) {
+    d[whole + n] = mpn_lshift(d + whole, a.limbs(), n, bits);
+  } else {
+    std::copy(a.limbs(), a.limbs() + n, d + whole);
+    d[whole + n] = 0;
   }
-  mpz_srcptr x = Int::view(a, scratch().a.get_mpz_t());
-  mpz_mul_2exp(r.make_big(), x, k);
+  r.assign(d, int(n + whole + 1), a.size_ < 0);
 }
 
-// In place: r keeps its GMP form once it has one (sums of products only grow).
 void Int::accumulate(Int& r, const Int& a, const Int& b, bool subtract) {
-  __int128 p, s;
-  if (!r.big_ && !a.big_ && !b.big_ && !__builtin_mul_overflow(a.small_, b.small_, &p) &&
-      !(subtract ? __builtin_sub_overflow(r.small_, p, &s)
-                 : __builtin_add_overflow(r.small_, p, &s))) {
-    r.small_ = s;
-    return;
-  }
-  mpz_srcptr x = view(a, scratch().a.get_mpz_t()), y = view(b, scratch().b.get_mpz_t());
-  (subtract ? mpz_submul : mpz_addmul)(r.make_big(), x, y);
+  __int128 x, y, z, xy, t;
+  if (r.machine(&x) && a.machine(&y) && b.machine(&z) && !__builtin_mul_overflow(y, z, &xy) &&
+      !(subtract ? __builtin_sub_overflow(x, xy, &t) : __builtin_add_overflow(x, xy, &t)))
+    return r.set(t);
+  Buffer p(a.length() + b.length());
+  Size pn = multiply(p.data(), a.limbs(), a.size_, b.limbs(), b.size_);
+  if (pn == 0) return;
+  if (subtract) pn = -pn;
+  Buffer s(std::max(Size(r.length()), std::abs(pn)) + 1);
+  const Size n = add(s.data(), r.limbs(), r.size_, p.data(), pn);
+  r.assign(s.data(), int(std::abs(n)), n < 0);
 }
 
 void addmul(Int& r, const Int& a, const Int& b) {
@@ -242,6 +211,10 @@ void addmul(Int& r, const Int& a, const Int& b) {
 
 void submul(Int& r, const Int& a, const Int& b) {
   Int::accumulate(r, a, b, true);
+}
+
+void negate(Int& r) {
+  r.size_ = -r.size_;
 }
 
 }  // namespace fdh::exact::algebra

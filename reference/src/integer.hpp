@@ -1,15 +1,15 @@
-// An exact integer of any size for the exact CCD's algebra (polynomial.hpp): a machine
-// __int128 while the value fits, a GMP integer from the first operation whose result does not.
-// Private to reference/.
+// An exact integer of any size for the exact CCD's algebra (polynomial.hpp): sign and magnitude
+// in 64-bit limbs, like a GMP integer, but the limbs live inside the object up to kInline of
+// them and on the heap only beyond. Values below 2^127 are added and multiplied as machine
+// __int128 with overflow checks. Private to reference/.
 //
-// Why: scaled by one power of two into integers, the coordinates of handcrafted and generated
-// queries have a few to some 30 bits, and the polynomials built from them (degree 4 in the
-// coordinates) mostly stay below 2^127 (the benchmark's, up to about 110 bits, mostly do not).
-// GMP allocates every integer on the heap, which was most of the exact test's time; a machine
-// integer needs no allocation. Every machine operation checks for overflow
-// (__builtin_*_overflow) and is done by GMP instead when it would overflow, so no value is ever
-// wrong, only some slower. A new result that fits 126 bits takes the machine form again.
-// tests/reference/test_integer.cpp compares the operations with GMP's around the boundaries.
+// Why: scaled by one power of two into integers, the benchmark's coordinates have up to about
+// 110 bits and the polynomials built from them (degree 4 in the coordinates) some 450-700;
+// GMP's integers allocate every value on the heap, which was half of the exact test's time. The
+// arithmetic is GMP's own low-level layer (mpn_*) on limbs that we own: each operation writes
+// its result to a stack buffer, then copies it in, so any operand may alias the result. gcd and
+// exact division go through GMP's integers on read-only views of our limbs (mpz_roinit_n).
+// tests/reference/test_integer.cpp compares every operation with GMP's around limb boundaries.
 #pragma once
 
 #include <gmp.h>
@@ -19,17 +19,25 @@ namespace fdh::exact::algebra {
 
 class Int {
  public:
-  Int() : small_(0) {}
-  Int(long v) : small_(v) {}  // NOLINT(google-explicit-constructor): converts like an int
+  Int() {}      // 0; the limbs stay uninitialized until used
+  Int(long v);  // NOLINT(google-explicit-constructor): converts like an int
   explicit Int(const mpz_class& z);
-  Int(const Int& o);
-  Int(Int&& o) noexcept;
-  Int& operator=(const Int& o);
-  Int& operator=(Int&& o) noexcept;
-  ~Int();
+  // Copies and moves are the hot path of the polynomial code: inline, no allocation up to
+  // kInline limbs.
+  Int(const Int& o) { copy(o); }
+  Int(Int&& o) noexcept { move(o); }
+  Int& operator=(const Int& o) {
+    if (this != &o) copy(o);
+    return *this;
+  }
+  Int& operator=(Int&& o) noexcept {
+    if (this != &o) move(o);
+    return *this;
+  }
+  ~Int() { delete[] heap_; }
 
-  int sign() const { return big_ ? mpz_sgn(&z_) : (small_ > 0) - (small_ < 0); }
-  bool is_zero() const { return sign() == 0; }
+  int sign() const { return (size_ > 0) - (size_ < 0); }
+  bool is_zero() const { return size_ == 0; }
   mpz_class to_mpz() const;
   // x = m 2^e with 0.5 <= |m| < 1 (0 for x = 0), m truncated to a double (as mpz_get_d_2exp).
   double frexp(long* e) const;
@@ -42,34 +50,62 @@ class Int {
   friend Int divexact(const Int& a, const Int& b);       // a / b, where b divides a
   friend int compare(const Int& a, const Int& b);
   friend int compare_abs(const Int& a, const Int& b);  // compare(|a|, |b|)
-  // In place: r = a b, r = a 2^k, r += a b and r -= a b. A result in GMP form keeps its storage
-  // (no allocation), the building blocks of the hot loops (products of polynomials, Horner).
+  // In place: r = a b, r = a 2^k, r += a b and r -= a b. The building blocks of the hot loops
+  // (products of polynomials, Horner); r keeps its storage.
   friend void mul(Int& r, const Int& a, const Int& b);
   friend void mul_2exp(Int& r, const Int& a, unsigned long k);
   friend void addmul(Int& r, const Int& a, const Int& b);
   friend void submul(Int& r, const Int& a, const Int& b);
+  friend void negate(Int& r);  // r = -r
 
  private:
-  static Int of(__int128 v) { return Int(Small{v}); }
-  struct Small {
-    __int128 v;
-  };
-  explicit Int(Small s) : small_(s.v) {}
-  // a op b by `machine` (false: no overflow) or else by `gmp` (integer.cpp only).
-  template <class Machine, class Gmp>
-  static Int binary(const Int& a, const Int& b, Machine machine, Gmp gmp);
-  static void accumulate(Int& r, const Int& a, const Int& b, bool subtract);  // r += or -= a b
-  mpz_ptr make_big();    // switches to the GMP form (same value) and returns it
-  void set(__int128 v);  // keeps the GMP form (and its storage) if it has one
-  void shrink();         // back to the machine form if the value fits 126 bits
-  // GMP's view of x: its own integer, or its machine value written into `scratch`.
-  static mpz_srcptr view(const Int& x, mpz_ptr scratch);
+  static constexpr int kInline = 12;  // 768 bits: the CCD's polynomials, not its gcds
 
-  bool big_ = false;
-  union {
-    __int128 small_;
-    __mpz_struct z_;  // initialized exactly when big_
-  };
+  const mp_limb_t* limbs() const { return heap_ ? heap_ : inline_; }
+  int length() const { return size_ < 0 ? -size_ : size_; }
+  // Sets the value to the n limbs at d (not ours), negated if `negative`; n may have leading
+  // zero limbs.
+  void assign(const mp_limb_t* d, int n, bool negative);
+  void assign(mpz_srcptr z);
+  void copy(const Int& o) {
+    const int n = o.length();
+    if (n > capacity_) return assign(o.limbs(), n, o.size_ < 0);
+    mp_limb_t* to = heap_ ? heap_ : inline_;
+    const mp_limb_t* from = o.limbs();
+    for (int i = 0; i < n; ++i) to[i] = from[i];
+    size_ = o.size_;
+  }
+  void move(Int& o) noexcept {               // o's heap limbs, if it has some, change owner
+    if (o.heap_ == nullptr) return copy(o);  // fits our storage: no allocation
+    delete[] heap_;
+    heap_ = o.heap_, capacity_ = o.capacity_, size_ = o.size_;
+    o.heap_ = nullptr, o.capacity_ = kInline, o.size_ = 0;
+  }
+  mpz_srcptr view(mpz_ptr scratch) const;  // a read-only GMP view of the limbs
+  static void accumulate(Int& r, const Int& a, const Int& b, bool subtract);  // r += or -= a b
+  // The machine fast path: most values of the hard families fit 127 bits, and __int128
+  // arithmetic with overflow checks (__builtin_*_overflow) beats any call into GMP.
+  bool machine(__int128* v) const {  // false if |value| >= 2^127
+    const int n = length();
+    const mp_limb_t* d = limbs();
+    if (n > 2 || (n == 2 && d[1] >> 63 != 0)) return false;
+    const __int128 m = n == 0 ? 0 : n == 1 ? __int128(d[0]) : __int128(d[1]) << 64 | d[0];
+    *v = size_ < 0 ? -m : m;
+    return true;
+  }
+  void set(__int128 v) {
+    using u128 = unsigned __int128;
+    const u128 m = v < 0 ? u128(0) - u128(v) : u128(v);  // also for the most negative v
+    mp_limb_t* d = heap_ ? heap_ : inline_;
+    d[0] = mp_limb_t(m), d[1] = mp_limb_t(m >> 64);
+    const int n = d[1] != 0 ? 2 : d[0] != 0 ? 1 : 0;
+    size_ = v < 0 ? -n : n;
+  }
+
+  int size_ = 0;  // the number of limbs, negated for a negative value (as GMP's _mp_size)
+  int capacity_ = kInline;
+  mp_limb_t* heap_ = nullptr;  // the limbs when they outgrow inline_ (capacity_ of them)
+  mp_limb_t inline_[kInline];
 };
 
 Int operator+(const Int& a, const Int& b);
@@ -84,9 +120,12 @@ void mul(Int& r, const Int& a, const Int& b);
 void mul_2exp(Int& r, const Int& a, unsigned long k);
 void addmul(Int& r, const Int& a, const Int& b);
 void submul(Int& r, const Int& a, const Int& b);
+void negate(Int& r);
 
 inline Int operator-(const Int& a) {
-  return Int(0) - a;
+  Int r = a;
+  negate(r);
+  return r;
 }
 inline Int abs(const Int& a) {
   return a.sign() < 0 ? -a : a;

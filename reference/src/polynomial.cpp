@@ -9,7 +9,7 @@
 namespace fdh::exact::algebra {
 namespace {
 
-void trim(std::vector<Int>& c) {
+void trim(Coeffs& c) {
   while (!c.empty() && c.back().is_zero()) c.pop_back();
 }
 
@@ -30,7 +30,7 @@ Poly primitive(Poly p) {
 // A positive multiple of the remainder of a by b: each step scales by |lc(b)| > 0, so signs
 // at every point are those of the true remainder (what Sturm sequences need).
 Poly pseudo_remainder(const Poly& a, const Poly& b) {
-  std::vector<Int> r = a.c;
+  Coeffs r = a.c;
   const Int lb = abs(b.c.back());
   const int sb = b.c.back().sign();
   const std::size_t n = b.c.size();
@@ -47,8 +47,8 @@ Poly pseudo_remainder(const Poly& a, const Poly& b) {
 }
 
 // The Sturm sequence of a squarefree s: s, s', then negated remainders down to a constant.
-std::vector<Poly> sturm_sequence(const Poly& s) {
-  std::vector<Poly> seq{s, derivative(s)};
+InlineVector<Poly, 5> sturm_sequence(const Poly& s) {
+  InlineVector<Poly, 5> seq{s, derivative(s)};
   while (!seq.back().is_zero() && seq.back().degree() > 0) {
     Poly r = pseudo_remainder(seq[seq.size() - 2], seq.back());
     if (r.is_zero()) break;
@@ -60,7 +60,7 @@ std::vector<Poly> sturm_sequence(const Poly& s) {
 
 // Sign variations of the sequence at t, zeros dropped. For squarefree s, V(a) - V(b) is the
 // number of distinct roots in (a, b] (Sturm's theorem with the half-open convention).
-int variations(const std::vector<Poly>& seq, const Dyadic& t) {
+int variations(const InlineVector<Poly, 5>& seq, const Dyadic& t) {
   int v = 0, last = 0;
   for (const Poly& p : seq) {
     const int s = sign_at(p, t);
@@ -73,8 +73,8 @@ int variations(const std::vector<Poly>& seq, const Dyadic& t) {
 
 struct Isolator {
   const Poly& s;
-  std::vector<Poly> seq;
-  std::vector<Root> out;
+  InlineVector<Poly, 5> seq;
+  Roots out;
 
   int count(const Int& a, const Int& b, unsigned long k) const {
     return variations(seq, {a, k}) - variations(seq, {b, k});
@@ -137,8 +137,8 @@ void jump(Root& r) {
   const int d = s.degree();
   // s's coefficients as doubles scaled by a common power of two (tiny ones may underflow: the
   // float bisection only has to be good, the exact check makes it safe).
-  std::vector<double> c(d + 1), m(d + 1);
-  std::vector<long> e(d + 1);
+  double c[5], m[5];
+  long e[5];
   long emax = LONG_MIN;
   for (int i = 0; i <= d; ++i) {
     m[i] = s.c[i].frexp(&e[i]);
@@ -177,8 +177,7 @@ void jump(Root& r) {
 // integer polynomial, |H(x) - H(0)| <= sum |H_i| for x in [0, 1].
 int sign_over(const Poly& g, const Root& r) {
   const int d = g.degree();
-  thread_local std::vector<Int> h;
-  h.resize(g.c.size());
+  Coeffs h(g.c.size());
   for (int i = 0; i <= d; ++i) mul_2exp(h[i], g.c[i], r.k * unsigned(d - i));
   for (int j = 0; j < d; ++j)  // Taylor shift by a
     for (int i = d - 1; i >= j; --i) addmul(h[i], r.a, h[i + 1]);
@@ -193,7 +192,7 @@ int sign_over(const Poly& g, const Root& r) {
 
 }  // namespace
 
-Poly::Poly(std::vector<Int> coefficients) : c(std::move(coefficients)) {
+Poly::Poly(Coeffs coefficients) : c(std::move(coefficients)) {
   trim(c);
 }
 
@@ -206,7 +205,7 @@ namespace {
 // a + b or a - b, each coefficient written once (GMP sizes it then).
 Poly add_or_subtract(const Poly& a, const Poly& b, bool subtract) {
   static const Int zero;
-  std::vector<Int> c(std::max(a.c.size(), b.c.size()));
+  Coeffs c(std::max(a.c.size(), b.c.size()));
   for (std::size_t i = 0; i < c.size(); ++i) {
     const Int& x = i < a.c.size() ? a.c[i] : zero;
     const Int& y = i < b.c.size() ? b.c[i] : zero;
@@ -227,7 +226,7 @@ Poly operator-(const Poly& a, const Poly& b) {
 
 Poly operator*(const Poly& a, const Poly& b) {
   if (a.is_zero() || b.is_zero()) return Poly();
-  std::vector<Int> c(a.c.size() + b.c.size() - 1);
+  Coeffs c(a.c.size() + b.c.size() - 1);
   for (std::size_t i = 0; i < a.c.size(); ++i)
     for (std::size_t j = 0; j < b.c.size(); ++j) addmul(c[i + j], a.c[i], b.c[j]);
   return Poly(std::move(c));
@@ -237,7 +236,7 @@ Poly sum_of_products(std::initializer_list<Product> terms) {
   std::size_t n = 0;
   for (const Product& t : terms)
     if (!t.a.is_zero() && !t.b.is_zero()) n = std::max(n, t.a.c.size() + t.b.c.size() - 1);
-  std::vector<Int> c(n);
+  Coeffs c(n);
   for (const Product& t : terms) {
     const auto accumulate = t.minus ? &submul : &addmul;
     for (std::size_t i = 0; i < t.a.c.size(); ++i)
@@ -247,7 +246,7 @@ Poly sum_of_products(std::initializer_list<Product> terms) {
 }
 
 Poly derivative(const Poly& p) {
-  std::vector<Int> c;
+  Coeffs c;
   for (std::size_t i = 1; i < p.c.size(); ++i) c.push_back(p.c[i] * Int(long(i)));
   return Poly(std::move(c));
 }
@@ -270,7 +269,7 @@ Poly squarefree(const Poly& p) {
   Poly q = primitive(p);
   if (g.degree() <= 0) return q;
   // Exact division: by Gauss's lemma the quotient of primitive integer polynomials is integer.
-  std::vector<Int> r = q.c, out(q.c.size() - g.c.size() + 1);
+  Coeffs r = q.c, out(q.c.size() - g.c.size() + 1);
   for (std::size_t k = out.size(); k-- > 0;) {
     out[k] = divexact(r[k + g.c.size() - 1], g.c.back());
     for (std::size_t j = 0; j < g.c.size(); ++j) submul(r[k + j], out[k], g.c[j]);
@@ -310,7 +309,7 @@ int sign_at(const Poly& p, const Dyadic& t) {
   return v.sign();
 }
 
-std::vector<Root> roots_in(const Poly& s, const Dyadic& t0, const Dyadic& t1) {
+Roots roots_in(const Poly& s, const Dyadic& t0, const Dyadic& t1) {
   Isolator iso{s, sturm_sequence(s), {}};
   const unsigned long k = std::max(t0.k, t1.k);
   const Int a = shifted(t0.a, k - t0.k), b = shifted(t1.a, k - t1.k);

@@ -16,18 +16,22 @@
 
 #include <gmpxx.h>
 
+#include "inline_vector.hpp"
 #include "integer.hpp"
 
 #include <initializer_list>
-#include <vector>
 
 namespace fdh::exact::algebra {
 
+// Every polynomial here has degree <= 4 (a dot product of two cross products of moving
+// vectors); its coefficients stay inside it.
+using Coeffs = InlineVector<Int, 5>;
+
 struct Poly {
-  std::vector<Int> c;  // c[i] is the coefficient of t^i; no trailing zeros (0 is empty)
+  Coeffs c;  // c[i] is the coefficient of t^i; no trailing zeros (0 is empty)
 
   Poly() = default;
-  explicit Poly(std::vector<Int> coefficients);
+  explicit Poly(Coeffs coefficients);
   static Poly linear(const Int& at0, const Int& at1);  // at0 + t (at1 - at0)
 
   int degree() const { return int(c.size()) - 1; }  // -1 for the zero polynomial
@@ -72,9 +76,11 @@ struct Root {
   Dyadic hi() const { return {b, k}; }
 };
 
+using Roots = InlineVector<Root, 4>;
+
 // The distinct real roots of the squarefree s != 0 in [t0, t1], increasing. `s` must outlive
 // them.
-std::vector<Root> roots_in(const Poly& s, const Dyadic& t0, const Dyadic& t1);
+Roots roots_in(const Poly& s, const Dyadic& t0, const Dyadic& t1);
 
 // The exact sign of g at the root (-1, 0, 1). May refine the root's interval.
 int sign_at(const Poly& g, Root& r);

@@ -1,6 +1,6 @@
 // Int (reference/src/integer.hpp): every operation equals GMP's, on values on both sides of the
-// machine form's limits (2^63, 2^64, 2^126, 2^127) and far beyond, so that no overflow check is
-// off by one.
+// machine fast path's limits (2^63, 2^64, 2^126, 2^127), of the inline limbs (2^768) and of the
+// stack buffers (products beyond 48 limbs, 3072 bits), so that no size check is off by one.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -12,8 +12,8 @@ namespace {
 
 std::vector<mpz_class> samples() {
   std::vector<mpz_class> out;
-  for (const unsigned long e :
-       {0ul, 1ul, 31ul, 62ul, 63ul, 64ul, 65ul, 125ul, 126ul, 127ul, 128ul, 200ul}) {
+  for (const unsigned long e : {0ul, 1ul, 31ul, 62ul, 63ul, 64ul, 65ul, 125ul, 126ul, 127ul, 128ul,
+                                200ul, 383ul, 384ul, 767ul, 768ul, 769ul, 1600ul}) {
     const mpz_class p = mpz_class(1) << e;
     for (const mpz_class& v :
          {mpz_class(p), mpz_class(p - 1), mpz_class(p + 1), mpz_class(3 * p)}) {
@@ -54,13 +54,18 @@ TEST(Integer, ArithmeticEqualsGmp) {
       expect_equal(m, a * b, "mul", a, b);
       mul(m, m, y);  // the result aliasing an operand
       expect_equal(m, a * b * b, "mul in place", a, b);
+      Int t = x, u = x;
+      addmul(t, t, y), submul(u, y, u);
+      expect_equal(t, a + a * b, "addmul in place", a, b);
+      expect_equal(u, a - b * a, "submul in place", a, b);
     }
 }
 
 TEST(Integer, ShiftsAndDoublesEqualGmp) {
   for (const mpz_class& a : samples()) {
     const Int x(a);
-    for (const unsigned long k : {0ul, 1ul, 2ul, 63ul, 64ul, 100ul, 125ul, 126ul, 130ul}) {
+    for (const unsigned long k :
+         {0ul, 1ul, 2ul, 63ul, 64ul, 100ul, 125ul, 126ul, 130ul, 640ul, 705ul, 1500ul}) {
       const mpz_class want = a << k;
       expect_equal(x << k, want, "shift", a, mpz_class(k));
       Int r = 7;
