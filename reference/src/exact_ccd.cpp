@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <deque>
 #include <stdexcept>
 #include <vector>
 
@@ -46,8 +45,14 @@ struct OnSegment {
   Poly h;  // (p - a).(p - b)
   OnSegment(const PVec& p, const PVec& a, const PVec& b)
       : w(cross(p - a, b - a)), h(dot(p - a, p - b)) {}
-  bool at(Root& r) const { return zero_at(w, r) && sign_at(h, r) <= 0; }
 };
+
+// The same test at one root, h built only once p is on the line (the degenerate cases ask it
+// for several segments in a row).
+bool on_segment(const PVec& p, const PVec& a, const PVec& b, Root& r) {
+  const PVec pa = p - a;
+  return zero_at(cross(pa, b - a), r) && sign_at(dot(pa, p - b), r) <= 0;
+}
 
 // The four moving points with their coordinates scaled by one power of two into integers:
 // every condition below is homogeneous in the coordinates, so no sign changes.
@@ -113,13 +118,13 @@ class Search {
   }
   // The roots in [t0, t1] common to `zeros` (not all zero), increasing.
   algebra::Roots common_roots(std::initializer_list<const Poly*> zeros) {
-    Poly g;
+    Poly g = **zeros.begin();
     for (const Poly* z : zeros) {
-      g = algebra::gcd(g, *z);
       if (g.degree() == 0) return {};  // a nonzero constant divides everything after it
+      if (z != *zeros.begin()) g = algebra::gcd(g, *z);
     }
     if (g.degree() < 1) return {};
-    keep_.push_back(algebra::squarefree(g));
+    keep_.push_back(std::move(g));
     return algebra::roots_in(keep_.back(), t0_, t1_);
   }
   bool found_at_start() {
@@ -133,8 +138,11 @@ class Search {
 
   algebra::Dyadic t0_, t1_;
   bool want_time_;
-  std::deque<Poly> keep_;    // the squarefree polynomials that the roots point into
-  std::vector<Root> found_;  // candidates for the earliest contact
+  // The squarefree polynomials that the roots point into: one for f, else at most two per
+  // vertex-edge pair (point_edge), four pairs for edge-edge.
+  algebra::InlineVector<Poly, 8> keep_;
+  // Candidates for the earliest contact: at most one per first_where or found_at_start call.
+  algebra::InlineVector<Root, 10> found_;
 };
 
 bool Search::point_point(const PVec& p, const PVec& a) {
@@ -167,7 +175,7 @@ void Search::vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec
   const auto inside = [&](Root& r) {  // p in the closed triangle, given coplanarity at r
     if (!zero_at(n, r)) return sign_at(ga, r) >= 0 && sign_at(gb, r) >= 0 && sign_at(gc, r) >= 0;
     // A zero-area triangle is the union of its edges.
-    return OnSegment(p, a, b).at(r) || OnSegment(p, b, c).at(r) || OnSegment(p, c, a).at(r);
+    return on_segment(p, a, b, r) || on_segment(p, b, c, r) || on_segment(p, c, a, r);
   };
   // Coplanar throughout: a first contact after the start puts p on an edge, since inside a
   // non-degenerate triangle it would have been inside a moment earlier.
@@ -188,8 +196,8 @@ void Search::edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVe
       return sign_at(s, r) >= 0 && sign_at(mm_s, r) >= 0 && sign_at(u, r) >= 0 &&
              sign_at(mm_u, r) >= 0;
     // Parallel or zero-length: they meet iff an end of one lies on the other.
-    return OnSegment(a0, b0, b1).at(r) || OnSegment(a1, b0, b1).at(r) ||
-           OnSegment(b0, a0, a1).at(r) || OnSegment(b1, a0, a1).at(r);
+    return on_segment(a0, b0, b1, r) || on_segment(a1, b0, b1, r) || on_segment(b0, a0, a1, r) ||
+           on_segment(b1, a0, a1, r);
   };
   // Coplanar throughout: segments that cross properly crossed a moment earlier too, so a first
   // contact after the start puts an end of one on the other.

@@ -46,7 +46,8 @@ Poly pseudo_remainder(const Poly& a, const Poly& b) {
   return Poly(std::move(r));
 }
 
-// The Sturm sequence of a squarefree s: s, s', then negated remainders down to a constant.
+// The Sturm sequence of s: s, s', then negated remainders down to a constant when s is
+// squarefree, else down to gcd(s, s') (up to a factor).
 InlineVector<Poly, 5> sturm_sequence(const Poly& s) {
   InlineVector<Poly, 5> seq{s, derivative(s)};
   while (!seq.back().is_zero() && seq.back().degree() > 0) {
@@ -264,18 +265,21 @@ Poly gcd(const Poly& a0, const Poly& b0) {
   return primitive(std::move(a));
 }
 
-Poly squarefree(const Poly& p) {
-  const Poly g = gcd(p, derivative(p));
-  Poly q = primitive(p);
-  if (g.degree() <= 0) return q;
-  // Exact division: by Gauss's lemma the quotient of primitive integer polynomials is integer.
-  Coeffs r = q.c, out(q.c.size() - g.c.size() + 1);
+namespace {
+
+// p / g for a g that divides p, both made primitive: by Gauss's lemma the quotient of
+// primitive integer polynomials is integer, so the division is exact.
+Poly exact_quotient(const Poly& p, const Poly& g0) {
+  const Poly g = primitive(g0);
+  Coeffs r = primitive(p).c, out(p.c.size() - g.c.size() + 1);
   for (std::size_t k = out.size(); k-- > 0;) {
     out[k] = divexact(r[k + g.c.size() - 1], g.c.back());
     for (std::size_t j = 0; j < g.c.size(); ++j) submul(r[k + j], out[k], g.c[j]);
   }
   return primitive(Poly(std::move(out)));
 }
+
+}  // namespace
 
 Dyadic Dyadic::of(double x) {
   int e = 0;
@@ -309,8 +313,15 @@ int sign_at(const Poly& p, const Dyadic& t) {
   return v.sign();
 }
 
-Roots roots_in(const Poly& s, const Dyadic& t0, const Dyadic& t1) {
-  Isolator iso{s, sturm_sequence(s), {}};
+Roots roots_in(Poly& s, const Dyadic& t0, const Dyadic& t1) {
+  InlineVector<Poly, 5> seq = sturm_sequence(s);
+  // The last element is gcd(s, s') up to a factor (a remainder sequence): s is squarefree iff
+  // it is a constant. Else the roots are those of s / gcd(s, s'), each simple.
+  if (seq.back().degree() > 0) {
+    s = exact_quotient(s, seq.back());
+    seq = sturm_sequence(s);
+  }
+  Isolator iso{s, std::move(seq), {}};
   const unsigned long k = std::max(t0.k, t1.k);
   const Int a = shifted(t0.a, k - t0.k), b = shifted(t1.a, k - t1.k);
   if (sign_at(s, t0) == 0) iso.out.push_back(Root{&s, a, a, k});

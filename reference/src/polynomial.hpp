@@ -52,7 +52,6 @@ struct Product {
 Poly sum_of_products(std::initializer_list<Product> terms);
 Poly derivative(const Poly& p);
 Poly gcd(const Poly& a, const Poly& b);  // primitive, positive leading coefficient; gcd(0,0) = 0
-Poly squarefree(const Poly& p);          // p / gcd(p, p'), primitive; p != 0
 
 // The dyadic number a / 2^k.
 struct Dyadic {
@@ -78,9 +77,10 @@ struct Root {
 
 using Roots = InlineVector<Root, 4>;
 
-// The distinct real roots of the squarefree s != 0 in [t0, t1], increasing. `s` must outlive
-// them.
-Roots roots_in(const Poly& s, const Dyadic& t0, const Dyadic& t1);
+// The distinct real roots of s in [t0, t1], increasing, for s of degree >= 1. s becomes its
+// squarefree part s / gcd(s, s') if it has a multiple root. The roots point into s, which must
+// outlive them.
+Roots roots_in(Poly& s, const Dyadic& t0, const Dyadic& t1);
 
 // The exact sign of g at the root (-1, 0, 1). May refine the root's interval.
 int sign_at(const Poly& g, Root& r);
