@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -53,6 +54,22 @@ bool on_segment(const PVec& p, const PVec& a, const PVec& b, Root& r) {
   const PVec pa = p - a;
   return zero_at(cross(pa, b - a), r) && sign_at(dot(pa, p - b), r) <= 0;
 }
+
+// A polynomial built on first use: the contact conditions are asked in order, and the first
+// ones mostly decide.
+template <class Make>
+class Lazy {
+ public:
+  explicit Lazy(Make make) : make_(std::move(make)) {}
+  const Poly& operator*() {
+    if (!p_) p_ = make_();
+    return *p_;
+  }
+
+ private:
+  Make make_;
+  std::optional<Poly> p_;
+};
 
 // The four moving points with their coordinates scaled by one power of two into integers:
 // every condition below is homogeneous in the coordinates, so no sign changes.
@@ -171,9 +188,11 @@ void Search::vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec
   if (!f.is_zero() && times.empty()) return;  // never coplanar: the common case, decided here
   const PVec n = cross(b - a, c - a);
   // At a coplanar time with n != 0, these are |n|^2 times p's barycentric coordinates.
-  const Poly ga = dot(n, bc), gb = dot(n, cross(cp, ap)), gc = dot(n, cross(ap, bp));
+  Lazy ga([&] { return dot(n, bc); });
+  Lazy gb([&] { return dot(n, cross(cp, ap)); });
+  Lazy gc([&] { return dot(n, cross(ap, bp)); });
   const auto inside = [&](Root& r) {  // p in the closed triangle, given coplanarity at r
-    if (!zero_at(n, r)) return sign_at(ga, r) >= 0 && sign_at(gb, r) >= 0 && sign_at(gc, r) >= 0;
+    if (!zero_at(n, r)) return sign_at(*ga, r) >= 0 && sign_at(*gb, r) >= 0 && sign_at(*gc, r) >= 0;
     // A zero-area triangle is the union of its edges.
     return on_segment(p, a, b, r) || on_segment(p, b, c, r) || on_segment(p, c, a, r);
   };
@@ -183,18 +202,21 @@ void Search::vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec
 }
 
 void Search::edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVec& b1) {
-  const PVec ea = a1 - a0, eb = b1 - b0, w = b0 - a0;
-  const Poly f = dot(ea, cross(w, b1 - a0));
+  const PVec ea = a1 - a0, eb = b1 - b0, w = b0 - a0, web = cross(w, eb);
+  const Poly f = dot(ea, web);  // w x eb = w x (b1 - a0): 0 iff coplanar
   algebra::Roots times = f.is_zero() ? algebra::Roots{} : common_roots({&f});
   if (!f.is_zero() && times.empty()) return;
   const PVec m = cross(ea, eb);
   // At a coplanar time with m != 0: a0 + (s/mm) ea = b0 + (u/mm) eb.
-  const Poly mm = dot(m, m), s = dot(cross(w, eb), m), u = dot(cross(w, ea), m);
-  const Poly mm_s = mm - s, mm_u = mm - u;
+  Lazy s([&] { return dot(web, m); });
+  Lazy u([&] { return dot(cross(w, ea), m); });
+  Lazy mm([&] { return dot(m, m); });
+  Lazy mm_s([&] { return *mm - *s; });
+  Lazy mm_u([&] { return *mm - *u; });
   const auto meet = [&](Root& r) {  // the closed segments meet, given coplanarity at r
     if (!zero_at(m, r))
-      return sign_at(s, r) >= 0 && sign_at(mm_s, r) >= 0 && sign_at(u, r) >= 0 &&
-             sign_at(mm_u, r) >= 0;
+      return sign_at(*s, r) >= 0 && sign_at(*u, r) >= 0 && sign_at(*mm_s, r) >= 0 &&
+             sign_at(*mm_u, r) >= 0;
     // Parallel or zero-length: they meet iff an end of one lies on the other.
     return on_segment(a0, b0, b1, r) || on_segment(a1, b0, b1, r) || on_segment(b0, a0, a1, r) ||
            on_segment(b1, a0, a1, r);

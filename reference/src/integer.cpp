@@ -158,12 +158,14 @@ Int divexact(const Int& a, const Int& b) {
 
 int compare(const Int& a, const Int& b) {
   if (a.size_ != b.size_) return a.size_ < b.size_ ? -1 : 1;
+  if (a.size_ == 0) return 0;  // mpn_* take no empty operands
   const int c = sign_of(mpn_cmp(a.limbs(), b.limbs(), a.length()));
   return a.size_ < 0 ? -c : c;
 }
 
 int compare_abs(const Int& a, const Int& b) {
   if (a.length() != b.length()) return a.length() < b.length() ? -1 : 1;
+  if (a.size_ == 0) return 0;
   return sign_of(mpn_cmp(a.limbs(), b.limbs(), a.length()));
 }
 
