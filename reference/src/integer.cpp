@@ -28,7 +28,7 @@ class Buffer {
 
 // r = x + y on magnitudes with signed sizes. r has room for max(|xn|, |yn|) + 1 limbs and
 // overlaps neither operand. Returns r's signed size.
-Size add(mp_limb_t* r, const mp_limb_t* x, Size xn, const mp_limb_t* y, Size yn) {
+Size add_limbs(mp_limb_t* r, const mp_limb_t* x, Size xn, const mp_limb_t* y, Size yn) {
   Size ax = std::abs(xn), ay = std::abs(yn);
   const bool same_sign = (xn < 0) == (yn < 0);
   // Make |x| >= |y| (by length alone when the magnitudes add).
@@ -50,7 +50,7 @@ Size add(mp_limb_t* r, const mp_limb_t* x, Size xn, const mp_limb_t* y, Size yn)
 }
 
 // r = x y with signed sizes. r has room for |xn| + |yn| limbs and overlaps neither operand.
-Size multiply(mp_limb_t* r, const mp_limb_t* x, Size xn, const mp_limb_t* y, Size yn) {
+Size multiply_limbs(mp_limb_t* r, const mp_limb_t* x, Size xn, const mp_limb_t* y, Size yn) {
   Size ax = std::abs(xn), ay = std::abs(yn);
   if (ax == 0 || ay == 0) return 0;
   if (ax < ay) std::swap(x, y), std::swap(ax, ay);  // mpn_mul wants the longer one first
@@ -110,23 +110,34 @@ double Int::frexp(long* e) const {
   return mpz_get_d_2exp(e, view(v));
 }
 
-Int operator+(const Int& a, const Int& b) {
+void add(Int& r, const Int& a, const Int& b) {
+  Int::sum(r, a, b, false);
+}
+
+void sub(Int& r, const Int& a, const Int& b) {
+  Int::sum(r, a, b, true);
+}
+
+void Int::sum(Int& r, const Int& a, const Int& b, bool subtract) {
   __int128 x, y, z;
-  Int r;
-  if (a.machine(&x) && b.machine(&y) && !__builtin_add_overflow(x, y, &z)) return r.set(z), r;
+  if (a.machine(&x) && b.machine(&y) &&
+      !(subtract ? __builtin_sub_overflow(x, y, &z) : __builtin_add_overflow(x, y, &z)))
+    return r.set(z);
   Buffer s(std::max(a.length(), b.length()) + 1);
-  const Size n = add(s.data(), a.limbs(), a.size_, b.limbs(), b.size_);
+  const Size n =
+      add_limbs(s.data(), a.limbs(), a.size_, b.limbs(), subtract ? -Size(b.size_) : b.size_);
   r.assign(s.data(), int(std::abs(n)), n < 0);
+}
+
+Int operator+(const Int& a, const Int& b) {
+  Int r;
+  add(r, a, b);
   return r;
 }
 
 Int operator-(const Int& a, const Int& b) {
-  __int128 x, y, z;
   Int r;
-  if (a.machine(&x) && b.machine(&y) && !__builtin_sub_overflow(x, y, &z)) return r.set(z), r;
-  Buffer s(std::max(a.length(), b.length()) + 1);
-  const Size n = add(s.data(), a.limbs(), a.size_, b.limbs(), -Size(b.size_));
-  r.assign(s.data(), int(std::abs(n)), n < 0);
+  sub(r, a, b);
   return r;
 }
 
@@ -173,7 +184,7 @@ void mul(Int& r, const Int& a, const Int& b) {
   __int128 x, y, z;
   if (a.machine(&x) && b.machine(&y) && !__builtin_mul_overflow(x, y, &z)) return r.set(z);
   Buffer p(a.length() + b.length());
-  const Size n = multiply(p.data(), a.limbs(), a.size_, b.limbs(), b.size_);
+  const Size n = multiply_limbs(p.data(), a.limbs(), a.size_, b.limbs(), b.size_);
   r.assign(p.data(), int(std::abs(n)), n < 0);
 }
 
@@ -199,11 +210,11 @@ void Int::accumulate(Int& r, const Int& a, const Int& b, bool subtract) {
       !(subtract ? __builtin_sub_overflow(x, xy, &t) : __builtin_add_overflow(x, xy, &t)))
     return r.set(t);
   Buffer p(a.length() + b.length());
-  Size pn = multiply(p.data(), a.limbs(), a.size_, b.limbs(), b.size_);
+  Size pn = multiply_limbs(p.data(), a.limbs(), a.size_, b.limbs(), b.size_);
   if (pn == 0) return;
   if (subtract) pn = -pn;
   Buffer s(std::max(Size(r.length()), std::abs(pn)) + 1);
-  const Size n = add(s.data(), r.limbs(), r.size_, p.data(), pn);
+  const Size n = add_limbs(s.data(), r.limbs(), r.size_, p.data(), pn);
   r.assign(s.data(), int(std::abs(n)), n < 0);
 }
 

@@ -34,7 +34,9 @@ class Int {
     if (this != &o) move(o);
     return *this;
   }
-  ~Int() { delete[] heap_; }
+  ~Int() {
+    if (heap_ != nullptr) delete[] heap_;
+  }
 
   int sign() const { return (size_ > 0) - (size_ < 0); }
   bool is_zero() const { return size_ == 0; }
@@ -50,8 +52,10 @@ class Int {
   friend Int divexact(const Int& a, const Int& b);       // a / b, where b divides a
   friend int compare(const Int& a, const Int& b);
   friend int compare_abs(const Int& a, const Int& b);  // compare(|a|, |b|)
-  // In place: r = a b, r = a 2^k, r += a b and r -= a b. The building blocks of the hot loops
-  // (products of polynomials, Horner); r keeps its storage.
+  // In place: r = a + b, r = a - b, r = a b, r = a 2^k, r += a b and r -= a b. The building blocks
+  // of the hot loops (products of polynomials, Horner); r keeps its storage.
+  friend void add(Int& r, const Int& a, const Int& b);
+  friend void sub(Int& r, const Int& a, const Int& b);
   friend void mul(Int& r, const Int& a, const Int& b);
   friend void mul_2exp(Int& r, const Int& a, unsigned long k);
   friend void addmul(Int& r, const Int& a, const Int& b);
@@ -82,6 +86,7 @@ class Int {
     o.heap_ = nullptr, o.capacity_ = kInline, o.size_ = 0;
   }
   mpz_srcptr view(mpz_ptr scratch) const;  // a read-only GMP view of the limbs
+  static void sum(Int& r, const Int& a, const Int& b, bool subtract);         // r = a + or - b
   static void accumulate(Int& r, const Int& a, const Int& b, bool subtract);  // r += or -= a b
   // The machine fast path: most values of the hard families fit 127 bits, and __int128
   // arithmetic with overflow checks (__builtin_*_overflow) beats any call into GMP.
@@ -116,6 +121,8 @@ Int gcd(const Int& a, const Int& b);
 Int divexact(const Int& a, const Int& b);
 int compare(const Int& a, const Int& b);
 int compare_abs(const Int& a, const Int& b);
+void add(Int& r, const Int& a, const Int& b);
+void sub(Int& r, const Int& a, const Int& b);
 void mul(Int& r, const Int& a, const Int& b);
 void mul_2exp(Int& r, const Int& a, unsigned long k);
 void addmul(Int& r, const Int& a, const Int& b);

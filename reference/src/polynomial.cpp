@@ -194,7 +194,11 @@ int sign_over(const Poly& g, const Root& r) {
 }  // namespace
 
 Poly::Poly(Coeffs coefficients) : c(std::move(coefficients)) {
-  trim(c);
+  trim();
+}
+
+void Poly::trim() {
+  algebra::trim(c);
 }
 
 Poly Poly::linear(const Int& at0, const Int& at1) {
@@ -203,16 +207,18 @@ Poly Poly::linear(const Int& at0, const Int& at1) {
 
 namespace {
 
-// a + b or a - b, each coefficient written once (GMP sizes it then).
+// a + b or a - b, in place in the result.
 Poly add_or_subtract(const Poly& a, const Poly& b, bool subtract) {
   static const Int zero;
-  Coeffs c(std::max(a.c.size(), b.c.size()));
-  for (std::size_t i = 0; i < c.size(); ++i) {
+  Poly out;
+  out.c.resize(std::max(a.c.size(), b.c.size()));
+  for (std::size_t i = 0; i < out.c.size(); ++i) {
     const Int& x = i < a.c.size() ? a.c[i] : zero;
     const Int& y = i < b.c.size() ? b.c[i] : zero;
-    c[i] = subtract ? x - y : x + y;
+    (subtract ? sub : add)(out.c[i], x, y);
   }
-  return Poly(std::move(c));
+  out.trim();
+  return out;
 }
 
 }  // namespace
@@ -227,23 +233,27 @@ Poly operator-(const Poly& a, const Poly& b) {
 
 Poly operator*(const Poly& a, const Poly& b) {
   if (a.is_zero() || b.is_zero()) return Poly();
-  Coeffs c(a.c.size() + b.c.size() - 1);
+  Poly out;
+  out.c.resize(a.c.size() + b.c.size() - 1);
   for (std::size_t i = 0; i < a.c.size(); ++i)
-    for (std::size_t j = 0; j < b.c.size(); ++j) addmul(c[i + j], a.c[i], b.c[j]);
-  return Poly(std::move(c));
+    for (std::size_t j = 0; j < b.c.size(); ++j) addmul(out.c[i + j], a.c[i], b.c[j]);
+  out.trim();
+  return out;
 }
 
 Poly sum_of_products(std::initializer_list<Product> terms) {
   std::size_t n = 0;
   for (const Product& t : terms)
     if (!t.a.is_zero() && !t.b.is_zero()) n = std::max(n, t.a.c.size() + t.b.c.size() - 1);
-  Coeffs c(n);
+  Poly out;
+  out.c.resize(n);
   for (const Product& t : terms) {
     const auto accumulate = t.minus ? &submul : &addmul;
     for (std::size_t i = 0; i < t.a.c.size(); ++i)
-      for (std::size_t j = 0; j < t.b.c.size(); ++j) accumulate(c[i + j], t.a.c[i], t.b.c[j]);
+      for (std::size_t j = 0; j < t.b.c.size(); ++j) accumulate(out.c[i + j], t.a.c[i], t.b.c[j]);
   }
-  return Poly(std::move(c));
+  out.trim();
+  return out;
 }
 
 Poly derivative(const Poly& p) {

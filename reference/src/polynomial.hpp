@@ -35,6 +35,7 @@ struct Poly {
   static Poly linear(const Int& at0, const Int& at1);  // at0 + t (at1 - at0)
 
   int degree() const { return int(c.size()) - 1; }  // -1 for the zero polynomial
+  void trim();                                      // drops trailing zero coefficients
   bool is_zero() const { return c.empty(); }
 };
 
