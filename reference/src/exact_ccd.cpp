@@ -38,23 +38,6 @@ bool zero_at(const PVec& v, Root& r) {
   return sign_at(v.x, r) == 0 && sign_at(v.y, r) == 0 && sign_at(v.z, r) == 0;
 }
 
-// Closed segment membership, degenerate segments included: p is on [a, b] iff p - a is
-// parallel to b - a and (p - a).(p - b) <= 0. With a = b the cross product vanishes and the
-// dot product is |p - a|^2, so only p = a passes.
-struct OnSegment {
-  PVec w;  // (p - a) x (b - a)
-  Poly h;  // (p - a).(p - b)
-  OnSegment(const PVec& p, const PVec& a, const PVec& b)
-      : w(cross(p - a, b - a)), h(dot(p - a, p - b)) {}
-};
-
-// The same test at one root, h built only once p is on the line (the degenerate cases ask it
-// for several segments in a row).
-bool on_segment(const PVec& p, const PVec& a, const PVec& b, Root& r) {
-  const PVec pa = p - a;
-  return zero_at(cross(pa, b - a), r) && sign_at(dot(pa, p - b), r) <= 0;
-}
-
 // A polynomial built on first use: the contact conditions are asked in order, and the first
 // ones mostly decide.
 template <class Make>
@@ -70,6 +53,14 @@ class Lazy {
   Make make_;
   std::optional<Poly> p_;
 };
+
+// Closed segment membership, degenerate segments included: p is on [a, b] at r iff p - a is
+// parallel to b - a, w = (p - a) x (b - a) = 0, and h = (p - a).(p - b) <= 0. With a = b, w
+// vanishes and h is |p - a|^2, so only p = a passes. h is built only once p is on the line.
+bool on_segment(const PVec& p, const PVec& a, const PVec& b, Root& r) {
+  const PVec pa = p - a;
+  return zero_at(cross(pa, b - a), r) && sign_at(dot(pa, p - b), r) <= 0;
+}
 
 // The four moving points with their coordinates scaled by one power of two into integers:
 // every condition below is homogeneous in the coordinates, so no sign changes.
@@ -94,7 +85,10 @@ std::array<PVec, 4> integer_paths(const Query& q) {
 class Search {
  public:
   Search(const CcdOptions& o, bool want_time)
-      : t0_(algebra::Dyadic::of(o.t0)), t1_(algebra::Dyadic::of(o.t1)), want_time_(want_time) {}
+      : t0_(algebra::Dyadic::of(o.t0)),
+        t1_(algebra::Dyadic::of(o.t1)),
+        unit_window_(o.t0 == 0 && o.t1 == 1),
+        want_time_(want_time) {}
 
   void vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec& c);
   void edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVec& b1);
@@ -135,6 +129,9 @@ class Search {
   }
   // The roots in [t0, t1] common to `zeros` (not all zero), increasing.
   algebra::Roots common_roots(std::initializer_list<const Poly*> zeros) {
+    if (unit_window_)  // one of them without roots there: the common case, decided cheaply
+      for (const Poly* z : zeros)
+        if (algebra::no_root_in_unit(*z)) return {};
     Poly g = **zeros.begin();
     for (const Poly* z : zeros) {
       if (g.degree() == 0) return {};  // a nonzero constant divides everything after it
@@ -154,6 +151,7 @@ class Search {
   bool point_edge(const PVec& p, const PVec& a, const PVec& b);
 
   algebra::Dyadic t0_, t1_;
+  bool unit_window_;  // [t0, t1] = [0, 1]
   bool want_time_;
   // The squarefree polynomials that the roots point into: one for f, else at most two per
   // vertex-edge pair (point_edge), four pairs for edge-edge.
@@ -171,11 +169,12 @@ bool Search::point_point(const PVec& p, const PVec& a) {
 // Point on a moving segment. If p, a, b are not collinear throughout, contacts are common roots
 // of the cross product. If they are, the first contact is at the start or where p meets an end.
 bool Search::point_edge(const PVec& p, const PVec& a, const PVec& b) {
-  const OnSegment on(p, a, b);
-  if (!on.w.is_zero())
-    return first_common_root({&on.w.x, &on.w.y, &on.w.z},
-                             [&](Root& r) { return sign_at(on.h, r) <= 0; });
-  if (algebra::sign_at(on.h, t0_) <= 0) return found_at_start();
+  // As on_segment, over the step.
+  const PVec pa = p - a, w = cross(pa, b - a);
+  Lazy h([&] { return dot(pa, p - b); });
+  if (!w.is_zero())
+    return first_common_root({&w.x, &w.y, &w.z}, [&](Root& r) { return sign_at(*h, r) <= 0; });
+  if (algebra::sign_at(*h, t0_) <= 0) return found_at_start();
   const bool hit_a = point_point(p, a);
   if (done()) return true;
   return point_point(p, b) || hit_a;

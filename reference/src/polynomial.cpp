@@ -291,16 +291,39 @@ Poly exact_quotient(const Poly& p, const Poly& g0) {
 
 }  // namespace
 
+// p is the convex combination sum b_i B_i(t) of the Bernstein basis, B_i >= 0 on [0, 1] and
+// sum B_i = 1, with b_i = sum_{j <= i} C(i, j) / C(d, j) a_j (Farouki & Rajan 1988, "Algorithms
+// for polynomials in Bernstein form"). Scaled by d!, the b_i are the integers
+// sum_{j <= i} C(i, j) j! (d - j)! a_j.
+bool no_root_in_unit(const Poly& p) {
+  const int d = p.degree();
+  if (d < 0) return false;
+  static const long factorial[] = {1, 1, 2, 6, 24};
+  static const long binomial[5][5] = {{1}, {1, 1}, {1, 2, 1}, {1, 3, 3, 1}, {1, 4, 6, 4, 1}};
+  int sign = 0;
+  Int b;
+  for (int i = 0; i <= d; ++i) {
+    b = p.c[0];
+    mul(b, b, Int(factorial[d]));
+    for (int j = 1; j <= i; ++j)
+      addmul(b, p.c[j], Int(binomial[i][j] * factorial[j] * factorial[d - j]));
+    const int s = b.sign();
+    if (s == 0 || (sign != 0 && s != sign)) return false;
+    sign = s;
+  }
+  return true;
+}
+
 Dyadic Dyadic::of(double x) {
+  if (x == 0) return {};
   int e = 0;
   const double m = std::frexp(x, &e);  // x = m 2^e, 0.5 <= |m| < 1
-  Dyadic d{Int(long(std::ldexp(m, 53))), 0};
-  if (e - 53 >= 0) {
-    d.a = d.a << unsigned(e - 53);
-  } else {
-    d.k = unsigned(53 - e);
-  }
-  return d;
+  long a = long(std::ldexp(m, 53));    // x = a 2^(e - 53), exactly
+  const int zeros = __builtin_ctzl(a < 0 ? 0 - (unsigned long)a : (unsigned long)a);
+  a /= long(1) << zeros;  // the fewest bits, so that the integers built from it stay small
+  const int k = 53 - e - zeros;
+  if (k >= 0) return {Int(a), unsigned(k)};
+  return {Int(a) << unsigned(-k), 0};
 }
 
 mpq_class Dyadic::value() const {

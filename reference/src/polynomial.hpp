@@ -54,11 +54,15 @@ Poly sum_of_products(std::initializer_list<Product> terms);
 Poly derivative(const Poly& p);
 Poly gcd(const Poly& a, const Poly& b);  // primitive, positive leading coefficient; gcd(0,0) = 0
 
+// True if p certainly has no root in [0, 1]: its Bernstein coefficients on [0, 1] all have
+// one strict sign. A cheap exact test before gcds and Sturm sequences.
+bool no_root_in_unit(const Poly& p);
+
 // The dyadic number a / 2^k.
 struct Dyadic {
   Int a;
   unsigned long k = 0;
-  static Dyadic of(double x);  // exact
+  static Dyadic of(double x);  // exact, with the smallest k >= 0
   mpq_class value() const;
 };
 int sign_at(const Poly& p, const Dyadic& t);
