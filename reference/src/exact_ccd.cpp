@@ -73,12 +73,13 @@ std::array<PVec, 4> integer_paths(const Query& q) {
       e = algebra::Dyadic::of(j == 0 ? q.x[i].x : j == 1 ? q.x[i].y : q.x[i].z);
       k = std::max(k, e.k);
     }
-  algebra::Int z[24];
-  for (int i = 0; i < 24; ++i) z[i] = d[i].a << (k - d[i].k);
+  for (algebra::Dyadic& e : d) mul_2exp(e.a, e.a, k - e.k);
   std::array<PVec, 4> v;
-  for (int i = 0; i < 4; ++i)
-    v[i] = {Poly::linear(z[3 * i], z[3 * i + 12]), Poly::linear(z[3 * i + 1], z[3 * i + 13]),
-            Poly::linear(z[3 * i + 2], z[3 * i + 14])};
+  for (int i = 0; i < 4; ++i) {
+    v[i].x = Poly::linear(d[3 * i].a, d[3 * i + 12].a);
+    v[i].y = Poly::linear(d[3 * i + 1].a, d[3 * i + 13].a);
+    v[i].z = Poly::linear(d[3 * i + 2].a, d[3 * i + 14].a);
+  }
   return v;
 }
 

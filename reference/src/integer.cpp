@@ -26,8 +26,8 @@ class Buffer {
   mp_limb_t* data_;
 };
 
-// r = x + y on magnitudes with signed sizes. r has room for max(|xn|, |yn|) + 1 limbs and
-// overlaps neither operand. Returns r's signed size.
+// r = x + y on magnitudes with signed sizes. r has room for max(|xn|, |yn|) + 1 limbs; it may be
+// x or y (GMP's mpn functions allow exact overlap, not partial). Returns r's signed size.
 Size add_limbs(mp_limb_t* r, const mp_limb_t* x, Size xn, const mp_limb_t* y, Size yn) {
   Size ax = std::abs(xn), ay = std::abs(yn);
   const bool same_sign = (xn < 0) == (yn < 0);
@@ -54,10 +54,21 @@ Size multiply_limbs(mp_limb_t* r, const mp_limb_t* x, Size xn, const mp_limb_t* 
   Size ax = std::abs(xn), ay = std::abs(yn);
   if (ax == 0 || ay == 0) return 0;
   if (ax < ay) std::swap(x, y), std::swap(ax, ay);  // mpn_mul wants the longer one first
-  if (ay == 1)
+  if (ax <= 2) {  // schoolbook on 64-bit halves of 128-bit products: no call into GMP
+    using u128 = unsigned __int128;
+    const u128 p00 = u128(x[0]) * y[0];
+    const u128 p10 = ax == 2 ? u128(x[1]) * y[0] : 0, p01 = ay == 2 ? u128(x[0]) * y[1] : 0;
+    const u128 p11 = ay == 2 ? u128(x[1]) * y[1] : 0;
+    const u128 mid = (p00 >> 64) + mp_limb_t(p10) + mp_limb_t(p01);  // < 3 2^64: no overflow
+    const u128 high = (mid >> 64) + (p10 >> 64) + (p01 >> 64) + mp_limb_t(p11);
+    const mp_limb_t d[4] = {mp_limb_t(p00), mp_limb_t(mid), mp_limb_t(high),
+                            mp_limb_t(high >> 64) + mp_limb_t(p11 >> 64)};
+    std::copy(d, d + ax + ay, r);
+  } else if (ay == 1) {
     r[ax] = mpn_mul_1(r, x, ax, y[0]);
-  else
+  } else {
     mpn_mul(r, x, ax, y, ay);
+  }
   const Size n = ax + ay - (r[ax + ay - 1] == 0);
   return (xn < 0) != (yn < 0) ? -n : n;
 }
@@ -123,9 +134,14 @@ void Int::sum(Int& r, const Int& a, const Int& b, bool subtract) {
   if (a.machine(&x) && b.machine(&y) &&
       !(subtract ? __builtin_sub_overflow(x, y, &z) : __builtin_add_overflow(x, y, &z)))
     return r.set(z);
-  Buffer s(std::max(a.length(), b.length()) + 1);
-  const Size n =
-      add_limbs(s.data(), a.limbs(), a.size_, b.limbs(), subtract ? -Size(b.size_) : b.size_);
+  const int room = std::max(a.length(), b.length()) + 1;
+  const Size bn = subtract ? -Size(b.size_) : b.size_;
+  if (room <= r.capacity_) {  // straight into r, which may be a or b
+    r.size_ = int(add_limbs(r.data(), a.limbs(), a.size_, b.limbs(), bn));
+    return;
+  }
+  Buffer s(room);
+  const Size n = add_limbs(s.data(), a.limbs(), a.size_, b.limbs(), bn);
   r.assign(s.data(), int(std::abs(n)), n < 0);
 }
 
@@ -183,7 +199,12 @@ int compare_abs(const Int& a, const Int& b) {
 void mul(Int& r, const Int& a, const Int& b) {
   __int128 x, y, z;
   if (a.machine(&x) && b.machine(&y) && !__builtin_mul_overflow(x, y, &z)) return r.set(z);
-  Buffer p(a.length() + b.length());
+  const int room = a.length() + b.length();
+  if (room <= r.capacity_ && &r != &a && &r != &b) {  // straight into r
+    r.size_ = int(multiply_limbs(r.data(), a.limbs(), a.size_, b.limbs(), b.size_));
+    return;
+  }
+  Buffer p(room);
   const Size n = multiply_limbs(p.data(), a.limbs(), a.size_, b.limbs(), b.size_);
   r.assign(p.data(), int(std::abs(n)), n < 0);
 }
@@ -192,6 +213,12 @@ void mul_2exp(Int& r, const Int& a, unsigned long k) {
   const Size n = a.length(), whole = Size(k / GMP_NUMB_BITS);
   const unsigned bits = unsigned(k % GMP_NUMB_BITS);
   if (n == 0) return r.assign(nullptr, 0, false);
+  __int128 x;
+  if (k < 126 && a.machine(&x)) {  // the machine form while |x| 2^k < 2^126
+    using u128 = unsigned __int128;
+    const u128 m = x < 0 ? u128(0) - u128(x) : u128(x);
+    if (m >> (126 - k) == 0) return r.set(x < 0 ? -__int128(m << k) : __int128(m << k));
+  }
   Buffer s(n + whole + 1);
   mp_limb_t* d = s.data();
   std::fill(d, d + whole, mp_limb_t(0));
@@ -213,7 +240,12 @@ void Int::accumulate(Int& r, const Int& a, const Int& b, bool subtract) {
   Size pn = multiply_limbs(p.data(), a.limbs(), a.size_, b.limbs(), b.size_);
   if (pn == 0) return;
   if (subtract) pn = -pn;
-  Buffer s(std::max(Size(r.length()), std::abs(pn)) + 1);
+  const Size room = std::max(Size(r.length()), std::abs(pn)) + 1;
+  if (room <= r.capacity_) {  // in place
+    r.size_ = int(add_limbs(r.data(), r.data(), r.size_, p.data(), pn));
+    return;
+  }
+  Buffer s(room);
   const Size n = add_limbs(s.data(), r.limbs(), r.size_, p.data(), pn);
   r.assign(s.data(), int(std::abs(n)), n < 0);
 }

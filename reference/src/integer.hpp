@@ -66,6 +66,7 @@ class Int {
   static constexpr int kInline = 12;  // 768 bits: the CCD's polynomials, not its gcds
 
   const mp_limb_t* limbs() const { return heap_ ? heap_ : inline_; }
+  mp_limb_t* data() { return heap_ ? heap_ : inline_; }
   int length() const { return size_ < 0 ? -size_ : size_; }
   // Sets the value to the n limbs at d (not ours), negated if `negative`; n may have leading
   // zero limbs.

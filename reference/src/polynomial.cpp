@@ -202,7 +202,12 @@ void Poly::trim() {
 }
 
 Poly Poly::linear(const Int& at0, const Int& at1) {
-  return Poly({at0, at1 - at0});
+  Poly p;
+  p.c.resize(2);
+  p.c[0] = at0;
+  sub(p.c[1], at1, at0);
+  p.trim();
+  return p;
 }
 
 namespace {
