@@ -121,19 +121,7 @@ double Int::frexp(long* e) const {
   return mpz_get_d_2exp(e, view(v));
 }
 
-void add(Int& r, const Int& a, const Int& b) {
-  Int::sum(r, a, b, false);
-}
-
-void sub(Int& r, const Int& a, const Int& b) {
-  Int::sum(r, a, b, true);
-}
-
-void Int::sum(Int& r, const Int& a, const Int& b, bool subtract) {
-  __int128 x, y, z;
-  if (a.machine(&x) && b.machine(&y) &&
-      !(subtract ? __builtin_sub_overflow(x, y, &z) : __builtin_add_overflow(x, y, &z)))
-    return r.set(z);
+void Int::sum_limbs(Int& r, const Int& a, const Int& b, bool subtract) {
   const int room = std::max(a.length(), b.length()) + 1;
   const Size bn = subtract ? -Size(b.size_) : b.size_;
   if (room <= r.capacity_) {  // straight into r, which may be a or b
@@ -196,9 +184,7 @@ int compare_abs(const Int& a, const Int& b) {
   return sign_of(mpn_cmp(a.limbs(), b.limbs(), a.length()));
 }
 
-void mul(Int& r, const Int& a, const Int& b) {
-  __int128 x, y, z;
-  if (a.machine(&x) && b.machine(&y) && !__builtin_mul_overflow(x, y, &z)) return r.set(z);
+void Int::product_limbs(Int& r, const Int& a, const Int& b) {
   const int room = a.length() + b.length();
   if (room <= r.capacity_ && &r != &a && &r != &b) {  // straight into r
     r.size_ = int(multiply_limbs(r.data(), a.limbs(), a.size_, b.limbs(), b.size_));
@@ -231,11 +217,7 @@ void mul_2exp(Int& r, const Int& a, unsigned long k) {
   r.assign(d, int(n + whole + 1), a.size_ < 0);
 }
 
-void Int::accumulate(Int& r, const Int& a, const Int& b, bool subtract) {
-  __int128 x, y, z, xy, t;
-  if (r.machine(&x) && a.machine(&y) && b.machine(&z) && !__builtin_mul_overflow(y, z, &xy) &&
-      !(subtract ? __builtin_sub_overflow(x, xy, &t) : __builtin_add_overflow(x, xy, &t)))
-    return r.set(t);
+void Int::accumulate_limbs(Int& r, const Int& a, const Int& b, bool subtract) {
   Buffer p(a.length() + b.length());
   Size pn = multiply_limbs(p.data(), a.limbs(), a.size_, b.limbs(), b.size_);
   if (pn == 0) return;
@@ -248,14 +230,6 @@ void Int::accumulate(Int& r, const Int& a, const Int& b, bool subtract) {
   Buffer s(room);
   const Size n = add_limbs(s.data(), r.limbs(), r.size_, p.data(), pn);
   r.assign(s.data(), int(std::abs(n)), n < 0);
-}
-
-void addmul(Int& r, const Int& a, const Int& b) {
-  Int::accumulate(r, a, b, false);
-}
-
-void submul(Int& r, const Int& a, const Int& b) {
-  Int::accumulate(r, a, b, true);
 }
 
 void negate(Int& r) {

@@ -87,8 +87,30 @@ class Int {
     o.heap_ = nullptr, o.capacity_ = kInline, o.size_ = 0;
   }
   mpz_srcptr view(mpz_ptr scratch) const;  // a read-only GMP view of the limbs
-  static void sum(Int& r, const Int& a, const Int& b, bool subtract);         // r = a + or - b
-  static void accumulate(Int& r, const Int& a, const Int& b, bool subtract);  // r += or -= a b
+  // r = a + or - b, r += or -= a b, r = a b: the machine fast path inline (the polynomial
+  // loops mostly take it), GMP's limbs out of line (the *_limbs, integer.cpp).
+  static void sum(Int& r, const Int& a, const Int& b, bool subtract) {
+    __int128 x, y, z;
+    if (a.machine(&x) && b.machine(&y) &&
+        !(subtract ? __builtin_sub_overflow(x, y, &z) : __builtin_add_overflow(x, y, &z)))
+      return r.set(z);
+    sum_limbs(r, a, b, subtract);
+  }
+  static void accumulate(Int& r, const Int& a, const Int& b, bool subtract) {
+    __int128 x, y, z, xy, t;
+    if (r.machine(&x) && a.machine(&y) && b.machine(&z) && !__builtin_mul_overflow(y, z, &xy) &&
+        !(subtract ? __builtin_sub_overflow(x, xy, &t) : __builtin_add_overflow(x, xy, &t)))
+      return r.set(t);
+    accumulate_limbs(r, a, b, subtract);
+  }
+  static void product(Int& r, const Int& a, const Int& b) {
+    __int128 x, y, z;
+    if (a.machine(&x) && b.machine(&y) && !__builtin_mul_overflow(x, y, &z)) return r.set(z);
+    product_limbs(r, a, b);
+  }
+  static void sum_limbs(Int& r, const Int& a, const Int& b, bool subtract);
+  static void accumulate_limbs(Int& r, const Int& a, const Int& b, bool subtract);
+  static void product_limbs(Int& r, const Int& a, const Int& b);
   // The machine fast path: most values of the hard families fit 127 bits, and __int128
   // arithmetic with overflow checks (__builtin_*_overflow) beats any call into GMP.
   bool machine(__int128* v) const {  // false if |value| >= 2^127
@@ -122,13 +144,24 @@ Int gcd(const Int& a, const Int& b);
 Int divexact(const Int& a, const Int& b);
 int compare(const Int& a, const Int& b);
 int compare_abs(const Int& a, const Int& b);
-void add(Int& r, const Int& a, const Int& b);
-void sub(Int& r, const Int& a, const Int& b);
-void mul(Int& r, const Int& a, const Int& b);
 void mul_2exp(Int& r, const Int& a, unsigned long k);
-void addmul(Int& r, const Int& a, const Int& b);
-void submul(Int& r, const Int& a, const Int& b);
 void negate(Int& r);
+
+inline void add(Int& r, const Int& a, const Int& b) {
+  Int::sum(r, a, b, false);
+}
+inline void sub(Int& r, const Int& a, const Int& b) {
+  Int::sum(r, a, b, true);
+}
+inline void mul(Int& r, const Int& a, const Int& b) {
+  Int::product(r, a, b);
+}
+inline void addmul(Int& r, const Int& a, const Int& b) {
+  Int::accumulate(r, a, b, false);
+}
+inline void submul(Int& r, const Int& a, const Int& b) {
+  Int::accumulate(r, a, b, true);
+}
 
 inline Int operator-(const Int& a) {
   Int r = a;

@@ -252,11 +252,10 @@ Poly sum_of_products(std::initializer_list<Product> terms) {
     if (!t.a.is_zero() && !t.b.is_zero()) n = std::max(n, t.a.c.size() + t.b.c.size() - 1);
   Poly out;
   out.c.resize(n);
-  for (const Product& t : terms) {
-    const auto accumulate = t.minus ? &submul : &addmul;
+  for (const Product& t : terms)
     for (std::size_t i = 0; i < t.a.c.size(); ++i)
-      for (std::size_t j = 0; j < t.b.c.size(); ++j) accumulate(out.c[i + j], t.a.c[i], t.b.c[j]);
-  }
+      for (std::size_t j = 0; j < t.b.c.size(); ++j)
+        (t.minus ? submul : addmul)(out.c[i + j], t.a.c[i], t.b.c[j]);
   out.trim();
   return out;
 }
