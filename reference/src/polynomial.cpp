@@ -59,52 +59,61 @@ InlineVector<Poly, 5> sturm_sequence(const Poly& s) {
   return seq;
 }
 
-// Sign variations of the sequence at t, zeros dropped. For squarefree s, V(a) - V(b) is the
-// number of distinct roots in (a, b] (Sturm's theorem with the half-open convention).
-int variations(const InlineVector<Poly, 5>& seq, const Dyadic& t) {
-  int v = 0, last = 0;
-  for (const Poly& p : seq) {
-    const int s = sign_at(p, t);
-    if (s == 0) continue;
-    if (last != 0 && s != last) ++v;
-    last = s;
-  }
-  return v;
-}
+// What isolation needs at a point t: the sign variations V of the Sturm sequence there, zeros
+// dropped, and the sign of s itself (the sequence's first element). For squarefree s,
+// V(a) - V(b) is the number of distinct roots in (a, b] (Sturm's theorem, half-open).
+struct SturmAt {
+  int v = 0, s = 0;
+};
 
 struct Isolator {
   const Poly& s;
   InlineVector<Poly, 5> seq;
   Roots out;
 
-  int count(const Int& a, const Int& b, unsigned long k) const {
-    return variations(seq, {a, k}) - variations(seq, {b, k});
+  SturmAt at(const Int& a, unsigned long k) const {
+    SturmAt r;
+    int last = 0;
+    for (const Poly& p : seq) {
+      const int sp = sign_at(p, Dyadic{a, k});
+      if (&p == &seq[0]) r.s = sp;
+      if (sp == 0) continue;
+      if (last != 0 && sp != last) ++r.v;
+      last = sp;
+    }
+    return r;
   }
 
-  // Appends the roots in (a, b] / 2^k, in order.
-  void isolate(const Int& a0, const Int& b0, unsigned long k) {
-    const int n = count(a0, b0, k);
+  // Appends the roots in (a, b] / 2^k, in order, given the sequence at both ends (each point is
+  // evaluated once).
+  void isolate(const Int& a0, const Int& b0, unsigned long k, SturmAt fa, SturmAt fb) {
+    const int n = fa.v - fb.v;
     if (n == 0) return;
     if (n > 1) {
       const Int m = a0 + b0;
-      isolate(a0 << 1, m, k + 1);
-      isolate(m, b0 << 1, k + 1);
+      const SturmAt fm = at(m, k + 1);
+      isolate(a0 << 1, m, k + 1, fa, fm);
+      isolate(m, b0 << 1, k + 1, fm, fb);
       return;
     }
-    if (sign_at(s, Dyadic{b0, k}) == 0) {
+    if (fb.s == 0) {
       out.push_back(Root{&s, b0, b0, k});
       return;
     }
     // One root in (a, b). Move a off a root of s so that s changes sign across (a, b).
     Int a = a0, b = b0;
-    while (sign_at(s, Dyadic{a, k}) == 0) {
+    while (fa.s == 0) {
       const Int m = a + b;
       a = a << 1, b = b << 1, ++k;
-      if (sign_at(s, Dyadic{m, k}) == 0) {
+      const SturmAt fm = at(m, k);
+      if (fm.s == 0) {
         out.push_back(Root{&s, m, m, k});
         return;
       }
-      (count(m, b, k) == 1 ? a : b) = m;
+      if (fm.v - fb.v == 1)
+        a = m, fa = fm;
+      else
+        b = m, fb = fm;
     }
     out.push_back(Root{&s, a, b, k});
   }
@@ -361,8 +370,9 @@ Roots roots_in(Poly& s, const Dyadic& t0, const Dyadic& t1) {
   Isolator iso{s, std::move(seq), {}};
   const unsigned long k = std::max(t0.k, t1.k);
   const Int a = shifted(t0.a, k - t0.k), b = shifted(t1.a, k - t1.k);
-  if (sign_at(s, t0) == 0) iso.out.push_back(Root{&s, a, a, k});
-  if (a < b) iso.isolate(a, b, k);
+  const SturmAt fa = iso.at(a, k);
+  if (fa.s == 0) iso.out.push_back(Root{&s, a, a, k});
+  if (a < b) iso.isolate(a, b, k, fa, iso.at(b, k));
   return iso.out;
 }
 
