@@ -7,7 +7,7 @@
 // polynomial then has integer coefficients, every point where we evaluate is dyadic (a / 2^k),
 // and remainders are pseudo-remainders scaled by positive factors. No rational is ever
 // normalized, which is where GMP rationals spend their time. The integers are Int
-// (integer.hpp): machine integers while they fit, GMP's beyond.
+// (integer.hpp): machine integers while they fit, GMP's mpn layer on inline limbs beyond.
 //
 // Why Sturm and bisection rather than CGAL's algebraic kernel: every polynomial here has degree
 // <= 4 and we only ever ask "the roots in [t0, t1], in order" and "the sign of g at this root".
