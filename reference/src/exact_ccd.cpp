@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -34,32 +33,88 @@ Poly dot(const PVec& a, const PVec& b) {
   return algebra::sum_of_products({{a.x, b.x}, {a.y, b.y}, {a.z, b.z}});
 }
 
-bool zero_at(const PVec& v, Root& r) {
-  return sign_at(v.x, r) == 0 && sign_at(v.y, r) == 0 && sign_at(v.z, r) == 0;
+// A point or vector at one dyadic time t = a / 2^k with its coordinates scaled by 2^k (each
+// coordinate of a moving point is linear: c0 2^k + c1 a). The contact conditions are
+// homogeneous in the coordinates, so their signs at an exact time need no polynomial.
+struct IVec {
+  algebra::Int x, y, z;
+};
+algebra::Int at(const Poly& p, const algebra::Dyadic& t) {  // p of degree <= 1, times 2^k
+  algebra::Int v;
+  if (!p.is_zero()) mul_2exp(v, p.c[0], t.k);
+  if (p.degree() == 1) addmul(v, p.c[1], t.a);
+  return v;
+}
+IVec at(const PVec& v, const algebra::Dyadic& t) {
+  return {at(v.x, t), at(v.y, t), at(v.z, t)};
+}
+IVec operator-(const IVec& a, const IVec& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+IVec cross(const IVec& a, const IVec& b) {
+  IVec r;
+  mul(r.x, a.y, b.z), submul(r.x, a.z, b.y);
+  mul(r.y, a.z, b.x), submul(r.y, a.x, b.z);
+  mul(r.z, a.x, b.y), submul(r.z, a.y, b.x);
+  return r;
+}
+algebra::Int dot(const IVec& a, const IVec& b) {
+  algebra::Int r;
+  mul(r, a.x, b.x), addmul(r, a.y, b.y), addmul(r, a.z, b.z);
+  return r;
 }
 
-// A polynomial built on first use: the contact conditions are asked in order, and the first
-// ones mostly decide.
-template <class Make>
-class Lazy {
- public:
-  explicit Lazy(Make make) : make_(std::move(make)) {}
-  const Poly& operator*() {
-    if (!p_) p_ = make_();
-    return *p_;
-  }
+// The contact conditions, once for both forms: V = PVec with sign(g) the sign of the polynomial
+// g at a root, or V = IVec with sign(x) the sign of the integer x at an exact time. Each
+// condition is built only when asked: most roots are decided by the first one or two.
+template <class V, class Sign>
+bool is_zero_at(const V& v, Sign sign) {
+  return sign(v.x) == 0 && sign(v.y) == 0 && sign(v.z) == 0;
+}
 
- private:
-  Make make_;
-  std::optional<Poly> p_;
-};
-
-// Closed segment membership, degenerate segments included: p is on [a, b] at r iff p - a is
+// Closed segment membership, degenerate segments included: p is on [a, b] iff p - a is
 // parallel to b - a, w = (p - a) x (b - a) = 0, and h = (p - a).(p - b) <= 0. With a = b, w
-// vanishes and h is |p - a|^2, so only p = a passes. h is built only once p is on the line.
-bool on_segment(const PVec& p, const PVec& a, const PVec& b, Root& r) {
-  const PVec pa = p - a;
-  return zero_at(cross(pa, b - a), r) && sign_at(dot(pa, p - b), r) <= 0;
+// vanishes and h is |p - a|^2, so only p = a passes.
+template <class V, class Sign>
+bool on_segment(const V& p, const V& a, const V& b, Sign sign) {
+  const V pa = p - a;
+  return is_zero_at(cross(pa, b - a), sign) && sign(dot(pa, p - b)) <= 0;
+}
+
+// p in the closed triangle abc, given coplanarity; bc = (b - p) x (c - p), shared with f.
+template <class V, class Sign>
+bool inside(const V& p, const V& a, const V& b, const V& c, const V& bc, Sign sign) {
+  const V n = cross(b - a, c - a);
+  if (is_zero_at(n, sign))  // a zero-area triangle is the union of its edges
+    return on_segment(p, a, b, sign) || on_segment(p, b, c, sign) || on_segment(p, c, a, sign);
+  // |n|^2 times p's barycentric coordinates.
+  if (sign(dot(n, bc)) < 0) return false;
+  const V ap = a - p;
+  return sign(dot(n, cross(c - p, ap))) >= 0 && sign(dot(n, cross(ap, b - p))) >= 0;
+}
+
+// The closed segments [a0, a1] and [b0, b1] meet, given coplanarity; web = (b0 - a0) x
+// (b1 - b0), shared with f.
+template <class V, class Sign>
+bool meet(const V& a0, const V& a1, const V& b0, const V& b1, const V& web, Sign sign) {
+  const V ea = a1 - a0, m = cross(ea, b1 - b0);
+  if (is_zero_at(m, sign))  // parallel or zero-length: an end of one lies on the other
+    return on_segment(a0, b0, b1, sign) || on_segment(a1, b0, b1, sign) ||
+           on_segment(b0, a0, a1, sign) || on_segment(b1, a0, a1, sign);
+  // With m != 0: a0 + (s/mm) ea = b0 + (u/mm) eb.
+  const auto s = dot(web, m), u = dot(cross(b0 - a0, ea), m);
+  if (sign(s) < 0 || sign(u) < 0) return false;
+  const auto mm = dot(m, m);
+  return sign(mm - s) >= 0 && sign(mm - u) >= 0;
+}
+
+// The signs that the conditions take: of a polynomial at a root, or of an integer.
+struct SignAt {
+  Root& r;
+  int operator()(const Poly& g) const { return sign_at(g, r); }
+};
+int integer_sign(const algebra::Int& x) {
+  return x.sign();
 }
 
 // The four moving points with their coordinates scaled by one power of two into integers:
@@ -171,59 +226,50 @@ bool Search::point_point(const PVec& p, const PVec& a) {
 // of the cross product. If they are, the first contact is at the start or where p meets an end.
 bool Search::point_edge(const PVec& p, const PVec& a, const PVec& b) {
   // As on_segment, over the step.
-  const PVec pa = p - a, w = cross(pa, b - a);
-  Lazy h([&] { return dot(pa, p - b); });
-  if (!w.is_zero())
-    return first_common_root({&w.x, &w.y, &w.z}, [&](Root& r) { return sign_at(*h, r) <= 0; });
-  if (algebra::sign_at(*h, t0_) <= 0) return found_at_start();
+  const PVec w = cross(p - a, b - a);
+  const auto h_at_most_0 = [&](Root& r) {  // (p - a).(p - b) <= 0
+    if (!r.exact()) return sign_at(dot(p - a, p - b), r) <= 0;
+    const IVec pt = at(p, r.lo());
+    return dot(pt - at(a, r.lo()), pt - at(b, r.lo())).sign() <= 0;
+  };
+  if (!w.is_zero()) return first_common_root({&w.x, &w.y, &w.z}, h_at_most_0);
+  Root start = Root::at(t0_);
+  if (h_at_most_0(start)) return found_at_start();
   const bool hit_a = point_point(p, a);
   if (done()) return true;
   return point_point(p, b) || hit_a;
 }
 
 void Search::vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec& c) {
-  const PVec ap = a - p, bp = b - p, cp = c - p, bc = cross(bp, cp);
-  const Poly f = dot(ap, bc);  // 6 x signed volume: 0 iff coplanar
+  const PVec bc = cross(b - p, c - p);
+  const Poly f = dot(a - p, bc);  // 6 x signed volume: 0 iff coplanar
   algebra::Roots times = f.is_zero() ? algebra::Roots{} : common_roots({&f});
   if (!f.is_zero() && times.empty()) return;  // never coplanar: the common case, decided here
-  const PVec n = cross(b - a, c - a);
-  // At a coplanar time with n != 0, these are |n|^2 times p's barycentric coordinates.
-  Lazy ga([&] { return dot(n, bc); });
-  Lazy gb([&] { return dot(n, cross(cp, ap)); });
-  Lazy gc([&] { return dot(n, cross(ap, bp)); });
-  const auto inside = [&](Root& r) {  // p in the closed triangle, given coplanarity at r
-    if (!zero_at(n, r)) return sign_at(*ga, r) >= 0 && sign_at(*gb, r) >= 0 && sign_at(*gc, r) >= 0;
-    // A zero-area triangle is the union of its edges.
-    return on_segment(p, a, b, r) || on_segment(p, b, c, r) || on_segment(p, c, a, r);
+  const auto touch = [&](Root& r) {
+    if (!r.exact()) return inside(p, a, b, c, bc, SignAt{r});
+    const algebra::Dyadic t = r.lo();  // an exact time: on integers, no polynomial
+    const IVec pt = at(p, t), bt = at(b, t), ct = at(c, t);
+    return inside(pt, at(a, t), bt, ct, cross(bt - pt, ct - pt), integer_sign);
   };
   // Coplanar throughout: a first contact after the start puts p on an edge, since inside a
   // non-degenerate triangle it would have been inside a moment earlier.
-  first_contact(f, std::move(times), inside, {{&p, &a, &b}, {&p, &b, &c}, {&p, &c, &a}});
+  first_contact(f, std::move(times), touch, {{&p, &a, &b}, {&p, &b, &c}, {&p, &c, &a}});
 }
 
 void Search::edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVec& b1) {
-  const PVec ea = a1 - a0, eb = b1 - b0, w = b0 - a0, web = cross(w, eb);
-  const Poly f = dot(ea, web);  // w x eb = w x (b1 - a0): 0 iff coplanar
+  const PVec web = cross(b0 - a0, b1 - b0);
+  const Poly f = dot(a1 - a0, web);  // 0 iff coplanar
   algebra::Roots times = f.is_zero() ? algebra::Roots{} : common_roots({&f});
   if (!f.is_zero() && times.empty()) return;
-  const PVec m = cross(ea, eb);
-  // At a coplanar time with m != 0: a0 + (s/mm) ea = b0 + (u/mm) eb.
-  Lazy s([&] { return dot(web, m); });
-  Lazy u([&] { return dot(cross(w, ea), m); });
-  Lazy mm([&] { return dot(m, m); });
-  Lazy mm_s([&] { return *mm - *s; });
-  Lazy mm_u([&] { return *mm - *u; });
-  const auto meet = [&](Root& r) {  // the closed segments meet, given coplanarity at r
-    if (!zero_at(m, r))
-      return sign_at(*s, r) >= 0 && sign_at(*u, r) >= 0 && sign_at(*mm_s, r) >= 0 &&
-             sign_at(*mm_u, r) >= 0;
-    // Parallel or zero-length: they meet iff an end of one lies on the other.
-    return on_segment(a0, b0, b1, r) || on_segment(a1, b0, b1, r) || on_segment(b0, a0, a1, r) ||
-           on_segment(b1, a0, a1, r);
+  const auto touch = [&](Root& r) {
+    if (!r.exact()) return meet(a0, a1, b0, b1, web, SignAt{r});
+    const algebra::Dyadic t = r.lo();  // an exact time: on integers, no polynomial
+    const IVec at0 = at(a0, t), bt0 = at(b0, t), bt1 = at(b1, t);
+    return meet(at0, at(a1, t), bt0, bt1, cross(bt0 - at0, bt1 - bt0), integer_sign);
   };
   // Coplanar throughout: segments that cross properly crossed a moment earlier too, so a first
   // contact after the start puts an end of one on the other.
-  first_contact(f, std::move(times), meet,
+  first_contact(f, std::move(times), touch,
                 {{&a0, &b0, &b1}, {&a1, &b0, &b1}, {&b0, &a0, &a1}, {&b1, &a0, &a1}});
 }
 
