@@ -63,7 +63,7 @@ Size multiply_limbs(mp_limb_t* r, const mp_limb_t* x, Size xn, const mp_limb_t* 
     const u128 high = (mid >> 64) + (p10 >> 64) + (p01 >> 64) + mp_limb_t(p11);
     const mp_limb_t d[4] = {mp_limb_t(p00), mp_limb_t(mid), mp_limb_t(high),
                             mp_limb_t(high >> 64) + mp_limb_t(p11 >> 64)};
-    std::copy(d, d + ax + ay, r);
+    for (Size i = 0; i < ax + ay; ++i) r[i] = d[i];  // a call to memmove costs more
   } else if (ay == 1) {
     r[ax] = mpn_mul_1(r, x, ax, y[0]);
   } else {

@@ -4,6 +4,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 
 namespace fdh::exact::algebra {
@@ -329,14 +330,18 @@ bool no_root_in_unit(const Poly& p) {
 
 Dyadic Dyadic::of(double x) {
   if (x == 0) return {};
-  int e = 0;
-  const double m = std::frexp(x, &e);  // x = m 2^e, 0.5 <= |m| < 1
-  long a = long(std::ldexp(m, 53));    // x = a 2^(e - 53), exactly
-  const int zeros = __builtin_ctzl(a < 0 ? 0 - (unsigned long)a : (unsigned long)a);
-  a /= long(1) << zeros;  // the fewest bits, so that the integers built from it stay small
-  const int k = 53 - e - zeros;
-  if (k >= 0) return {Int(a), unsigned(k)};
-  return {Int(a) << unsigned(-k), 0};
+  // IEEE 754 binary64: x = m 2^e with m the significand (the hidden bit set unless subnormal).
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &x, sizeof bits);
+  const int biased = int(bits >> 52 & 0x7ff);
+  std::uint64_t m = bits & ((std::uint64_t(1) << 52) - 1);
+  int e = -1074;
+  if (biased != 0) m |= std::uint64_t(1) << 52, e = biased - 1075;
+  const int zeros = __builtin_ctzll(m);  // the fewest bits, so that the integers stay small
+  m >>= zeros, e += zeros;
+  const Int a(bits >> 63 ? -long(m) : long(m));
+  if (e <= 0) return {a, unsigned(-e)};
+  return {a << unsigned(e), 0};
 }
 
 mpq_class Dyadic::value() const {

@@ -101,6 +101,18 @@ TEST(Polynomial, NoRootInTheUnitIntervalIsNeverWrongAndOftenDecides) {
   EXPECT_GT(decided, without / 2);  // the test is of use, not only safe
 }
 
+TEST(Polynomial, DyadicOfADoubleIsExactWithTheFewestBits) {
+  for (const double x : {0.0, 1.0, 0.5, -3.75, 0.1, -1e-17, 1e300, -0x1.fffffffffffffp+1023,
+                         0x1p-1074, 0x1.8p-1070, 0x1p-1022, 3.0 * 0x1p60, 0x1.c8p-4}) {
+    const Dyadic d = Dyadic::of(x);
+    EXPECT_EQ(d.value(), mpq_class(x)) << x;
+    // a odd unless k = 0: no factor of two left to drop
+    if (d.k > 0) {
+      EXPECT_TRUE(mpz_odd_p(d.a.to_mpz().get_mpz_t())) << x;
+    }
+  }
+}
+
 TEST(Polynomial, InlineVectorRefusesMoreThanItsCapacity) {
   Coeffs c(5);
   EXPECT_THROW(c.push_back(Int(1)), std::length_error);
