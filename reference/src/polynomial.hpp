@@ -48,8 +48,8 @@ struct Product {
   const Poly& b;
   bool minus = false;
 };
-// The sum of the terms, accumulated in place: no product becomes a polynomial of its own (each
-// temporary costs an allocation per coefficient). The cross and dot products are made of these.
+// The sum of the terms, accumulated in place: no product becomes a polynomial of its own. The
+// cross and dot products are made of these.
 Poly sum_of_products(std::initializer_list<Product> terms);
 Poly derivative(const Poly& p);
 Poly gcd(const Poly& a, const Poly& b);  // primitive, positive leading coefficient; gcd(0,0) = 0

@@ -9,8 +9,8 @@
 // sequences and the inside test is decided by exact signs at each root. If it is identically
 // zero, the first contact is at the start or where a vertex meets an edge, and the same
 // reasoning recurses to point-edge and point-point problems. Exact integers throughout: machine
-// integers while they fit, GMP's mpn layer on limbs kept inline beyond, no heap allocation for
-// the benchmark's polynomials (reference/src/integer.hpp, inline_vector.hpp).
+// integers while they fit, GMP's mpn layer on limbs kept inline beyond: heap allocation only for
+// integers beyond 768 bits (reference/src/integer.hpp, inline_vector.hpp).
 #pragma once
 
 #include <string>
