@@ -5,10 +5,11 @@
 //
 // Why: scaled by one power of two into integers, the benchmark's coordinates have up to about
 // 110 bits and the polynomials built from them (degree 4 in the coordinates) some 450-700;
-// GMP's integers allocate every value on the heap, which was half of the exact test's time. The
-// arithmetic is GMP's own low-level layer (mpn_*) on limbs that we own: each operation writes
-// its result to a stack buffer, then copies it in, so any operand may alias the result. gcd and
-// exact division go through GMP's integers on read-only views of our limbs (mpz_roinit_n).
+// GMP's integers allocate every value on the heap, which was about half of the exact test's
+// time. The arithmetic is GMP's own low-level layer (mpn_*) on limbs that we own, written
+// straight into the result when it has room (GMP allows an exact overlap of result and
+// operand), else through a stack buffer, so any operand may alias the result. gcd and exact
+// division go through GMP's integers on read-only views of our limbs (mpz_roinit_n).
 // tests/reference/test_integer.cpp compares every operation with GMP's around limb boundaries.
 #pragma once
 
