@@ -16,10 +16,9 @@ double det(const Vec3& u, const Vec3& v, const Vec3& w) {
 // f(t) = det(U(t), V(t), W(t)) with U(t) = (1 - t) U0 + t U1 and so on. By multilinearity its
 // Bernstein coefficients on [0, 1] are det(U0,V0,W0), the means of the three determinants with
 // one vector at t = 1, of those with two, and det(U1,V1,W1). f lies in their convex hull.
-// Each vector is one rounded difference, so each determinant is off by at most 48 eps P with
-// P = Mx My Mz the product of the largest |coordinates| over all six vectors (as in
-// orient3d_filter.hpp); a sum of three is off by at most 3 x 48 eps P plus two roundings of at
-// most 18 (1 + eps) P eps each: below 192 eps P.
+// Each vector is one rounded difference, so each determinant is off by at most
+// kOrient3dErrBound P with P = Mx My Mz the product of the largest |coordinates| over all six
+// vectors, and a mean of three by kOrient3dMeanOfThreeErrBound P (orient3d_filter.hpp).
 struct Bernstein {
   double b[4];
   double err;   // |computed - exact| for every coefficient
@@ -42,9 +41,9 @@ Bernstein bernstein(const Vec3 u[2], const Vec3 v[2], const Vec3 w[2]) {
   r.b[1] = (det(u[1], v[0], w[0]) + det(u[0], v[1], w[0]) + det(u[0], v[0], w[1])) / 3;
   r.b[2] = (det(u[1], v[1], w[0]) + det(u[1], v[0], w[1]) + det(u[0], v[1], w[1])) / 3;
   r.b[3] = det(u[1], v[1], w[1]);
-  // A sum of three is off by < 192 eps P, so its third by 64 eps P, plus the division's
-  // rounding (eps |b| <= 6 eps P: |det| <= 6 P).
-  r.err = 72 * kEps * p;
+  // b[0] and b[3] are off by kOrient3dErrBound P, b[1] and b[2] (means of three) by
+  // kOrient3dMeanOfThreeErrBound P, the larger: one bound for all four (orient3d_filter.hpp).
+  r.err = kOrient3dMeanOfThreeErrBound * p;
   r.bmax = 6 * p + r.err;
   return r;
 }
