@@ -1,6 +1,7 @@
 #include "fdh/ccd/robust.hpp"
 
 #include "fdh/interval.hpp"
+#include "fdh/orient3d_exact.hpp"
 #include "fdh/orient3d_filter.hpp"
 
 namespace fdh {
@@ -201,17 +202,63 @@ Filtered contact_at_root(const Query& q, const Bernstein& f, Piece p, int& evalu
   return outside ? Filtered::No : (inside ? Filtered::Yes : Filtered::Uncertain);
 }
 
+// True if some condition is certainly < 0 over the whole piece: no contact in it, whatever f.
+bool outside(const Query& q, const Piece& p) {
+  const Conditions c = conditions(q, p);
+  bool out = false;
+  for (int i = 0; i < c.n; ++i) out |= c.g[i].negative();
+  return out;
+}
+
+// A piece of [0, 1] that may hold a root of f, kept for later.
+struct Stack {
+  static constexpr int kMaxDepth = 8;
+  Piece piece[kMaxDepth + 2];
+  int top = 0;
+  void push(const Piece& p) { piece[top++] = p; }
+};
+
+// The piece p ends at t = `end` (0 or 1) and f's sign there is uncertain: a contact may sit
+// exactly at the start or the end. Settled here where floating point can settle it: the
+// conditions at the very instant `end`, bounded by intervals (tight there), say whether the
+// point (or the edges' crossing) is then inside; an exact sum of the volume (orient3d_exact.hpp)
+// says whether the four points are then coplanar. Inside and coplanar: a contact (yes). Some
+// condition certainly < 0 at `end`: none at that instant, nor, when the intervals confirm it,
+// on a sliver of the piece at that end, 2^-10 of it; the rest is pushed back for the search.
+// Otherwise uncertain.
+Filtered settle_end(const Query& q, const Piece& p, double end, Stack& stack, int& evaluations) {
+  if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
+  const auto eval = q.kind == QueryKind::VertexFace ? &vertex_face : &edge_edge;
+  const Conditions c = eval(q, Interval{end, end});
+  bool out = false, inside = true;
+  for (int i = 0; i < c.n; ++i) out |= c.g[i].negative(), inside &= c.g[i].positive();
+  if (inside) {
+    const Vec3* x = &q.x[end == 0 ? 0 : 4];
+    int volume = 1;
+    return exact_volume_sign(x[0], x[1], x[2], x[3], volume) && volume == 0 ? Filtered::Yes
+                                                                            : Filtered::Uncertain;
+  }
+  if (!out || p.depth == Stack::kMaxDepth || ++evaluations > kMaxEvaluations)
+    return Filtered::Uncertain;
+  // s and 1 - s exact, as split() needs.
+  Piece left, right;
+  split(p, end == 0 ? 0x1p-10 : 1 - 0x1p-10, left, right);
+  if (!outside(q, end == 0 ? left : right)) return Filtered::Uncertain;
+  stack.push(end == 0 ? right : left);
+  return Filtered::No;
+}
+
 // Stage 2: isolate the roots of f in [0, 1] by Bernstein subdivision (a piece whose
 // coefficients are certain and of one sign holds no root; one sign variation with
 // f(lo) f(hi) < 0 holds exactly one simple root), then decide the contact at each root.
 Filtered subdivide(const Query& q, const Bernstein& f) {
-  constexpr int kMaxPieces = 12, kMaxDepth = 8;
-  Piece stack[kMaxDepth + 2];
-  int top = 0, pieces = 0, evaluations = 0;
-  stack[top++] = {0, 1, 0, {f.b[0], f.b[1], f.b[2], f.b[3]}, 0};
+  constexpr int kMaxPieces = 12;
+  Stack stack;
+  int pieces = 0, evaluations = 0;
+  stack.push({0, 1, 0, {f.b[0], f.b[1], f.b[2], f.b[3]}, 0});
   bool uncertain = false;
-  while (top > 0) {
-    const Piece p = stack[--top];
+  while (stack.top > 0) {
+    const Piece p = stack.piece[--stack.top];
     const double err = bound(f, p.depth);
     const int v = variations(p, err);
     if (v == 0) continue;  // one certain sign: no root here
@@ -219,16 +266,17 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
       // f's sign is uncertain somewhere here (f may even vanish throughout, as for a cube
       // sliding on a plane): a condition certainly < 0 over the whole piece still excludes it.
       if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
-      const Conditions c = conditions(q, p);
-      bool outside = false;
-      for (int i = 0; i < c.n; ++i) outside |= c.g[i].negative();
-      if (outside) continue;
+      if (outside(q, p)) continue;
       // Smaller pieces would not show a sign either where f may vanish on the whole piece (no
-      // coefficient certain: coplanar motion) or at t = 0 or 1 (its first or last one
-      // uncertain there: a contact at the very start or end). The exact test decides.
-      if (flat(p, err) || (p.lo == 0 && sign_beyond(p.b[0], err) == 0) ||
-          (p.hi == 1 && sign_beyond(p.b[3], err) == 0))
-        return Filtered::Uncertain;
+      // coefficient certain: coplanar motion): the exact test decides. Nor at t = 0 or 1 when
+      // its first or last one is uncertain there: settle_end decides what it can.
+      if (flat(p, err)) return Filtered::Uncertain;
+      const bool open_start = p.lo == 0 && sign_beyond(p.b[0], err) == 0;
+      if (open_start || (p.hi == 1 && sign_beyond(p.b[3], err) == 0)) {
+        const Filtered r = settle_end(q, p, open_start ? 0 : 1, stack, evaluations);
+        if (r != Filtered::No) return r;
+        continue;
+      }
     }
     if (v == 1 && sign_beyond(p.b[0], err) != sign_beyond(p.b[3], err)) {
       const Filtered r = contact_at_root(q, f, p, evaluations);
@@ -236,7 +284,7 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
       uncertain |= r == Filtered::Uncertain;
       continue;
     }
-    if (p.depth == kMaxDepth || ++pieces > kMaxPieces) {
+    if (p.depth == Stack::kMaxDepth || ++pieces > kMaxPieces) {
       uncertain = true;
       continue;
     }
@@ -244,8 +292,8 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
     // a root never shows a certain sign there.
     Piece left, right;
     split(p, 7.0 / 16, left, right);
-    stack[top++] = right;
-    stack[top++] = left;
+    stack.push(right);
+    stack.push(left);
   }
   return uncertain ? Filtered::Uncertain : Filtered::No;
 }
