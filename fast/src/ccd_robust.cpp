@@ -1,5 +1,8 @@
 #include "fdh/ccd/robust.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "fdh/interval.hpp"
 #include "fdh/orient3d_exact.hpp"
 #include "fdh/orient3d_filter.hpp"
@@ -62,16 +65,22 @@ int bernstein_sign(const Bernstein& f) {
 
 // ---- Stage 2: the inside conditions by intervals, and root isolation by subdivision of f.
 
-struct IVec {
-  Interval x, y, z;
+// A point of the motion at a time t: an Interval (rigorous bounds over a time interval) or a
+// double (a plain estimate at one instant, for the cheap looks that only choose to give up).
+template <class T>
+struct V3 {
+  T x, y, z;
 };
-IVec operator-(const IVec& a, const IVec& b) {
+template <class T>
+V3<T> operator-(const V3<T>& a, const V3<T>& b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
-IVec cross(const IVec& a, const IVec& b) {
+template <class T>
+V3<T> cross(const V3<T>& a, const V3<T>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-Interval dot(const IVec& a, const IVec& b) {
+template <class T>
+T dot(const V3<T>& a, const V3<T>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
@@ -79,7 +88,11 @@ Interval lerp(double x0, double x1, const Interval& t) {
   const Interval a = Interval::point(x0);
   return a + t * (Interval::point(x1) - a);
 }
-IVec at(const Vec3& x0, const Vec3& x1, const Interval& t) {
+double lerp(double x0, double x1, double t) {
+  return x0 + t * (x1 - x0);
+}
+template <class T>
+V3<T> at(const Vec3& x0, const Vec3& x1, const T& t) {
   return {lerp(x0.x, x1.x, t), lerp(x0.y, x1.y, t), lerp(x0.z, x1.z, t)};
 }
 
@@ -87,26 +100,54 @@ IVec at(const Vec3& x0, const Vec3& x1, const Interval& t) {
 // same polynomials as reference/'s exact_ccd.cpp); g_i > 0 for all i implies contact, since the
 // g_i all vanish when the triangle has zero area or the edges are parallel. (f itself is
 // bounded on pieces by its Bernstein coefficients, not here.)
+template <class T>
 struct Conditions {
-  Interval g[4];
+  T g[4];
   int n = 0;
 };
 
-Conditions vertex_face(const Query& q, const Interval& t) {
-  const IVec p = at(q.x[0], q.x[4], t), a = at(q.x[1], q.x[5], t), b = at(q.x[2], q.x[6], t),
-             c = at(q.x[3], q.x[7], t);
-  const IVec ap = a - p, bp = b - p, cp = c - p, n = cross(b - a, c - a);
+template <class T>
+Conditions<T> vertex_face(const Query& q, const T& t) {
+  const V3<T> p = at(q.x[0], q.x[4], t), a = at(q.x[1], q.x[5], t), b = at(q.x[2], q.x[6], t),
+              c = at(q.x[3], q.x[7], t);
+  const V3<T> ap = a - p, bp = b - p, cp = c - p, n = cross(b - a, c - a);
   // |n|^2 times p's barycentric coordinates when coplanar.
   return {{dot(n, cross(bp, cp)), dot(n, cross(cp, ap)), dot(n, cross(ap, bp))}, 3};
 }
 
-Conditions edge_edge(const Query& q, const Interval& t) {
-  const IVec a0 = at(q.x[0], q.x[4], t), a1 = at(q.x[1], q.x[5], t), b0 = at(q.x[2], q.x[6], t),
-             b1 = at(q.x[3], q.x[7], t);
-  const IVec ea = a1 - a0, eb = b1 - b0, w = b0 - a0, m = cross(ea, eb);
-  const Interval mm = dot(m, m), s = dot(cross(w, eb), m), u = dot(cross(w, ea), m);
+template <class T>
+Conditions<T> edge_edge(const Query& q, const T& t) {
+  const V3<T> a0 = at(q.x[0], q.x[4], t), a1 = at(q.x[1], q.x[5], t), b0 = at(q.x[2], q.x[6], t),
+              b1 = at(q.x[3], q.x[7], t);
+  const V3<T> ea = a1 - a0, eb = b1 - b0, w = b0 - a0, m = cross(ea, eb);
+  const T mm = dot(m, m), s = dot(cross(w, eb), m), u = dot(cross(w, ea), m);
   // a0 + (s/mm) ea = b0 + (u/mm) eb when coplanar: both parameters in [0, 1].
   return {{s, mm - s, u, mm - u}, 4};
+}
+
+template <class T>
+Conditions<T> conditions_at(const Query& q, const T& t) {
+  return q.kind == QueryKind::VertexFace ? vertex_face(q, t) : edge_edge(q, t);
+}
+
+// What the conditions look like at one instant, estimated in plain floating point, relative to
+// the largest in size. Never a verdict: it only tells the filter where intervals would fail,
+// so that it gives up (or moves on) without paying for them.
+struct Look {
+  double lowest = 0;     // min g_i / size: clearly < 0 where well below the intervals' width
+  double near_zero = 0;  // min |g_i| / size: about 0 where below it
+  bool hopeless(double width) const { return near_zero <= width && lowest >= -width; }
+};
+Look look_at(const Query& q, double t) {
+  const Conditions<double> c = conditions_at(q, t);
+  double size = 0;
+  for (int i = 0; i < c.n; ++i) size = std::max(size, std::fabs(c.g[i]));
+  Look look{1, 1};
+  for (int i = 0; i < c.n; ++i) {
+    look.lowest = std::min(look.lowest, c.g[i] / size);
+    look.near_zero = std::min(look.near_zero, std::fabs(c.g[i]) / size);
+  }
+  return look;
 }
 
 // f on a piece of [0, 1], as its Bernstein coefficients there, found by de Casteljau
@@ -159,9 +200,8 @@ bool flat(const Piece& p, double err) {
 }
 
 // The conditions g_i over a piece: its rounded ends pushed out by twice its slack.
-Conditions conditions(const Query& q, const Piece& p) {
-  const auto eval = q.kind == QueryKind::VertexFace ? &vertex_face : &edge_edge;
-  return eval(q, Interval{p.lo - 2 * p.slack, p.hi + 2 * p.slack});
+Conditions<Interval> conditions(const Query& q, const Piece& p) {
+  return conditions_at(q, Interval{p.lo - 2 * p.slack, p.hi + 2 * p.slack});
 }
 
 // Interval evaluations of the conditions allowed per query. One costs some ten times the whole
@@ -186,6 +226,40 @@ bool halve_at_root(const Bernstein& f, Piece& p) {
   return false;
 }
 
+// f's root in the piece p (certain opposite signs at its ends), roughly: Newton steps on its
+// Bernstein form, kept inside a bracket that is halved instead when a step leaves it. Only for
+// look_at: never part of a verdict.
+double rough_root(const Piece& p) {
+  const double* b = p.b;
+  const bool rising = b[0] < 0;
+  double lo = 0, hi = 1, u = b[0] / (b[0] - b[3]);
+  for (int i = 0; i < 12; ++i) {
+    const double r = 1 - u, a0 = r * b[0] + u * b[1], a1 = r * b[1] + u * b[2],
+                 a2 = r * b[2] + u * b[3], c0 = r * a0 + u * a1, c1 = r * a1 + u * a2;
+    const double value = r * c0 + u * c1, slope = 3 * (c1 - c0);
+    ((value < 0) == rising ? lo : hi) = u;
+    const double next = u - value / slope;
+    u = next > lo && next < hi ? next : (lo + hi) / 2;  // a NaN step halves too
+  }
+  return p.lo + u * (p.hi - p.lo);
+}
+
+// True if intervals of width about 2 w around t would certainly fail: no condition keeps one
+// sign clearly (its value at t more than four times its change from t - w to t + w, roughly
+// what the intervals widen it by) where it is < 0, and some condition does not where it is > 0.
+// A condition of tiny size but steady sign still counts: sizes differ by many orders.
+bool hopeless_at(const Query& q, double t, double w) {
+  const Conditions<double> c = conditions_at(q, t), before = conditions_at(q, t - w),
+                           after = conditions_at(q, t + w);
+  bool unsteady = false;
+  for (int i = 0; i < c.n; ++i) {
+    const bool steady = std::fabs(c.g[i]) > 4 * std::fabs(after.g[i] - before.g[i]);
+    if (steady && c.g[i] < 0) return false;
+    unsteady |= !steady;
+  }
+  return unsteady;
+}
+
 // The root of f isolated in `p` (one sign variation, f(lo) f(hi) < 0): narrowed by halving to
 // 2^-32 wide (or until the halving point's sign is uncertain), then the conditions g_i over the
 // piece, once: certain signs there settle this root wherever it is in the piece. On the
@@ -193,10 +267,13 @@ bool halve_at_root(const Bernstein& f, Piece& p) {
 // (2^-24 fewer), and deciding at 2^-20 before narrowing further decided no more but cost a
 // second evaluation where it failed.
 Filtered contact_at_root(const Query& q, const Bernstein& f, Piece p, int& evaluations) {
+  // A condition about 0 at the root, none clearly < 0: the point slides on an edge, or the
+  // edges touch at an end; the intervals would straddle 0. Given up before narrowing.
+  if (hopeless_at(q, rough_root(p), 0x1p-32)) return Filtered::Uncertain;
   while (p.hi - p.lo > 0x1p-32 && halve_at_root(f, p)) {
   }
   if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
-  const Conditions c = conditions(q, p);
+  const Conditions<Interval> c = conditions(q, p);
   bool outside = false, inside = true;
   for (int i = 0; i < c.n; ++i) outside |= c.g[i].negative(), inside &= c.g[i].positive();
   return outside ? Filtered::No : (inside ? Filtered::Yes : Filtered::Uncertain);
@@ -204,7 +281,7 @@ Filtered contact_at_root(const Query& q, const Bernstein& f, Piece p, int& evalu
 
 // True if some condition is certainly < 0 over the whole piece: no contact in it, whatever f.
 bool outside(const Query& q, const Piece& p) {
-  const Conditions c = conditions(q, p);
+  const Conditions<Interval> c = conditions(q, p);
   bool out = false;
   for (int i = 0; i < c.n; ++i) out |= c.g[i].negative();
   return out;
@@ -227,9 +304,9 @@ struct Stack {
 // on a sliver of the piece at that end, 2^-10 of it; the rest is pushed back for the search.
 // Otherwise uncertain.
 Filtered settle_end(const Query& q, const Piece& p, double end, Stack& stack, int& evaluations) {
-  if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
-  const auto eval = q.kind == QueryKind::VertexFace ? &vertex_face : &edge_edge;
-  const Conditions c = eval(q, Interval{end, end});
+  if (look_at(q, end).hopeless(0x1p-40) || ++evaluations > kMaxEvaluations)
+    return Filtered::Uncertain;
+  const Conditions<Interval> c = conditions_at(q, Interval{end, end});
   bool out = false, inside = true;
   for (int i = 0; i < c.n; ++i) out |= c.g[i].negative(), inside &= c.g[i].positive();
   if (inside) {
@@ -265,8 +342,11 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
     if (v < 0) {
       // f's sign is uncertain somewhere here (f may even vanish throughout, as for a cube
       // sliding on a plane): a condition certainly < 0 over the whole piece still excludes it.
-      if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
-      if (outside(q, p)) continue;
+      // Only where some condition is clearly < 0 in its middle: else none is < 0 throughout.
+      if (look_at(q, p.lo + 0.5 * (p.hi - p.lo)).lowest < -0x1p-20) {
+        if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
+        if (outside(q, p)) continue;
+      }
       // Smaller pieces would not show a sign either where f may vanish on the whole piece (no
       // coefficient certain: coplanar motion): the exact test decides. Nor at t = 0 or 1 when
       // its first or last one is uncertain there: settle_end decides what it can.
