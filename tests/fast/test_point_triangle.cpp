@@ -199,6 +199,18 @@ TEST(RobustPointTriangle, FilterIsUncertainOutsideItsRangeAndOnNaN) {
     }
 }
 
+// A long motion just above a triangle: the x differences reach 2^28, the others stay near 1,
+// so stage 1's one bound (the largest coordinates by axis) covers orient3d(D, E, F, B) of
+// 2^-29 no more; stage 2's bound from that determinant's own permanent does, and the crossing
+// at (1/4, 0, 0) is certain.
+TEST(RobustPointTriangle, SecondStageDecidesWhereCoordinatesDifferInSize) {
+  const Vec3 d{-1, -1, 0}, e{1, -1, 0}, f{0, 1, 0}, b0{0, 0, 0x1p-30}, b1{0x1p28, 0, -1};
+  ASSERT_TRUE(exact::point_triangle_hit(b0, b1, d, e, f));
+  EXPECT_EQ(robust_point_triangle_quick(b0, b1, d, e, f), Filtered::Uncertain);
+  EXPECT_EQ(robust_point_triangle_tight(b0, b1, d, e, f), Filtered::Yes);
+  EXPECT_EQ(robust_point_triangle_filter(b0, b1, d, e, f), Filtered::Yes);
+}
+
 // The paper's own figures. Fig. 3: B falls along the normal through the triangle.
 TEST(PaperMethods, Fig3ParallelCrossing) {
   const Vec3 b0{0.25, 0.25, 1}, b1{0.25, 0.25, -1};

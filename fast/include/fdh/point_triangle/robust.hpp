@@ -44,8 +44,9 @@ inline double larger_lane(Pair u) {
 }
 }  // namespace point_triangle_detail
 
-inline Filtered robust_point_triangle_filter(const Vec3& b0, const Vec3& b1, const Vec3& d,
-                                             const Vec3& e, const Vec3& f) {
+// Stage 1, inline: one static bound for all five from the largest coordinates by axis.
+inline Filtered robust_point_triangle_quick(const Vec3& b0, const Vec3& b1, const Vec3& d,
+                                            const Vec3& e, const Vec3& f) {
   using namespace point_triangle_detail;
   // Two cross products side by side: A = (e, q) and B = (f, d) by coordinate, so A x B holds
   // e x f and a = q x d. Half the instructions of the scalar code: the loops that call this
@@ -87,13 +88,32 @@ inline Filtered robust_point_triangle_filter(const Vec3& b0, const Vec3& b1, con
 }
 static_assert(int(Filtered::No) == 0 && int(Filtered::Yes) == 1 && int(Filtered::Uncertain) == 2);
 
+// Stage 2, out of line, where stage 1 is uncertain: the same five determinants, each with its
+// own bound from its permanent (Shewchuk's orient3d bound proper), tight where coordinates
+// differ much in size, as in near contacts of long motions against small triangles
+// (point_triangle_robust.cpp).
+Filtered robust_point_triangle_tight(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
+                                     const Vec3& f);
+
+inline Filtered robust_point_triangle_filter(const Vec3& b0, const Vec3& b1, const Vec3& d,
+                                             const Vec3& e, const Vec3& f) {
+  const Filtered quick = robust_point_triangle_quick(b0, b1, d, e, f);
+  return quick == Filtered::Uncertain ? robust_point_triangle_tight(b0, b1, d, e, f) : quick;
+}
+
 using PointTriangleTest = bool (*)(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
                                    const Vec3& f);
 
+// Stage 2, then the exact test where it is uncertain too: one call that takes the arguments as
+// they came (a tail call), so that the inline common case saves no registers for it.
+bool robust_point_triangle_slow(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
+                                const Vec3& f, PointTriangleTest exact_fallback);
+
 inline bool robust_point_triangle(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
                                   const Vec3& f, PointTriangleTest exact_fallback) {
-  return or_exact(robust_point_triangle_filter(b0, b1, d, e, f),
-                  [&] { return exact_fallback(b0, b1, d, e, f); });
+  const Filtered quick = robust_point_triangle_quick(b0, b1, d, e, f);
+  if (quick != Filtered::Uncertain) return quick == Filtered::Yes;
+  return robust_point_triangle_slow(b0, b1, d, e, f, exact_fallback);
 }
 
 }  // namespace fdh
