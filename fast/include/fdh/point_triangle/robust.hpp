@@ -42,25 +42,38 @@ inline Pair pair_max(Pair u, Pair w) {
 inline double larger_lane(Pair u) {
   return max_of(u[0], u[1]);
 }
+inline Pair swapped(Pair u) {
+  return Pair{u[1], u[0]};
+}
+// By coordinate, A = (e, q) and B = (f, d), apex P: A x B holds e x f and a = q x d.
+struct Lanes {
+  Pair ax, ay, az, bx, by, bz;
+};
+inline Lanes lanes(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e, const Vec3& f) {
+  return {Pair{e.x, b1.x} - b0.x, Pair{e.y, b1.y} - b0.y, Pair{e.z, b1.z} - b0.z,
+          Pair{f.x, d.x} - b0.x,  Pair{f.y, d.y} - b0.y,  Pair{f.z, d.z} - b0.z};
+}
 }  // namespace point_triangle_detail
 
-// Stage 1, inline: one static bound for all five from the largest coordinates by axis.
-inline Filtered robust_point_triangle_quick(const Vec3& b0, const Vec3& b1, const Vec3& d,
-                                            const Vec3& e, const Vec3& f) {
+// Stage 1, inline: one static bound for all five from the largest coordinates by axis. Its
+// verdict as a code: 0 no, 1 yes, 2 uncertain, 3 uncertain with B or B' computed exactly in
+// the plane (or out of range), where stage 2 would rarely be certain: a zero stays within any
+// bound, and such queries are mostly true touches that the exact test settles at once.
+inline int robust_point_triangle_stage1(const Vec3& b0, const Vec3& b1, const Vec3& d,
+                                        const Vec3& e, const Vec3& f) {
   using namespace point_triangle_detail;
-  // Two cross products side by side: A = (e, q) and B = (f, d) by coordinate, so A x B holds
-  // e x f and a = q x d. Half the instructions of the scalar code: the loops that call this
-  // test are limited by how many instructions keep the next query's loads waiting.
-  const Pair ax = Pair{e.x, b1.x} - b0.x, ay = Pair{e.y, b1.y} - b0.y, az = Pair{e.z, b1.z} - b0.z;
-  const Pair bx = Pair{f.x, d.x} - b0.x, by = Pair{f.y, d.y} - b0.y, bz = Pair{f.z, d.z} - b0.z;
+  // Two cross products side by side (Lanes). Half the instructions of the scalar code: the
+  // loops that call this test are limited by how many instructions keep the next query's loads
+  // waiting.
+  const auto [ax, ay, az, bx, by, bz] = lanes(b0, b1, d, e, f);
   // The largest |coordinate| of d, e, f and q, by axis.
   const double mx = larger_lane(pair_max(pair_abs(ax), pair_abs(bx))),
                my = larger_lane(pair_max(pair_abs(ay), pair_abs(by))),
                mz = larger_lane(pair_max(pair_abs(az), pair_abs(bz)));
   const Pair kx = ay * bz - az * by, ky = az * bx - ax * bz, kz = ax * by - ay * bx;
   // (d, f) . (e x f, a) = (p, s3) and (q, e) . (e x f, a) = (-s2, -s1), lanes swapped from B, A.
-  const Pair r1 = Pair{bx[1], bx[0]} * kx + Pair{by[1], by[0]} * ky + Pair{bz[1], bz[0]} * kz;
-  const Pair r2 = Pair{ax[1], ax[0]} * kx + Pair{ay[1], ay[0]} * ky + Pair{az[1], az[0]} * kz;
+  const Pair r1 = swapped(bx) * kx + swapped(by) * ky + swapped(bz) * kz;
+  const Pair r2 = swapped(ax) * kx + swapped(ay) * ky + swapped(az) * kz;
   const double p = r1[0], s1 = -r2[1], s2 = -r2[0], s3 = r1[1];
   const double q = p + s1 + s2 + s3;
   // Each of the four is orient3d of rounded differences from the apex P, whose error
@@ -81,12 +94,19 @@ inline Filtered robust_point_triangle_quick(const Vec3& b0, const Vec3& b1, cons
   const double smin = min_of(s1, s2, s3), smax = max_of(s1, s2, s3);
   const int line_misses = int(smax > bound) & int(smin < -bound);
   const int line_hits = int(smin > bound) | int(smax < -bound);
-  // No = 0, Yes = 1, Uncertain = 2 (static_assert below), by arithmetic, not a branch; a yes
-  // (certainly opposite sides, all line signs certainly equal) is never a no.
+  // The code by arithmetic, not a branch; a yes (certainly opposite sides, all line signs
+  // certainly equal) is never a no. A product that underflows to 0 only skips stage 2.
   const int no = same_side | line_misses, yes = both_certain & (1 - same_side) & line_hits;
-  return Filtered(valid ? 2 - 2 * no - yes : 2);
+  const int code = valid ? (1 - no) * (2 - yes) : 3;
+  return code != 2 ? code : 2 + int(p * q == 0);  // a rare branch: no cost in the common case
 }
 static_assert(int(Filtered::No) == 0 && int(Filtered::Yes) == 1 && int(Filtered::Uncertain) == 2);
+
+inline Filtered robust_point_triangle_quick(const Vec3& b0, const Vec3& b1, const Vec3& d,
+                                            const Vec3& e, const Vec3& f) {
+  const int code = robust_point_triangle_stage1(b0, b1, d, e, f);
+  return Filtered(code < 2 ? code : 2);
+}
 
 // Stage 2, out of line, where stage 1 is uncertain: the same five determinants, each with its
 // own bound from its permanent (Shewchuk's orient3d bound proper), tight where coordinates
@@ -97,23 +117,24 @@ Filtered robust_point_triangle_tight(const Vec3& b0, const Vec3& b1, const Vec3&
 
 inline Filtered robust_point_triangle_filter(const Vec3& b0, const Vec3& b1, const Vec3& d,
                                              const Vec3& e, const Vec3& f) {
-  const Filtered quick = robust_point_triangle_quick(b0, b1, d, e, f);
-  return quick == Filtered::Uncertain ? robust_point_triangle_tight(b0, b1, d, e, f) : quick;
+  const int code = robust_point_triangle_stage1(b0, b1, d, e, f);
+  if (code < 2) return Filtered(code);
+  return code == 2 ? robust_point_triangle_tight(b0, b1, d, e, f) : Filtered::Uncertain;
 }
 
 using PointTriangleTest = bool (*)(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
                                    const Vec3& f);
 
-// Stage 2, then the exact test where it is uncertain too: one call that takes the arguments as
-// they came (a tail call), so that the inline common case saves no registers for it.
+// Stage 2 (if asked), then the exact test where it is uncertain too: one call that takes the
+// arguments as they came (a tail call), so that the inline common case saves no registers for it.
 bool robust_point_triangle_slow(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
-                                const Vec3& f, PointTriangleTest exact_fallback);
+                                const Vec3& f, PointTriangleTest exact_fallback, bool stage2);
 
 inline bool robust_point_triangle(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
                                   const Vec3& f, PointTriangleTest exact_fallback) {
-  const Filtered quick = robust_point_triangle_quick(b0, b1, d, e, f);
-  if (quick != Filtered::Uncertain) return quick == Filtered::Yes;
-  return robust_point_triangle_slow(b0, b1, d, e, f, exact_fallback);
+  const int code = robust_point_triangle_stage1(b0, b1, d, e, f);
+  if (code < 2) return code == 1;
+  return robust_point_triangle_slow(b0, b1, d, e, f, exact_fallback, code == 2);
 }
 
 }  // namespace fdh
