@@ -295,13 +295,54 @@ struct Stack {
   void push(const Piece& p) { piece[top++] = p; }
 };
 
+// How thin a sliver of p at `end` to try first, as 2^-k of the piece: over it, a condition
+// certainly < 0 at `end` should stay < 0, for a quarter of |g| / |g'| (its slope estimated in
+// floating point: a choice, not part of a verdict). k from 10 to 40.
+int sliver_exponent(const Query& q, const Piece& p, double end,
+                    const Conditions<Interval>& at_end) {
+  const double w = p.hi - p.lo, step = 0x1p-20 * w;
+  const Conditions<double> c0 = conditions_at(q, end),
+                           c1 = conditions_at(q, end == 0 ? step : 1 - step);
+  double reach = 0;  // as a fraction of the piece
+  for (int i = 0; i < c0.n; ++i)
+    if (at_end.g[i].negative())
+      reach =
+          std::max(reach, 0.25 * std::fabs(c0.g[i]) * step / (std::fabs(c0.g[i] - c1.g[i]) * w));
+  return reach >= 0x1p-10 ? 10 : (reach > 0x1p-40 ? -std::ilogb(reach) : 40);  // NaN: 40
+}
+
+// Cuts off the sliver 2^-k of p at `end` (s and 1 - s exact, as split() needs) and pushes the
+// rest if some condition is certainly < 0 over the sliver. Else, once, a thinner sliver: by as
+// much as the widest interval of a condition < 0 at `end` exceeds its size there (interval
+// bounds widen in proportion to the time interval).
+bool cut_sliver(const Query& q, const Piece& p, double end, const Conditions<Interval>& at_end,
+                Stack& stack, int& evaluations) {
+  for (int k = sliver_exponent(q, p, end, at_end), attempt = 0;; ++attempt) {
+    const double s = std::ldexp(1.0, -k);
+    Piece left, right;
+    split(p, end == 0 ? s : 1 - s, left, right);
+    const Conditions<Interval> c = conditions(q, end == 0 ? left : right);
+    double widest = 0;
+    for (int i = 0; i < c.n; ++i) {
+      if (c.g[i].negative()) {
+        stack.push(end == 0 ? right : left);
+        return true;
+      }
+      if (at_end.g[i].negative())
+        widest = std::max(widest, (c.g[i].hi - c.g[i].lo) / -at_end.g[i].hi);
+    }
+    k += std::ilogb(widest) + 2;
+    if (attempt == 1 || !(k <= 50) || ++evaluations > kMaxEvaluations) return false;
+  }
+}
+
 // The piece p ends at t = `end` (0 or 1) and f's sign there is uncertain: a contact may sit
 // exactly at the start or the end. Settled here where floating point can settle it: the
 // conditions at the very instant `end`, bounded by intervals (tight there), say whether the
 // point (or the edges' crossing) is then inside; an exact sum of the volume (orient3d_exact.hpp)
 // says whether the four points are then coplanar. Inside and coplanar: a contact (yes). Some
 // condition certainly < 0 at `end`: none at that instant, nor, when the intervals confirm it,
-// on a sliver of the piece at that end, 2^-10 of it; the rest is pushed back for the search.
+// on a sliver of the piece at that end (cut_sliver); the rest is pushed back for the search.
 // Otherwise uncertain.
 Filtered settle_end(const Query& q, const Piece& p, double end, Stack& stack, int& evaluations) {
   if (look_at(q, end).hopeless(0x1p-40) || ++evaluations > kMaxEvaluations)
@@ -317,12 +358,7 @@ Filtered settle_end(const Query& q, const Piece& p, double end, Stack& stack, in
   }
   if (!out || p.depth == Stack::kMaxDepth || ++evaluations > kMaxEvaluations)
     return Filtered::Uncertain;
-  // s and 1 - s exact, as split() needs.
-  Piece left, right;
-  split(p, end == 0 ? 0x1p-10 : 1 - 0x1p-10, left, right);
-  if (!outside(q, end == 0 ? left : right)) return Filtered::Uncertain;
-  stack.push(end == 0 ? right : left);
-  return Filtered::No;
+  return cut_sliver(q, p, end, c, stack, evaluations) ? Filtered::No : Filtered::Uncertain;
 }
 
 // Stage 2: isolate the roots of f in [0, 1] by Bernstein subdivision (a piece whose
