@@ -239,6 +239,7 @@ double rough_root(const Piece& p) {
     const double value = r * c0 + u * c1, slope = 3 * (c1 - c0);
     ((value < 0) == rising ? lo : hi) = u;
     const double next = u - value / slope;
+    if (next == u) break;  // converged: u may sit on the bracket's end it just set
     u = next > lo && next < hi ? next : (lo + hi) / 2;  // a NaN step halves too
   }
   return p.lo + u * (p.hi - p.lo);
