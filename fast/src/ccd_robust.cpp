@@ -288,6 +288,23 @@ bool outside(const Query& q, const Piece& p) {
   return out;
 }
 
+// Whether, by a plain floating-point look, some condition is clearly < 0 in p's middle and at
+// both its ends (the middle first: most often it is not).
+bool negative_throughout(const Query& q, const Piece& p) {
+  const auto negative_at = [&q](double t) {
+    const Conditions<double> c = conditions_at(q, t);
+    double size = 0;
+    for (int i = 0; i < c.n; ++i) size = std::max(size, std::fabs(c.g[i]));
+    unsigned which = 0;
+    for (int i = 0; i < c.n; ++i) which |= unsigned(c.g[i] < -0x1p-20 * size) << i;
+    return which;
+  };
+  unsigned which = negative_at(p.lo + 0.5 * (p.hi - p.lo));
+  if (which != 0) which &= negative_at(p.lo);
+  if (which != 0) which &= negative_at(p.hi);
+  return which != 0;
+}
+
 // A piece of [0, 1] that may hold a root of f, kept for later.
 struct Stack {
   static constexpr int kMaxDepth = 8;
@@ -379,8 +396,9 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
     if (v < 0) {
       // f's sign is uncertain somewhere here (f may even vanish throughout, as for a cube
       // sliding on a plane): a condition certainly < 0 over the whole piece still excludes it.
-      // Only where some condition is clearly < 0 in its middle: else none is < 0 throughout.
-      if (look_at(q, p.lo + 0.5 * (p.hi - p.lo)).lowest < -0x1p-20) {
+      // Only where some condition is clearly < 0 at both ends and in the middle: else none is
+      // < 0 throughout, or the intervals would be too wide to show it.
+      if (negative_throughout(q, p)) {
         if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
         if (outside(q, p)) continue;
       }
