@@ -162,7 +162,7 @@ struct Piece {
 // Splits p at lo + s (hi - lo) by de Casteljau. Each new coefficient is a convex combination of
 // the old, so the error of the exact ones carries over unchanged, plus the roundings of three
 // levels of (1 - s) x + s y: at most 9 eps times the largest |coefficient| per split; bound()
-// allows 16. s = 7/16 and 1 - s = 9/16 are exact.
+// allows 16. s and 1 - s must both be exact: 7/16 and 9/16, or see exact_complement().
 void split(const Piece& p, double s, Piece& left, Piece& right) {
   const double r = 1 - s;
   const double a0 = r * p.b[0] + s * p.b[1], a1 = r * p.b[1] + s * p.b[2],
@@ -226,9 +226,9 @@ bool halve_at_root(const Bernstein& f, Piece& p) {
   return false;
 }
 
-// f's root in the piece p (certain opposite signs at its ends), roughly: Newton steps on its
-// Bernstein form, kept inside a bracket that is halved instead when a step leaves it. Only for
-// look_at: never part of a verdict.
+// f's root in the piece p (certain opposite signs at its ends), roughly, in p's own parameter:
+// Newton steps on its Bernstein form, kept inside a bracket that is halved instead when a step
+// leaves it. Where to look and to bracket: never part of a verdict by itself.
 double rough_root(const Piece& p) {
   const double* b = p.b;
   const bool rising = b[0] < 0;
@@ -242,7 +242,35 @@ double rough_root(const Piece& p) {
     if (next == u) break;  // converged: u may sit on the bracket's end it just set
     u = next > lo && next < hi ? next : (lo + hi) / 2;  // a NaN step halves too
   }
-  return p.lo + u * (p.hi - p.lo);
+  return u;
+}
+
+// s in (0, 1), moved by at most one rounding so that 1 - s is exact too, as split() needs:
+// 1 - s is exact for s >= 1/2 (Sterbenz), and so is 1 - r for r = fl(1 - s) in [1/2, 1].
+double exact_complement(double s) {
+  return s >= 0.5 ? s : 1 - (1 - s);
+}
+
+// Narrows p (one simple root: one sign variation, certain opposite signs at its ends) to about
+// 2^-32 around the rough root at u (p's own parameter) with two splits instead of some thirty
+// halvings: f's signs certain at both new ends and equal to those at p's ends put the root
+// between them. False, p unchanged, where a sign there is uncertain or not as expected.
+bool bracket_root(const Bernstein& f, Piece& p, double u) {
+  const double h = 0x1p-33 / (p.hi - p.lo);
+  if (!(u - h > 0 && u + h < 1)) return false;
+  Piece left, right, mid, rest;
+  const double s1 = exact_complement(u - h);
+  split(p, s1, left, right);
+  const double s2 = exact_complement((u + h - s1) / (1 - s1));
+  if (!(s2 > 0 && s2 < 1)) return false;
+  split(right, s2, mid, rest);
+  const double err = bound(f, mid.depth), err_p = bound(f, p.depth);
+  if (sign_beyond(mid.b[0], err) != sign_beyond(p.b[0], err_p) ||
+      sign_beyond(mid.b[3], err) != sign_beyond(p.b[3], err_p) || sign_beyond(mid.b[0], err) == 0 ||
+      sign_beyond(mid.b[3], err) == 0)
+    return false;
+  p = mid;
+  return true;
 }
 
 // True if intervals of width about 2 w around t would certainly fail: no condition keeps one
@@ -261,18 +289,21 @@ bool hopeless_at(const Query& q, double t, double w) {
   return unsteady;
 }
 
-// The root of f isolated in `p` (one sign variation, f(lo) f(hi) < 0): narrowed by halving to
-// 2^-32 wide (or until the halving point's sign is uncertain), then the conditions g_i over the
-// piece, once: certain signs there settle this root wherever it is in the piece. On the
+// The root of f isolated in `p` (one sign variation, f(lo) f(hi) < 0): narrowed to about 2^-32
+// around the rough root, else by halving to 2^-32 wide (or until the halving point's sign is
+// uncertain), then the conditions g_i over the piece, once: certain signs there settle this
+// root wherever it is in the piece. On the
 // benchmark sample, the hard and the generic families, 2^-27 decides as many queries as 2^-40
 // (2^-24 fewer), and deciding at 2^-20 before narrowing further decided no more but cost a
 // second evaluation where it failed.
 Filtered contact_at_root(const Query& q, const Bernstein& f, Piece p, int& evaluations) {
   // A condition about 0 at the root, none clearly < 0: the point slides on an edge, or the
   // edges touch at an end; the intervals would straddle 0. Given up before narrowing.
-  if (hopeless_at(q, rough_root(p), 0x1p-32)) return Filtered::Uncertain;
-  while (p.hi - p.lo > 0x1p-32 && halve_at_root(f, p)) {
-  }
+  const double u = rough_root(p);
+  if (hopeless_at(q, p.lo + u * (p.hi - p.lo), 0x1p-32)) return Filtered::Uncertain;
+  if (p.hi - p.lo > 0x1p-32 && !bracket_root(f, p, u))
+    while (p.hi - p.lo > 0x1p-32 && halve_at_root(f, p)) {
+    }
   if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
   const Conditions<Interval> c = conditions(q, p);
   bool outside = false, inside = true;
