@@ -142,6 +142,7 @@ Look look_at(const Query& q, double t) {
   const Conditions<double> c = conditions_at(q, t);
   double size = 0;
   for (int i = 0; i < c.n; ++i) size = std::max(size, std::fabs(c.g[i]));
+  if (!(size > 0)) return {0, 0};  // all 0 (parallel edges, a point triangle): hopeless
   Look look{1, 1};
   for (int i = 0; i < c.n; ++i) {
     look.lowest = std::min(look.lowest, c.g[i] / size);
@@ -344,6 +345,17 @@ struct Stack {
   void push(const Piece& p) { piece[top++] = p; }
 };
 
+// Whether four points lie exactly in one plane: all in a plane x = c (or y, or z), or their
+// volume exactly 0 (orient3d_exact.hpp; it declines where a difference is not exact).
+bool exactly_coplanar(const Vec3* x) {
+  const auto same = [x](double Vec3::*axis) {
+    return x[0].*axis == x[1].*axis && x[0].*axis == x[2].*axis && x[0].*axis == x[3].*axis;
+  };
+  int volume = 1;
+  return same(&Vec3::x) || same(&Vec3::y) || same(&Vec3::z) ||
+         (exact_volume_sign(x[0], x[1], x[2], x[3], volume) && volume == 0);
+}
+
 // How thin a sliver of p at `end` to try first, as 2^-k of the piece: over it, a condition
 // certainly < 0 at `end` should stay < 0, for a quarter of |g| / |g'| (its slope estimated in
 // floating point: a choice, not part of a verdict). k from 10 to 40.
@@ -391,21 +403,20 @@ bool cut_sliver(const Query& q, const Piece& p, double end, const Conditions<Int
 // point (or the edges' crossing) is then inside; an exact sum of the volume (orient3d_exact.hpp)
 // says whether the four points are then coplanar. Inside and coplanar: a contact (yes). Some
 // condition certainly < 0 at `end`: none at that instant, nor, when the intervals confirm it,
-// on a sliver of the piece at that end (cut_sliver); the rest is pushed back for the search.
-// Otherwise uncertain.
-Filtered settle_end(const Query& q, const Piece& p, double end, Stack& stack, int& evaluations) {
-  if (look_at(q, end).hopeless(0x1p-40) || ++evaluations > kMaxEvaluations)
+// on a sliver of the piece at that end (cut_sliver); the rest is pushed back for the search,
+// unless only a contact is asked for (a piece where f is flat throughout: the rest would be no
+// better). Otherwise uncertain.
+Filtered settle_end(const Query& q, const Piece& p, double end, bool contact_only, Stack& stack,
+                    int& evaluations) {
+  const Look look = look_at(q, end);
+  if (look.hopeless(0x1p-40) || (contact_only && look.lowest <= 0x1p-20) ||
+      ++evaluations > kMaxEvaluations)
     return Filtered::Uncertain;
   const Conditions<Interval> c = conditions_at(q, Interval{end, end});
   bool out = false, inside = true;
   for (int i = 0; i < c.n; ++i) out |= c.g[i].negative(), inside &= c.g[i].positive();
-  if (inside) {
-    const Vec3* x = &q.x[end == 0 ? 0 : 4];
-    int volume = 1;
-    return exact_volume_sign(x[0], x[1], x[2], x[3], volume) && volume == 0 ? Filtered::Yes
-                                                                            : Filtered::Uncertain;
-  }
-  if (!out || p.depth == Stack::kMaxDepth || ++evaluations > kMaxEvaluations)
+  if (inside) return exactly_coplanar(&q.x[end == 0 ? 0 : 4]) ? Filtered::Yes : Filtered::Uncertain;
+  if (!out || contact_only || p.depth == Stack::kMaxDepth || ++evaluations > kMaxEvaluations)
     return Filtered::Uncertain;
   return cut_sliver(q, p, end, c, stack, evaluations) ? Filtered::No : Filtered::Uncertain;
 }
@@ -436,10 +447,13 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
       // Smaller pieces would not show a sign either where f may vanish on the whole piece (no
       // coefficient certain: coplanar motion): the exact test decides. Nor at t = 0 or 1 when
       // its first or last one is uncertain there: settle_end decides what it can.
-      if (flat(p, err)) return Filtered::Uncertain;
+      // Where it is flat at t = 0 or 1 too, a contact right there is still worth a look
+      // (coplanar motion that starts or ends inside the triangle): settle_end, for a yes only.
+      const bool is_flat = flat(p, err);
+      if (is_flat && p.lo != 0 && p.hi != 1) return Filtered::Uncertain;
       const bool open_start = p.lo == 0 && sign_beyond(p.b[0], err) == 0;
       if (open_start || (p.hi == 1 && sign_beyond(p.b[3], err) == 0)) {
-        const Filtered r = settle_end(q, p, open_start ? 0 : 1, stack, evaluations);
+        const Filtered r = settle_end(q, p, open_start ? 0 : 1, is_flat, stack, evaluations);
         if (r != Filtered::No) return r;
         continue;
       }

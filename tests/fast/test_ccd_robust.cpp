@@ -30,6 +30,19 @@ TEST(RobustCcdFilter, SettlesAContactOrItsAbsenceExactlyAtAnEnd) {
   }
 }
 
+// Coplanar throughout (f = 0 on all of [0, 1], every point in the plane z = 0), starting inside
+// the triangle: a contact at t = 0 although no coefficient of f has a sign.
+TEST(RobustCcdFilter, SettlesCoplanarMotionThatStartsInside) {
+  const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0};
+  Query q;
+  q.x = {Vec3{0.25, 0.25, 0}, a, b, c, Vec3{2, 2, 0}, a, b, c};
+  ASSERT_TRUE(exact::ccd_hit(q));
+  EXPECT_EQ(robust_ccd_filter(q), Filtered::Yes);
+  q.x[0] = {3, 3, 0};  // starting outside: the exact test decides
+  EXPECT_FALSE(exact::ccd_hit(q));
+  EXPECT_EQ(robust_ccd_filter(q), Filtered::Uncertain);
+}
+
 // On an edge at the end: a condition is zero there, so the exact test decides.
 TEST(RobustCcdFilter, LeavesATouchOnAnEdgeAtAnEndToTheExactTest) {
   const Query on_edge = landing(0.5, 0, false);
