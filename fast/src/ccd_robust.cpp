@@ -1,6 +1,10 @@
 #include "fdh/ccd/robust.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "fdh/interval.hpp"
+#include "fdh/orient3d_exact.hpp"
 #include "fdh/orient3d_filter.hpp"
 
 namespace fdh {
@@ -16,10 +20,9 @@ double det(const Vec3& u, const Vec3& v, const Vec3& w) {
 // f(t) = det(U(t), V(t), W(t)) with U(t) = (1 - t) U0 + t U1 and so on. By multilinearity its
 // Bernstein coefficients on [0, 1] are det(U0,V0,W0), the means of the three determinants with
 // one vector at t = 1, of those with two, and det(U1,V1,W1). f lies in their convex hull.
-// Each vector is one rounded difference, so each determinant is off by at most 48 eps P with
-// P = Mx My Mz the product of the largest |coordinates| over all six vectors (as in
-// orient3d_filter.hpp); a sum of three is off by at most 3 x 48 eps P plus two roundings of at
-// most 18 (1 + eps) P eps each: below 192 eps P.
+// Each vector is one rounded difference, so each determinant is off by at most
+// kOrient3dErrBound P with P = Mx My Mz the product of the largest |coordinates| over all six
+// vectors, and a mean of three by kOrient3dMeanOfThreeErrBound P (orient3d_filter.hpp).
 struct Bernstein {
   double b[4];
   double err;   // |computed - exact| for every coefficient
@@ -42,9 +45,9 @@ Bernstein bernstein(const Vec3 u[2], const Vec3 v[2], const Vec3 w[2]) {
   r.b[1] = (det(u[1], v[0], w[0]) + det(u[0], v[1], w[0]) + det(u[0], v[0], w[1])) / 3;
   r.b[2] = (det(u[1], v[1], w[0]) + det(u[1], v[0], w[1]) + det(u[0], v[1], w[1])) / 3;
   r.b[3] = det(u[1], v[1], w[1]);
-  // A sum of three is off by < 192 eps P, so its third by 64 eps P, plus the division's
-  // rounding (eps |b| <= 6 eps P: |det| <= 6 P).
-  r.err = 72 * kEps * p;
+  // b[0] and b[3] are off by kOrient3dErrBound P, b[1] and b[2] (means of three) by
+  // kOrient3dMeanOfThreeErrBound P, the larger: one bound for all four (orient3d_filter.hpp).
+  r.err = kOrient3dMeanOfThreeErrBound * p;
   r.bmax = 6 * p + r.err;
   return r;
 }
@@ -62,16 +65,22 @@ int bernstein_sign(const Bernstein& f) {
 
 // ---- Stage 2: the inside conditions by intervals, and root isolation by subdivision of f.
 
-struct IVec {
-  Interval x, y, z;
+// A point of the motion at a time t: an Interval (rigorous bounds over a time interval) or a
+// double (a plain estimate at one instant, for the cheap looks that only choose to give up).
+template <class T>
+struct V3 {
+  T x, y, z;
 };
-IVec operator-(const IVec& a, const IVec& b) {
+template <class T>
+V3<T> operator-(const V3<T>& a, const V3<T>& b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
-IVec cross(const IVec& a, const IVec& b) {
+template <class T>
+V3<T> cross(const V3<T>& a, const V3<T>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-Interval dot(const IVec& a, const IVec& b) {
+template <class T>
+T dot(const V3<T>& a, const V3<T>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
@@ -79,7 +88,11 @@ Interval lerp(double x0, double x1, const Interval& t) {
   const Interval a = Interval::point(x0);
   return a + t * (Interval::point(x1) - a);
 }
-IVec at(const Vec3& x0, const Vec3& x1, const Interval& t) {
+double lerp(double x0, double x1, double t) {
+  return x0 + t * (x1 - x0);
+}
+template <class T>
+V3<T> at(const Vec3& x0, const Vec3& x1, const T& t) {
   return {lerp(x0.x, x1.x, t), lerp(x0.y, x1.y, t), lerp(x0.z, x1.z, t)};
 }
 
@@ -87,26 +100,55 @@ IVec at(const Vec3& x0, const Vec3& x1, const Interval& t) {
 // same polynomials as reference/'s exact_ccd.cpp); g_i > 0 for all i implies contact, since the
 // g_i all vanish when the triangle has zero area or the edges are parallel. (f itself is
 // bounded on pieces by its Bernstein coefficients, not here.)
+template <class T>
 struct Conditions {
-  Interval g[4];
+  T g[4];
   int n = 0;
 };
 
-Conditions vertex_face(const Query& q, const Interval& t) {
-  const IVec p = at(q.x[0], q.x[4], t), a = at(q.x[1], q.x[5], t), b = at(q.x[2], q.x[6], t),
-             c = at(q.x[3], q.x[7], t);
-  const IVec ap = a - p, bp = b - p, cp = c - p, n = cross(b - a, c - a);
+template <class T>
+Conditions<T> vertex_face(const Query& q, const T& t) {
+  const V3<T> p = at(q.x[0], q.x[4], t), a = at(q.x[1], q.x[5], t), b = at(q.x[2], q.x[6], t),
+              c = at(q.x[3], q.x[7], t);
+  const V3<T> ap = a - p, bp = b - p, cp = c - p, n = cross(b - a, c - a);
   // |n|^2 times p's barycentric coordinates when coplanar.
   return {{dot(n, cross(bp, cp)), dot(n, cross(cp, ap)), dot(n, cross(ap, bp))}, 3};
 }
 
-Conditions edge_edge(const Query& q, const Interval& t) {
-  const IVec a0 = at(q.x[0], q.x[4], t), a1 = at(q.x[1], q.x[5], t), b0 = at(q.x[2], q.x[6], t),
-             b1 = at(q.x[3], q.x[7], t);
-  const IVec ea = a1 - a0, eb = b1 - b0, w = b0 - a0, m = cross(ea, eb);
-  const Interval mm = dot(m, m), s = dot(cross(w, eb), m), u = dot(cross(w, ea), m);
+template <class T>
+Conditions<T> edge_edge(const Query& q, const T& t) {
+  const V3<T> a0 = at(q.x[0], q.x[4], t), a1 = at(q.x[1], q.x[5], t), b0 = at(q.x[2], q.x[6], t),
+              b1 = at(q.x[3], q.x[7], t);
+  const V3<T> ea = a1 - a0, eb = b1 - b0, w = b0 - a0, m = cross(ea, eb);
+  const T mm = dot(m, m), s = dot(cross(w, eb), m), u = dot(cross(w, ea), m);
   // a0 + (s/mm) ea = b0 + (u/mm) eb when coplanar: both parameters in [0, 1].
   return {{s, mm - s, u, mm - u}, 4};
+}
+
+template <class T>
+Conditions<T> conditions_at(const Query& q, const T& t) {
+  return q.kind == QueryKind::VertexFace ? vertex_face(q, t) : edge_edge(q, t);
+}
+
+// What the conditions look like at one instant, estimated in plain floating point, relative to
+// the largest in size. Never a verdict: it only tells the filter where intervals would fail,
+// so that it gives up (or moves on) without paying for them.
+struct Look {
+  double lowest = 0;     // min g_i / size: clearly < 0 where well below the intervals' width
+  double near_zero = 0;  // min |g_i| / size: about 0 where below it
+  bool hopeless(double width) const { return near_zero <= width && lowest >= -width; }
+};
+Look look_at(const Query& q, double t) {
+  const Conditions<double> c = conditions_at(q, t);
+  double size = 0;
+  for (int i = 0; i < c.n; ++i) size = std::max(size, std::fabs(c.g[i]));
+  if (!(size > 0)) return {0, 0};  // all 0 (parallel edges, a point triangle): hopeless
+  Look look{1, 1};
+  for (int i = 0; i < c.n; ++i) {
+    look.lowest = std::min(look.lowest, c.g[i] / size);
+    look.near_zero = std::min(look.near_zero, std::fabs(c.g[i]) / size);
+  }
+  return look;
 }
 
 // f on a piece of [0, 1], as its Bernstein coefficients there, found by de Casteljau
@@ -121,7 +163,7 @@ struct Piece {
 // Splits p at lo + s (hi - lo) by de Casteljau. Each new coefficient is a convex combination of
 // the old, so the error of the exact ones carries over unchanged, plus the roundings of three
 // levels of (1 - s) x + s y: at most 9 eps times the largest |coefficient| per split; bound()
-// allows 16. s = 7/16 and 1 - s = 9/16 are exact.
+// allows 16. s and 1 - s must both be exact: 7/16 and 9/16, or see exact_complement().
 void split(const Piece& p, double s, Piece& left, Piece& right) {
   const double r = 1 - s;
   const double a0 = r * p.b[0] + s * p.b[1], a1 = r * p.b[1] + s * p.b[2],
@@ -159,9 +201,8 @@ bool flat(const Piece& p, double err) {
 }
 
 // The conditions g_i over a piece: its rounded ends pushed out by twice its slack.
-Conditions conditions(const Query& q, const Piece& p) {
-  const auto eval = q.kind == QueryKind::VertexFace ? &vertex_face : &edge_edge;
-  return eval(q, Interval{p.lo - 2 * p.slack, p.hi + 2 * p.slack});
+Conditions<Interval> conditions(const Query& q, const Piece& p) {
+  return conditions_at(q, Interval{p.lo - 2 * p.slack, p.hi + 2 * p.slack});
 }
 
 // Interval evaluations of the conditions allowed per query. One costs some ten times the whole
@@ -186,50 +227,236 @@ bool halve_at_root(const Bernstein& f, Piece& p) {
   return false;
 }
 
-// The root of f isolated in `p` (one sign variation, f(lo) f(hi) < 0): narrowed by halving to
-// 2^-32 wide (or until the halving point's sign is uncertain), then the conditions g_i over the
-// piece, once: certain signs there settle this root wherever it is in the piece. On the
+// f's root in the piece p (certain opposite signs at its ends), roughly, in p's own parameter:
+// Newton steps on its Bernstein form, kept inside a bracket that is halved instead when a step
+// leaves it. Where to look and to bracket: never part of a verdict by itself.
+double rough_root(const Piece& p) {
+  const double* b = p.b;
+  const bool rising = b[0] < 0;
+  double lo = 0, hi = 1, u = b[0] / (b[0] - b[3]);
+  for (int i = 0; i < 12; ++i) {
+    const double r = 1 - u, a0 = r * b[0] + u * b[1], a1 = r * b[1] + u * b[2],
+                 a2 = r * b[2] + u * b[3], c0 = r * a0 + u * a1, c1 = r * a1 + u * a2;
+    const double value = r * c0 + u * c1, slope = 3 * (c1 - c0);
+    ((value < 0) == rising ? lo : hi) = u;
+    const double next = u - value / slope;
+    if (next == u) break;  // converged: u may sit on the bracket's end it just set
+    u = next > lo && next < hi ? next : (lo + hi) / 2;  // a NaN step halves too
+  }
+  return u;
+}
+
+// s in (0, 1), moved by at most one rounding so that 1 - s is exact too, as split() needs:
+// 1 - s is exact for s >= 1/2 (Sterbenz), and so is 1 - r for r = fl(1 - s) in [1/2, 1].
+double exact_complement(double s) {
+  return s >= 0.5 ? s : 1 - (1 - s);
+}
+
+// Narrows p (one simple root: one sign variation, certain opposite signs at its ends) to about
+// 2^-32 around the rough root at u (p's own parameter) with two splits instead of some thirty
+// halvings: f's signs certain at both new ends and equal to those at p's ends put the root
+// between them. False, p unchanged, where a sign there is uncertain or not as expected.
+bool bracket_root(const Bernstein& f, Piece& p, double u) {
+  const double h = 0x1p-33 / (p.hi - p.lo);
+  if (!(u - h > 0 && u + h < 1)) return false;
+  Piece left, right, mid, rest;
+  const double s1 = exact_complement(u - h);
+  split(p, s1, left, right);
+  const double s2 = exact_complement((u + h - s1) / (1 - s1));
+  if (!(s2 > 0 && s2 < 1)) return false;
+  split(right, s2, mid, rest);
+  const double err = bound(f, mid.depth), err_p = bound(f, p.depth);
+  if (sign_beyond(mid.b[0], err) != sign_beyond(p.b[0], err_p) ||
+      sign_beyond(mid.b[3], err) != sign_beyond(p.b[3], err_p) || sign_beyond(mid.b[0], err) == 0 ||
+      sign_beyond(mid.b[3], err) == 0)
+    return false;
+  p = mid;
+  return true;
+}
+
+// True if intervals of width about 2 w around t would certainly fail: no condition keeps one
+// sign clearly (its value at t more than four times its change from t - w to t + w, roughly
+// what the intervals widen it by) where it is < 0, and some condition does not where it is > 0.
+// A condition of tiny size but steady sign still counts: sizes differ by many orders.
+bool hopeless_at(const Query& q, double t, double w) {
+  const Conditions<double> c = conditions_at(q, t), before = conditions_at(q, t - w),
+                           after = conditions_at(q, t + w);
+  bool unsteady = false;
+  for (int i = 0; i < c.n; ++i) {
+    const bool steady = std::fabs(c.g[i]) > 4 * std::fabs(after.g[i] - before.g[i]);
+    if (steady && c.g[i] < 0) return false;
+    unsteady |= !steady;
+  }
+  return unsteady;
+}
+
+// The root of f isolated in `p` (one sign variation, f(lo) f(hi) < 0): narrowed to about 2^-32
+// around the rough root, else by halving to 2^-32 wide (or until the halving point's sign is
+// uncertain), then the conditions g_i over the piece, once: certain signs there settle this
+// root wherever it is in the piece. On the
 // benchmark sample, the hard and the generic families, 2^-27 decides as many queries as 2^-40
 // (2^-24 fewer), and deciding at 2^-20 before narrowing further decided no more but cost a
 // second evaluation where it failed.
 Filtered contact_at_root(const Query& q, const Bernstein& f, Piece p, int& evaluations) {
-  while (p.hi - p.lo > 0x1p-32 && halve_at_root(f, p)) {
-  }
+  // A condition about 0 at the root, none clearly < 0: the point slides on an edge, or the
+  // edges touch at an end; the intervals would straddle 0. Given up before narrowing.
+  const double u = rough_root(p);
+  if (hopeless_at(q, p.lo + u * (p.hi - p.lo), 0x1p-32)) return Filtered::Uncertain;
+  if (p.hi - p.lo > 0x1p-32 && !bracket_root(f, p, u))
+    while (p.hi - p.lo > 0x1p-32 && halve_at_root(f, p)) {
+    }
   if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
-  const Conditions c = conditions(q, p);
+  const Conditions<Interval> c = conditions(q, p);
   bool outside = false, inside = true;
   for (int i = 0; i < c.n; ++i) outside |= c.g[i].negative(), inside &= c.g[i].positive();
   return outside ? Filtered::No : (inside ? Filtered::Yes : Filtered::Uncertain);
+}
+
+// True if some condition is certainly < 0 over the whole piece: no contact in it, whatever f.
+bool outside(const Query& q, const Piece& p) {
+  const Conditions<Interval> c = conditions(q, p);
+  bool out = false;
+  for (int i = 0; i < c.n; ++i) out |= c.g[i].negative();
+  return out;
+}
+
+// Whether, by a plain floating-point look, some condition is clearly < 0 in p's middle and at
+// both its ends (the middle first: most often it is not).
+bool negative_throughout(const Query& q, const Piece& p) {
+  const auto negative_at = [&q](double t) {
+    const Conditions<double> c = conditions_at(q, t);
+    double size = 0;
+    for (int i = 0; i < c.n; ++i) size = std::max(size, std::fabs(c.g[i]));
+    unsigned which = 0;
+    for (int i = 0; i < c.n; ++i) which |= unsigned(c.g[i] < -0x1p-20 * size) << i;
+    return which;
+  };
+  unsigned which = negative_at(p.lo + 0.5 * (p.hi - p.lo));
+  if (which != 0) which &= negative_at(p.lo);
+  if (which != 0) which &= negative_at(p.hi);
+  return which != 0;
+}
+
+// A piece of [0, 1] that may hold a root of f, kept for later.
+struct Stack {
+  static constexpr int kMaxDepth = 8;
+  Piece piece[kMaxDepth + 2];
+  int top = 0;
+  void push(const Piece& p) { piece[top++] = p; }
+};
+
+// Whether four points lie exactly in one plane: all in a plane x = c (or y, or z), or their
+// volume exactly 0 (orient3d_exact.hpp; it declines where a difference is not exact).
+bool exactly_coplanar(const Vec3* x) {
+  const auto same = [x](double Vec3::*axis) {
+    return x[0].*axis == x[1].*axis && x[0].*axis == x[2].*axis && x[0].*axis == x[3].*axis;
+  };
+  int volume = 1;
+  return same(&Vec3::x) || same(&Vec3::y) || same(&Vec3::z) ||
+         (exact_volume_sign(x[0], x[1], x[2], x[3], volume) && volume == 0);
+}
+
+// How thin a sliver of p at `end` to try first, as 2^-k of the piece: over it, a condition
+// certainly < 0 at `end` should stay < 0, for a quarter of |g| / |g'| (its slope estimated in
+// floating point: a choice, not part of a verdict). k from 10 to 40.
+int sliver_exponent(const Query& q, const Piece& p, double end,
+                    const Conditions<Interval>& at_end) {
+  const double w = p.hi - p.lo, step = 0x1p-20 * w;
+  const Conditions<double> c0 = conditions_at(q, end),
+                           c1 = conditions_at(q, end == 0 ? step : 1 - step);
+  double reach = 0;  // as a fraction of the piece
+  for (int i = 0; i < c0.n; ++i)
+    if (at_end.g[i].negative())
+      reach =
+          std::max(reach, 0.25 * std::fabs(c0.g[i]) * step / (std::fabs(c0.g[i] - c1.g[i]) * w));
+  return reach >= 0x1p-10 ? 10 : (reach > 0x1p-40 ? -std::ilogb(reach) : 40);  // NaN: 40
+}
+
+// Cuts off the sliver 2^-k of p at `end` (s and 1 - s exact, as split() needs) and pushes the
+// rest if some condition is certainly < 0 over the sliver. Else, once, a thinner sliver: by as
+// much as the widest interval of a condition < 0 at `end` exceeds its size there (interval
+// bounds widen in proportion to the time interval).
+bool cut_sliver(const Query& q, const Piece& p, double end, const Conditions<Interval>& at_end,
+                Stack& stack, int& evaluations) {
+  for (int k = sliver_exponent(q, p, end, at_end), attempt = 0;; ++attempt) {
+    const double s = std::ldexp(1.0, -k);
+    Piece left, right;
+    split(p, end == 0 ? s : 1 - s, left, right);
+    const Conditions<Interval> c = conditions(q, end == 0 ? left : right);
+    double widest = 0;
+    for (int i = 0; i < c.n; ++i) {
+      if (c.g[i].negative()) {
+        stack.push(end == 0 ? right : left);
+        return true;
+      }
+      if (at_end.g[i].negative())
+        widest = std::max(widest, (c.g[i].hi - c.g[i].lo) / -at_end.g[i].hi);
+    }
+    k += std::ilogb(widest) + 2;
+    if (attempt == 1 || !(k <= 50) || ++evaluations > kMaxEvaluations) return false;
+  }
+}
+
+// The piece p ends at t = `end` (0 or 1) and f's sign there is uncertain: a contact may sit
+// exactly at the start or the end. Settled here where floating point can settle it: the
+// conditions at the very instant `end`, bounded by intervals (tight there), say whether the
+// point (or the edges' crossing) is then inside; an exact sum of the volume (orient3d_exact.hpp)
+// says whether the four points are then coplanar. Inside and coplanar: a contact (yes). Some
+// condition certainly < 0 at `end`: none at that instant, nor, when the intervals confirm it,
+// on a sliver of the piece at that end (cut_sliver); the rest is pushed back for the search,
+// unless only a contact is asked for (a piece where f is flat throughout: the rest would be no
+// better). Otherwise uncertain.
+Filtered settle_end(const Query& q, const Piece& p, double end, bool contact_only, Stack& stack,
+                    int& evaluations) {
+  const Look look = look_at(q, end);
+  if (look.hopeless(0x1p-40) || (contact_only && look.lowest <= 0x1p-20) ||
+      ++evaluations > kMaxEvaluations)
+    return Filtered::Uncertain;
+  const Conditions<Interval> c = conditions_at(q, Interval{end, end});
+  bool out = false, inside = true;
+  for (int i = 0; i < c.n; ++i) out |= c.g[i].negative(), inside &= c.g[i].positive();
+  if (inside) return exactly_coplanar(&q.x[end == 0 ? 0 : 4]) ? Filtered::Yes : Filtered::Uncertain;
+  if (!out || contact_only || p.depth == Stack::kMaxDepth || ++evaluations > kMaxEvaluations)
+    return Filtered::Uncertain;
+  return cut_sliver(q, p, end, c, stack, evaluations) ? Filtered::No : Filtered::Uncertain;
 }
 
 // Stage 2: isolate the roots of f in [0, 1] by Bernstein subdivision (a piece whose
 // coefficients are certain and of one sign holds no root; one sign variation with
 // f(lo) f(hi) < 0 holds exactly one simple root), then decide the contact at each root.
 Filtered subdivide(const Query& q, const Bernstein& f) {
-  constexpr int kMaxPieces = 12, kMaxDepth = 8;
-  Piece stack[kMaxDepth + 2];
-  int top = 0, pieces = 0, evaluations = 0;
-  stack[top++] = {0, 1, 0, {f.b[0], f.b[1], f.b[2], f.b[3]}, 0};
+  constexpr int kMaxPieces = 12;
+  Stack stack;
+  int pieces = 0, evaluations = 0;
+  stack.push({0, 1, 0, {f.b[0], f.b[1], f.b[2], f.b[3]}, 0});
   bool uncertain = false;
-  while (top > 0) {
-    const Piece p = stack[--top];
+  while (stack.top > 0) {
+    const Piece p = stack.piece[--stack.top];
     const double err = bound(f, p.depth);
     const int v = variations(p, err);
     if (v == 0) continue;  // one certain sign: no root here
     if (v < 0) {
       // f's sign is uncertain somewhere here (f may even vanish throughout, as for a cube
       // sliding on a plane): a condition certainly < 0 over the whole piece still excludes it.
-      if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
-      const Conditions c = conditions(q, p);
-      bool outside = false;
-      for (int i = 0; i < c.n; ++i) outside |= c.g[i].negative();
-      if (outside) continue;
+      // Only where some condition is clearly < 0 at both ends and in the middle: else none is
+      // < 0 throughout, or the intervals would be too wide to show it.
+      if (negative_throughout(q, p)) {
+        if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
+        if (outside(q, p)) continue;
+      }
       // Smaller pieces would not show a sign either where f may vanish on the whole piece (no
-      // coefficient certain: coplanar motion) or at t = 0 or 1 (its first or last one
-      // uncertain there: a contact at the very start or end). The exact test decides.
-      if (flat(p, err) || (p.lo == 0 && sign_beyond(p.b[0], err) == 0) ||
-          (p.hi == 1 && sign_beyond(p.b[3], err) == 0))
-        return Filtered::Uncertain;
+      // coefficient certain: coplanar motion): the exact test decides. Nor at t = 0 or 1 when
+      // its first or last one is uncertain there: settle_end decides what it can.
+      // Where it is flat at t = 0 or 1 too, a contact right there is still worth a look
+      // (coplanar motion that starts or ends inside the triangle): settle_end, for a yes only.
+      const bool is_flat = flat(p, err);
+      if (is_flat && p.lo != 0 && p.hi != 1) return Filtered::Uncertain;
+      const bool open_start = p.lo == 0 && sign_beyond(p.b[0], err) == 0;
+      if (open_start || (p.hi == 1 && sign_beyond(p.b[3], err) == 0)) {
+        const Filtered r = settle_end(q, p, open_start ? 0 : 1, is_flat, stack, evaluations);
+        if (r != Filtered::No) return r;
+        continue;
+      }
     }
     if (v == 1 && sign_beyond(p.b[0], err) != sign_beyond(p.b[3], err)) {
       const Filtered r = contact_at_root(q, f, p, evaluations);
@@ -237,7 +464,7 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
       uncertain |= r == Filtered::Uncertain;
       continue;
     }
-    if (p.depth == kMaxDepth || ++pieces > kMaxPieces) {
+    if (p.depth == Stack::kMaxDepth || ++pieces > kMaxPieces) {
       uncertain = true;
       continue;
     }
@@ -245,8 +472,8 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
     // a root never shows a certain sign there.
     Piece left, right;
     split(p, 7.0 / 16, left, right);
-    stack[top++] = right;
-    stack[top++] = left;
+    stack.push(right);
+    stack.push(left);
   }
   return uncertain ? Filtered::Uncertain : Filtered::No;
 }

@@ -1,6 +1,8 @@
 // Hand-computed cases for every point–triangle method; the exact test's kinds and times.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "fdh/exact/point_triangle.hpp"
 #include "fdh/point_triangle/linear_system.hpp"
 #include "fdh/point_triangle/paper.hpp"
@@ -177,6 +179,36 @@ TEST(RobustPointTriangle, FilterDecidesGenericCasesAlone) {
   EXPECT_EQ(robust_point_triangle_filter({2, 2, 1}, {2, 2, -1}, D, E, F), Filtered::No);
   // Touching needs a zero sign, which a filter never certifies.
   EXPECT_EQ(robust_point_triangle_filter({0.5, 0, 1}, {0.5, 0, -1}, D, E, F), Filtered::Uncertain);
+}
+
+// The error bounds hold only inside the filter's range, and a NaN has no sign: uncertain, in
+// either lane of the side-by-side evaluation (e and B' in one, f and D in the other).
+TEST(RobustPointTriangle, FilterIsUncertainOutsideItsRangeAndOnNaN) {
+  const Vec3 b0{0.25, 0.25, 1}, b1{0.25, 0.25, -1};
+  ASSERT_EQ(robust_point_triangle_filter(b0, b1, D, E, F), Filtered::Yes);
+  for (const double scale : {0x1p400, 0x1p-400}) {  // the same hit, stretched in x and y
+    const auto s = [scale](const Vec3& v) { return Vec3{v.x * scale, v.y * scale, v.z}; };
+    EXPECT_EQ(robust_point_triangle_filter(s(b0), s(b1), s(D), s(E), s(F)), Filtered::Uncertain);
+  }
+  for (const double bad : {std::numeric_limits<double>::quiet_NaN(), 0x1p400})
+    for (int i = 0; i < 5; ++i) {
+      Vec3 v[5] = {b0, b1, D, E, F};
+      v[i].y = bad;
+      EXPECT_EQ(robust_point_triangle_filter(v[0], v[1], v[2], v[3], v[4]), Filtered::Uncertain)
+          << "point " << i << ", y = " << bad;
+    }
+}
+
+// A long motion just above a triangle: the x differences reach 2^28, the others stay near 1,
+// so stage 1's one bound (the largest coordinates by axis) covers orient3d(D, E, F, B) of
+// 2^-29 no more; stage 2's bound from that determinant's own permanent does, and the crossing
+// at (1/4, 0, 0) is certain.
+TEST(RobustPointTriangle, SecondStageDecidesWhereCoordinatesDifferInSize) {
+  const Vec3 d{-1, -1, 0}, e{1, -1, 0}, f{0, 1, 0}, b0{0, 0, 0x1p-30}, b1{0x1p28, 0, -1};
+  ASSERT_TRUE(exact::point_triangle_hit(b0, b1, d, e, f));
+  EXPECT_EQ(robust_point_triangle_quick(b0, b1, d, e, f), Filtered::Uncertain);
+  EXPECT_EQ(robust_point_triangle_tight(b0, b1, d, e, f), Filtered::Yes);
+  EXPECT_EQ(robust_point_triangle_filter(b0, b1, d, e, f), Filtered::Yes);
 }
 
 // The paper's own figures. Fig. 3: B falls along the normal through the triangle.
