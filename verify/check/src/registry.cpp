@@ -1,5 +1,6 @@
 #include "fdh/check/registry.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "fdh/ccd/float_cubic.hpp"
@@ -181,6 +182,13 @@ void add_methods(std::vector<Method> methods, std::vector<BoxMethod> boxes) {
 void remove_added_methods() {
   added_methods().clear();
   added_boxes().clear();
+}
+
+bool registry_thread_safe() {
+  return std::none_of(added_methods().begin(), added_methods().end(),
+                      [](const Method& m) { return m.one_thread; }) &&
+         std::none_of(added_boxes().begin(), added_boxes().end(),
+                      [](const BoxMethod& b) { return b.one_thread; });
 }
 
 std::vector<Method> promised_methods(int gate_k) {

@@ -59,6 +59,9 @@ struct Method {
   PointTriangleTest point_triangle = nullptr;
   // True for the entry that is the exact twin itself (listed so that tables show it).
   bool is_twin = false;
+  // Its functions are called from the calling thread only, one call at a time: a plug-in's
+  // (docs/plugins.md promises no more). The built-in methods are safe from any thread.
+  bool one_thread = false;
 
   bool applies_to(const Query& q) const { return bool(test[std::size_t(decision_of(q))]); }
   bool hit(const Query& q) const { return test[std::size_t(decision_of(q))](q); }
@@ -83,6 +86,7 @@ struct BoxMethod {
   std::function<bool(const double* lo_a, const double* hi_a, const double* lo_b,
                      const double* hi_b)>
       overlap;
+  bool one_thread = false;  // as Method::one_thread
 };
 
 // The slab directions of m's boxes: m.directions, or fdh::Kdop<m.k>'s in its order when empty.
@@ -120,5 +124,11 @@ inline constexpr std::array<int, 4> kCertifiedK = {6, 14, 18, 26};
 void add_methods(std::vector<Method> methods, std::vector<BoxMethod> boxes);
 // Forgets every added method (the end of one command run, in-process).
 void remove_added_methods();
+
+// Whether every registered method may be called from several threads at once (no plug-in's
+// one_thread method is registered): the suite's loops then run on every core (parallel.hpp).
+// add_methods and remove_added_methods must not run while anything else uses the registry;
+// every other function here may be called from several threads at once.
+bool registry_thread_safe();
 
 }  // namespace fdh::verify
