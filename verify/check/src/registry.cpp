@@ -251,6 +251,7 @@ BoxMethod fdh_box() {
   m.name = "fdh";
   m.summary = "fast/'s k-DOP: one outward push per diagonal slab (kdop.hpp)";
   m.k = K;
+  m.directions = kdop_directions(K);
   m.builds_tree = true;
   m.build = [](const Vec3* pts, std::size_t n, double* lo, double* hi) {
     const Kdop<K> box = kdop_of<K>(pts, n);
@@ -268,10 +269,9 @@ BoxMethod fdh_box() {
 
 }  // namespace
 
-std::vector<Direction> slab_directions(const BoxMethod& m) {
-  if (!m.directions.empty()) return m.directions;
+std::vector<Direction> kdop_directions(int k) {
   std::vector<Direction> dirs;
-  for (int s = 0; s < m.k / 2; ++s) dirs.push_back(slab_direction(m.k, s));
+  for (int s = 0; s < k / 2; ++s) dirs.push_back(slab_direction(k, s));
   return dirs;
 }
 

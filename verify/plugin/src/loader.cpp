@@ -130,6 +130,7 @@ BoxMethod box_method(const LoadedPtr& p, int k) {
   b.one_thread = true;
   b.summary = std::string(p->api.summary ? p->api.summary : "") + " (plug-in " + p->path + ")";
   b.k = k;
+  b.directions = kdop_directions(k);  // the ABI's order (docs/plugins.md)
   b.promise = Promise::Conservative;
   b.build = [p, k](const Vec3* pts, std::size_t n, double* lo, double* hi) {
     std::vector<double> xyz;  // the ABI's plain rows of three doubles

@@ -73,8 +73,9 @@ bool twin_hit(const Query& q);
 bool twin_hit(const Query& q, Decision d);
 
 // A k-DOP method of a fixed k: builds a box (lo, hi per slab) and decides overlap of two boxes.
-// Slab s has the integer direction directions[s] (k = 2 × directions.size()): the library's own
-// order for a peer (verify/peers/); left empty, fdh::Kdop<k>'s (slab_directions below).
+// Slab s has the integer direction directions[s] (k = 2 × directions.size()), in the method's
+// own order: fdh::Kdop<k>'s for the project's boxes and a plug-in's (kdop_directions below), the
+// library's own for a peer (verify/peers/). The checker takes them as given.
 struct BoxMethod {
   std::string name, summary;
   int k = 0;
@@ -89,8 +90,8 @@ struct BoxMethod {
   bool one_thread = false;  // as Method::one_thread
 };
 
-// The slab directions of m's boxes: m.directions, or fdh::Kdop<m.k>'s in its order when empty.
-std::vector<Direction> slab_directions(const BoxMethod& m);
+// fdh::Kdop<k>'s slab directions, in its order (fast/kdop.hpp): k / 2 of them.
+std::vector<Direction> kdop_directions(int k);
 
 // Every query method: the twin first, then robust, float-cubic, paper-literal,
 // paper-intended, linear-system; then the added ones (add_methods). With gate_k > 0 the methods
