@@ -143,7 +143,8 @@ TEST(Certify, AWrongTruthOnAMovingQueryIsAViolation) {
 TEST(Certify, TheSameCertificateForAnyThreadCount) {
   const fs::path corpus = fresh_temp_dir("certify_threads_corpus");
   fs::create_directories(corpus / "scenes");
-  fs::copy(FDH_SOURCE_DIR "/corpus/scenes/table-rest.scene", corpus / "scenes");
+  for (const char* name : {"a.scene", "b.scene"})  // two scenes: each runs on a core of its own
+    fs::copy(FDH_SOURCE_DIR "/corpus/scenes/table-rest.scene", corpus / "scenes" / name);
   std::ofstream many(corpus / "many.vf");
   for (int i = 1; i <= 40; ++i)  // the segment through the triangle: a hit, stored as 0 thrice
     many << "vf q" << i << " " << 0.125 + i / 128.0

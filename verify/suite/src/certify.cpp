@@ -37,6 +37,7 @@ struct CertifyTally {
   std::vector<BoxCheck> boxes;
   std::vector<MetamorphicCheck> metamorphic;
   long truths = 0, truth_violations = 0;
+  long queries = 0;  // the queries checked: certify counts them per source (scene_tally)
   // The first violation: its words, and the case file that shows it (a name in out_dir and
   // the file's text); written only when it is the certificate's first.
   struct Found {
@@ -85,13 +86,21 @@ class Certifier {
   }
 
   // Every query of qs, on every core; the certificate then counts them in order.
-  void check_queries(const std::vector<Query>& qs) {
-    const auto parts =
-        parts_in_order(qs.size(), 16, zero_, [&](std::size_t b, std::size_t e, CertifyTally& t) {
-          for (std::size_t i = b; i < e; ++i) check_query(qs[i], t);
-        });
-    for (const CertifyTally& t : parts) record(t);
+  void check_queries(const std::vector<Query>& qs) { record(tally(qs)); }
+
+  // What qs adds to the certificate: checked on every core, merged in order. Safe to call from
+  // several threads at once.
+  CertifyTally tally(const std::vector<Query>& qs) const {
+    CertifyTally sum = zero_;
+    for (const CertifyTally& t :
+         parts_in_order(qs.size(), 16, zero_, [&](std::size_t b, std::size_t e, CertifyTally&t) {
+           for (std::size_t i = b; i < e; ++i) check_query(qs[i], t);
+         }))
+      sum.add(t);
+    return sum;
   }
+
+  const CertifyTally& zero() const { return zero_; }
 
   // Soup pairs (a[i], b[i]), as check_queries.
   void check_soups(const std::vector<Soup>& a, const std::vector<Soup>& b) {
@@ -99,6 +108,19 @@ class Certifier {
         a.size(), 1, zero_,
         [&](std::size_t i, std::size_t, CertifyTally& t) { check_soup_pair(a[i], b[i], t); });
     for (const CertifyTally& t : parts) record(t);
+  }
+
+  // t's counts into the certificate; its violation, if the certificate's first, saved.
+  void record(const CertifyTally& t) {
+    CertifyTally sum{c_.promises, c_.boxes, c_.metamorphic, c_.truths, c_.truth_violations, 0, {}};
+    sum.add(t);
+    c_.promises = std::move(sum.promises), c_.boxes = std::move(sum.boxes);
+    c_.metamorphic = std::move(sum.metamorphic);
+    c_.truths = sum.truths, c_.truth_violations = sum.truth_violations;
+    if (!t.first || !c_.first_violation.empty()) return;
+    const fs::path file = fs::path(c_.options.out_dir) / t.first->file;
+    write_file_atomically(file.string(), t.first->text);
+    c_.first_violation = t.first->what + ", saved to " + file.string();
   }
 
  private:
@@ -220,19 +242,6 @@ class Certifier {
                                   "violation-tree.obj", os.str()};
   }
 
-  // t's counts into the certificate; its violation, if the certificate's first, saved.
-  void record(const CertifyTally& t) {
-    CertifyTally sum{c_.promises, c_.boxes, c_.metamorphic, c_.truths, c_.truth_violations, {}};
-    sum.add(t);
-    c_.promises = std::move(sum.promises), c_.boxes = std::move(sum.boxes);
-    c_.metamorphic = std::move(sum.metamorphic);
-    c_.truths = sum.truths, c_.truth_violations = sum.truth_violations;
-    if (!t.first || !c_.first_violation.empty()) return;
-    const fs::path file = fs::path(c_.options.out_dir) / t.first->file;
-    write_file_atomically(file.string(), t.first->text);
-    c_.first_violation = t.first->what + ", saved to " + file.string();
-  }
-
   Certificate& c_;
   const std::vector<Method> methods_ = promised_methods();
   const std::vector<BoxMethod> boxes_ = all_box_methods();
@@ -240,37 +249,49 @@ class Certifier {
   CertifyTally zero_;
 };
 
-// Every shipped scene runs with robust as its narrow phase (and its self-collision pass, if it
-// has one); the narrow-phase queries of every stride-th frame are certified like any other.
+// A shipped scene run with robust as its narrow phase (and its self-collision pass, if it has
+// one): what the narrow-phase queries of every stride-th frame add to the certificate.
+CertifyTally scene_tally(const std::string& file, const CertifyOptions& o, const Certifier& cert) {
+  const cloth::Scene scene = read_scene(file);
+  SceneRunOptions opt;  // robust, k = 18, the scene's step as `simulate` takes it
+  // At most 4e5 particle-frames (quick) or 4e6: every shipped 25x25 scene whole, the fold
+  // scene's first frames only (its narrow phase makes tens of thousands of queries a frame
+  // once it lands; its full run is `fdhcert scenes`', with the exact audit).
+  opt.frames = bounded_frames(scene, o.scene_frames, o.quick ? 400000 : 4000000);
+  opt.check = false;  // certified here instead
+  CertifyTally sum = cert.zero();
+  opt.on_frame = [&](const cloth::Simulation& sim, int f) {
+    if (f % o.scene_stride) return;
+    std::vector<Query> qs;
+    for (const auto& nq : sim.queries()) {
+      Query q = sim.query(nq);
+      q.id = scene.name + "/f" + std::to_string(f) + "p" + std::to_string(nq.particle) + "t" +
+             std::to_string(nq.triangle);
+      q.file = file;
+      qs.push_back(std::move(q));
+    }
+    sum.add(cert.tally(qs));
+    sum.queries += long(qs.size());
+  };
+  run_scene(scene, opt);
+  return sum;
+}
+
+// Every shipped scene, each on a core of its own (their cloths are independent; a cloth of
+// 64x64 and more also runs its step on every core), counted in the scenes' order.
 void check_scenes(Certificate& c, Certifier& cert) {
   const fs::path dir = fs::path(c.options.corpus_dir) / "scenes";
   if (!fs::is_directory(dir)) return;
-  const int stride = c.options.scene_stride;
-  for (const std::string& file : scene_files(dir.string())) {
-    const cloth::Scene scene = read_scene(file);
-    SceneRunOptions opt;  // robust, k = 18, the scene's step as `simulate` takes it
-    // At most 4e5 particle-frames (quick) or 4e6: every shipped 25x25 scene whole, the fold
-    // scene's first frames only (its narrow phase makes tens of thousands of queries a frame
-    // once it lands; its full run is `fdhcert scenes`', with the exact audit).
-    opt.frames = bounded_frames(scene, c.options.scene_frames, c.options.quick ? 400000 : 4000000);
-    opt.check = false;  // certified here instead
-    opt.on_frame = [&](const cloth::Simulation& sim, int f) {
-      if (c.options.progress && f % 10 == 0)
-        c.options.progress("scene " + scene.name, f, opt.frames);
-      if (f % stride) return;
-      std::vector<Query> qs;
-      for (const auto& nq : sim.queries()) {
-        Query q = sim.query(nq);
-        q.id = scene.name + "/f" + std::to_string(f) + "p" + std::to_string(nq.particle) + "t" +
-               std::to_string(nq.triangle);
-        q.file = file;
-        qs.push_back(std::move(q));
-      }
-      c.scene_queries += long(qs.size());
-      cert.check_queries(qs);
-    };
+  const std::vector<std::string> files = scene_files(dir.string());
+  if (c.options.progress) c.options.progress("scenes", 0, long(files.size()));
+  const auto scenes = parts_in_order(files.size(), 1, cert.zero(),
+                                     [&](std::size_t i, std::size_t, CertifyTally& t) {
+                                       t = scene_tally(files[i], c.options, cert);
+                                     });
+  for (const CertifyTally& t : scenes) {
     ++c.scenes;
-    run_scene(scene, opt);
+    c.scene_queries += t.queries;
+    cert.record(t);
   }
 }
 
