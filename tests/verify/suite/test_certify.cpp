@@ -155,7 +155,7 @@ TEST(Certify, TheSameCertificateForAnyThreadCount) {
   for (const std::size_t threads : {1, 2, 64}) {
     const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     CertifyOptions o = small(corpus, fresh_temp_dir("certify_threads_out"));
-    o.scene_frames = 10;  // the cloth rests on the table from the start: queries every frame
+    o.scene_frames = 5;  // the cloth rests on the table from the start: queries every frame
     o.scene_stride = 5;
     const Certificate c = certify(o);
     EXPECT_EQ(c.truth_violations, 3);
