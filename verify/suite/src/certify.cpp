@@ -37,7 +37,7 @@ struct CertifyTally {
   std::vector<BoxCheck> boxes;
   std::vector<MetamorphicCheck> metamorphic;
   long truths = 0, truth_violations = 0;
-  long queries = 0;  // the queries checked: certify counts them per source (scene_tally)
+  long queries = 0;  // the queries checked (certify counts them per source)
   // The first violation: its words, and the case file that shows it (a name in out_dir and
   // the file's text); written only when it is the certificate's first.
   struct Found {
@@ -62,6 +62,7 @@ struct CertifyTally {
       metamorphic[i].violations += later.metamorphic[i].violations;
     }
     truths += later.truths, truth_violations += later.truth_violations;
+    queries += later.queries;
     if (!first) first = later.first;
   }
 };
@@ -97,6 +98,7 @@ class Certifier {
            for (std::size_t i = b; i < e; ++i) check_query(qs[i], t);
          }))
       sum.add(t);
+    sum.queries = long(qs.size());
     return sum;
   }
 
@@ -271,7 +273,6 @@ CertifyTally scene_tally(const std::string& file, const CertifyOptions& o, const
       qs.push_back(std::move(q));
     }
     sum.add(cert.tally(qs));
-    sum.queries += long(qs.size());
   };
   run_scene(scene, opt);
   return sum;
