@@ -7,6 +7,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -17,7 +18,9 @@
 namespace fdh::verify {
 
 // run(c) for c in [0, chunks): on every core, or one after another on this thread while a
-// one_thread method is registered.
+// one_thread method is registered. A chunk that runs a parallel loop of its own (a scene's
+// cloth, a frame's queries) waits for that loop's work only: isolated, its thread takes no
+// other chunk meanwhile, so a chunk never sits blocked under another on one stack.
 template <class Run>
 void run_chunks(std::size_t chunks, const Run& run) {
   if (chunks <= 1 || !registry_thread_safe()) {
@@ -27,7 +30,8 @@ void run_chunks(std::size_t chunks, const Run& run) {
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, chunks, 1),
       [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t c = r.begin(); c < r.end(); ++c) run(c);
+        for (std::size_t c = r.begin(); c < r.end(); ++c)
+          tbb::this_task_arena::isolate([&] { run(c); });
       },
       tbb::simple_partitioner());
 }
