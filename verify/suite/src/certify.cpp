@@ -92,12 +92,11 @@ class Certifier {
   // What qs adds to the certificate: checked on every core, merged in order. Safe to call from
   // several threads at once.
   CertifyTally tally(const std::vector<Query>& qs) const {
+    const auto check_chunk = [&](std::size_t begin, std::size_t end, CertifyTally& t) {
+      for (std::size_t i = begin; i < end; ++i) check_query(qs[i], t);
+    };
     CertifyTally sum = zero_;
-    for (const CertifyTally& t :
-         parts_in_order(qs.size(), 16, zero_, [&](std::size_t b, std::size_t e, CertifyTally&t) {
-           for (std::size_t i = b; i < e; ++i) check_query(qs[i], t);
-         }))
-      sum.add(t);
+    for (const CertifyTally& t : parts_in_order(qs.size(), 16, zero_, check_chunk)) sum.add(t);
     sum.queries = long(qs.size());
     return sum;
   }
