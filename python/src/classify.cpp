@@ -1,12 +1,10 @@
 // classify, as the program does it: files through the fdhcert program itself (in-process), and
 // arrays through the same classification and the same JSON, so the tallies are the CLI's.
 #include <nlohmann/json.hpp>
-#include <optional>
 
 #include "bindings.hpp"
 #include "fdh/check/classify.hpp"
-#include "fdh/io/input_error.hpp"
-#include "fdh/io/query_io.hpp"
+#include "fdh/suite/classify_files.hpp"
 #include "fdh/suite/report.hpp"
 
 namespace fdh::python {
@@ -16,30 +14,22 @@ py::object to_python(const std::string& json_text) {
   return py::module_::import("json").attr("loads")(json_text);
 }
 
-// `fdhcert classify --json` on the files: each file read and classified as the program does
-// (verify/cli/src/classify.cpp), the files joined into the total; bad input raises InputError
-// with the program's message.
+// `fdhcert classify --json` on the files, read and classified as the program does
+// (suite/classify_files.hpp); bad input raises InputError with the program's message.
 py::object classify_files(const std::vector<std::string>& files,
                           const std::vector<std::string>& methods, const std::string& kind,
                           int gate) {
   if (files.empty()) throw py::value_error("classify needs at least one file");
   if (!kind.empty() && kind != "vf" && kind != "ee")
     throw py::value_error("kind must be 'vf' or 'ee', not '" + kind + "'");
-  std::optional<QueryKind> k;
-  if (!kind.empty()) k = kind == "ee" ? QueryKind::EdgeEdge : QueryKind::VertexFace;
   const std::vector<verify::Method> ms =
       methods.empty() ? verify::all_methods(gate) : verify::select_methods(methods, gate);
-  std::vector<verify::FileClassification> per_file;
-  std::vector<verify::Classification> parts;
-  for (const std::string& f : files) {
-    const std::vector<Query> qs = verify::read_query_file(f, k);
-    if (qs.empty()) continue;
+  verify::ClassifiedFiles c;
+  {
     py::gil_scoped_release release;
-    parts.push_back(verify::classify(qs, ms));
-    per_file.push_back({f, parts.back()});
+    c = verify::classify_files(files, ms, kind);
   }
-  if (parts.empty()) throw verify::InputError(files.front(), 0, "no query to classify");
-  return to_python(verify::classification_json(per_file, verify::join(parts), {gate}).dump());
+  return to_python(verify::classification_json(c.files, c.total, {gate}).dump());
 }
 
 // The same tallies for queries held in an array: one "file" named "<array>".

@@ -321,6 +321,16 @@ const std::vector<Row>& rows() {
          return Args{"simulate", FDH_SOURCE_DIR "/corpus/scenes/table.scene", "--threads", "0"};
        },
        2, "--threads: Value 0 not in range 1 to 1024"},
+      {"CertifyThreadsOutOfRange",
+       [](const fs::path&) {
+         return Args{"certify", "--threads", "0"};
+       },
+       2, "--threads: Value 0 not in range 1 to 1024"},
+      {"ReportThreadsOutOfRange",
+       [](const fs::path&) {
+         return Args{"report", "--threads", "2000"};
+       },
+       2, "--threads: Value 2000 not in range 1 to 1024"},
       {"WindNotFinite",
        [](const fs::path& d) {
          return Args{"simulate", write_text(d / "w.scene", "wind 0 inf 0\n")};

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 namespace fdh::verify {
 namespace {
 
@@ -94,6 +96,15 @@ TEST(Checker, ABoxThatIsTooSmallIsCaught) {
   };
   const Vec3 pts[2] = {{0.5, 0, 0}, {1, 1, 1}};
   EXPECT_EQ(check_box(shrunk, pts, 2), 0);
+}
+
+// A method whose directions do not fit its k cannot be checked: no direction is guessed.
+TEST(Checker, ABoxMethodWithoutItsDirectionsIsRefused) {
+  BoxMethod m = all_box_methods().front();
+  m.directions.clear();
+  const Vec3 pts[1] = {{0, 0, 0}};
+  EXPECT_THROW(check_box(m, pts, 1), std::invalid_argument);
+  EXPECT_THROW(check_overlap(m, {pts[0]}, {pts[0]}), std::invalid_argument);
 }
 
 TEST(Checker, OverlapOfTouchingBoxesIsKept) {

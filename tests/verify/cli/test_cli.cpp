@@ -82,6 +82,8 @@ TEST(Cli, UsageErrorsExitTwoWithAShortMessage) {
       {"simulate", kData + "none.scene", "--self", "maybe"},
       {"simulate", kData + "none.scene", "--narrow", "nope"},
       {"replay"},
+      {"certify", "--threads", "0"},
+      {"report", "--threads", "1025"},
   };
   for (const auto& args : bad) {
     const CliRun r = fdhcert(args);
@@ -91,6 +93,25 @@ TEST(Cli, UsageErrorsExitTwoWithAShortMessage) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
   EXPECT_NE(fdhcert({"frobnicate"}).err.find("unknown command 'frobnicate'"), std::string::npos);
+}
+
+// certify --threads N: the same output, byte for byte, for 1, 2 and 64 threads (more than
+// most stages have chunks).
+TEST(Cli, CertifyPrintsTheSameForAnyThreadCount) {
+  const std::filesystem::path corpus = fresh_temp_dir("cli_certify_threads");
+  for (const char* f : {"static.vf", "moving.vf"}) std::filesystem::copy(kData + f, corpus / f);
+  const std::string out = (corpus / "out").string();
+  std::string first_json, first_out;
+  for (const char* threads : {"1", "2", "64"}) {
+    const CliRun r = fdhcert({"certify", "--corpus", corpus.string(), "--out", out, "--per-family",
+                              "4", "--soups", "3", "--peer-cases", "20", "--threads", threads});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string json = contents(out + "/certificate.json");
+    EXPECT_NE(json.find("\"fuzzed_queries\": 96"), std::string::npos);
+    if (first_json.empty()) first_json = json, first_out = r.out;
+    EXPECT_EQ(json, first_json) << threads;
+    EXPECT_EQ(r.out, first_out) << threads;
+  }
 }
 
 TEST(Cli, ClassifyPrintsOneRowPerMethod) {

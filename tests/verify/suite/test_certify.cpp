@@ -1,6 +1,7 @@
 #include "fdh/suite/certify.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <filesystem>
 #include <fstream>
@@ -82,13 +83,13 @@ TEST(Certify, AMetamorphicChangeBreaksOnlyAPromise) {
   Method promised = sided;
   promised.name = "promised";
   promised.promise = Promise::Exact;
-  std::vector<MetamorphicCheck> rows;
-  MetamorphicCertifier cert(rows, {sided, promised});
+  const MetamorphicCertifier cert({sided, promised});
+  std::vector<MetamorphicCheck> rows = cert.rows();
   ASSERT_EQ(rows.size(), 2u);
   Query q;
   q.x = {Vec3{1, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
          Vec3{1, 0, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  const std::optional<std::string> broken = cert.check(q);
+  const std::optional<std::string> broken = cert.check(q, twin_hit(q), rows);
   ASSERT_TRUE(broken);
   EXPECT_EQ(broken->rfind("promised says hit here and no after axes-", 0), 0u) << *broken;
   EXPECT_GT(rows[0].violations, 0);
@@ -134,6 +135,36 @@ TEST(Certify, AWrongTruthOnAMovingQueryIsAViolation) {
   EXPECT_EQ(c.truth_violations, 1);
   EXPECT_EQ(moving(c, &PromiseCheck::violations), 0);
   EXPECT_NE(c.first_violation.find("rising.vf:1"), std::string::npos) << c.first_violation;
+}
+
+// The certificate does not depend on the thread count: the same JSON and text with 1, 2 and 64
+// threads (more than the work items of some stages), and the same first violation where
+// several queries violate in different chunks, whichever chunk finishes first.
+TEST(Certify, TheSameCertificateForAnyThreadCount) {
+  const fs::path corpus = fresh_temp_dir("certify_threads_corpus");
+  fs::create_directories(corpus / "scenes");
+  for (const char* name : {"a.scene", "b.scene"})  // two scenes: each runs on a core of its own
+    fs::copy(FDH_SOURCE_DIR "/corpus/scenes/table-rest.scene", corpus / "scenes" / name);
+  std::ofstream many(corpus / "many.vf");
+  for (int i = 1; i <= 40; ++i)  // the segment through the triangle: a hit, stored as 0 thrice
+    many << "vf q" << i << " " << 0.125 + i / 128.0
+         << " 0.25 1  0 0 0  1 0 0  0 1 0  0.25 0.25 -1  0 0 0  1 0 0  0 1 0  "
+         << (i == 20 || i == 30 || i == 38 ? 0 : 1) << "\n";
+  many.close();
+  std::string json, markdown;
+  for (const std::size_t threads : {1, 2, 64}) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    CertifyOptions o = small(corpus, fresh_temp_dir("certify_threads_out"));
+    o.scene_frames = 5;  // the cloth rests on the table from the start: queries every frame
+    o.scene_stride = 5;
+    const Certificate c = certify(o);
+    EXPECT_EQ(c.truth_violations, 3);
+    EXPECT_NE(c.first_violation.find("many.vf:20)"), std::string::npos) << c.first_violation;
+    EXPECT_GT(c.scene_queries, 0);
+    if (threads == 1) json = certificate_json(c), markdown = certificate_markdown(c);
+    EXPECT_EQ(certificate_json(c), json) << threads;
+    EXPECT_EQ(certificate_markdown(c), markdown) << threads;
+  }
 }
 
 // The certificate names the commit the binary was built from, wherever it runs: here from a

@@ -1,6 +1,7 @@
 // The report's pieces are built from structs: measurements, the certificate's outputs, the
 // report's tables, Table 1 and the scene JSON.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -102,6 +103,25 @@ TEST(Measurements, StabilityMeasuresEveryMethodButTheTwin) {
     EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [&](const StabilityRow& r) {
       return r.sweep == sw.name && r.parameter == sw.last;
     })) << sw.name;
+}
+
+// The report's counted measurements do not depend on the thread count: the stability rates,
+// and each speed row's queries and FP and FN rates (its time is measured, not counted), with
+// 1, 2 and 64 threads.
+TEST(Measurements, TheRatesAreTheSameForAnyThreadCount) {
+  std::string stab, rates;
+  for (const std::size_t threads : {1, 2, 64}) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const std::string s = stability_csv(stability(3, 5));
+    std::string r;
+    for (const SpeedAccuracyRow& row : speed_accuracy(20, 5))
+      r += row.method + row.family + std::to_string(row.queries) + std::to_string(row.fp_rate) +
+           std::to_string(row.fn_rate) + "\n";
+    if (threads == 1) stab = s, rates = r;
+    EXPECT_EQ(s, stab) << threads;
+    EXPECT_EQ(r, rates) << threads;
+  }
+  EXPECT_GT(lines(stab), 100u);
 }
 
 Certificate two_promises() {

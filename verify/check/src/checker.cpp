@@ -1,6 +1,7 @@
 #include "fdh/check/checker.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "fdh/exact/kdop.hpp"
 
@@ -72,15 +73,28 @@ CheckTally check_all(const Method& m, const std::vector<Query>& queries,
   return t;
 }
 
+namespace {
+
+// m's slab directions, one per slab of its k.
+const std::vector<Direction>& directions(const BoxMethod& m) {
+  if (m.directions.size() * 2 != std::size_t(m.k))
+    throw std::invalid_argument("the k-DOP method " + m.name + " (k = " + std::to_string(m.k) +
+                                ") has " + std::to_string(m.directions.size()) +
+                                " slab directions, not k / 2");
+  return m.directions;
+}
+
+}  // namespace
+
 int check_box(const BoxMethod& m, const Vec3* pts, std::size_t n) {
-  const std::vector<Direction> dirs = slab_directions(m);
+  const std::vector<Direction>& dirs = directions(m);
   std::vector<double> lo(dirs.size()), hi(dirs.size());
   m.build(pts, n, lo.data(), hi.data());
   return exact::first_uncontained_slab(dirs, pts, n, lo.data(), hi.data());
 }
 
 Verdicts check_overlap(const BoxMethod& m, const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-  const std::vector<Direction> dirs = slab_directions(m);
+  const std::vector<Direction>& dirs = directions(m);
   const std::size_t slabs = dirs.size();
   std::vector<double> la(slabs), ha(slabs), lb(slabs), hb(slabs);
   m.build(a.data(), a.size(), la.data(), ha.data());

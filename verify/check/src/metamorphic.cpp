@@ -108,12 +108,10 @@ std::vector<Transformed> transforms_of(const Query& q) {
   return out;
 }
 
-MetamorphicCount count_metamorphic(const Method& m, const Query& q,
+MetamorphicCount count_metamorphic(const Method& m, bool before,
                                    const std::vector<Transformed>& moved,
                                    std::optional<MetamorphicFailure>* first) {
   MetamorphicCount n;
-  if (!m.applies_to(q)) return n;
-  const bool before = verdict_of(m, q);
   for (const Transformed& t : moved) {
     if (!m.applies_to(t.query)) continue;
     ++n.checked;
@@ -127,7 +125,8 @@ MetamorphicCount count_metamorphic(const Method& m, const Query& q,
 
 MetamorphicCount count_metamorphic(const Method& m, const Query& q,
                                    std::optional<MetamorphicFailure>* first) {
-  return count_metamorphic(m, q, transforms_of(q), first);
+  if (!m.applies_to(q)) return {};
+  return count_metamorphic(m, verdict_of(m, q), transforms_of(q), first);
 }
 
 std::optional<MetamorphicFailure> metamorphic_failure(const Method& m, const Query& q) {

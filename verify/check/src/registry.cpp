@@ -1,5 +1,6 @@
 #include "fdh/check/registry.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "fdh/ccd/float_cubic.hpp"
@@ -183,6 +184,13 @@ void remove_added_methods() {
   added_boxes().clear();
 }
 
+bool registry_thread_safe() {
+  return std::none_of(added_methods().begin(), added_methods().end(),
+                      [](const Method& m) { return m.one_thread; }) &&
+         std::none_of(added_boxes().begin(), added_boxes().end(),
+                      [](const BoxMethod& b) { return b.one_thread; });
+}
+
 std::vector<Method> promised_methods(int gate_k) {
   std::vector<Method> out;
   for (Method& m : all_methods(gate_k))
@@ -243,6 +251,7 @@ BoxMethod fdh_box() {
   m.name = "fdh";
   m.summary = "fast/'s k-DOP: one outward push per diagonal slab (kdop.hpp)";
   m.k = K;
+  m.directions = kdop_directions(K);
   m.builds_tree = true;
   m.build = [](const Vec3* pts, std::size_t n, double* lo, double* hi) {
     const Kdop<K> box = kdop_of<K>(pts, n);
@@ -260,10 +269,9 @@ BoxMethod fdh_box() {
 
 }  // namespace
 
-std::vector<Direction> slab_directions(const BoxMethod& m) {
-  if (!m.directions.empty()) return m.directions;
+std::vector<Direction> kdop_directions(int k) {
   std::vector<Direction> dirs;
-  for (int s = 0; s < m.k / 2; ++s) dirs.push_back(slab_direction(m.k, s));
+  for (int s = 0; s < k / 2; ++s) dirs.push_back(slab_direction(k, s));
   return dirs;
 }
 

@@ -7,6 +7,7 @@
 #include "plugin_option.hpp"
 #include "progress.hpp"
 #include "suite_commands.hpp"
+#include "threads_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -54,9 +55,11 @@ void print_metamorphic(const Certificate& c, std::ostream& out) {
   out << "\n";
 }
 
-int run_certify(CertifyOptions opt, bool quiet, const Io& io) {
+int run_certify(const CertifyCommand& cmd, const Io& io) {
+  CertifyOptions opt = cmd.options;
   check_output_dir(opt.out_dir, {"certificate.json", "certificate.md"});
-  ProgressLine progress(io.err, progress_wanted(io, quiet));
+  const ThreadLimit threads(cmd.threads);
+  ProgressLine progress(io.err, progress_wanted(io, cmd.quiet));
   opt.progress = [&](const std::string& stage, long done, long total) {
     progress.update("certify: " + stage, done, total,
                     stage == "generator families" ? "queries" : "");
@@ -78,7 +81,8 @@ int run_certify(CertifyOptions opt, bool quiet, const Io& io) {
 
 }  // namespace
 
-void add_certify_options(CLI::App& cmd, CertifyOptions& opt, bool& quiet) {
+void add_certify_options(CLI::App& cmd, CertifyCommand& c) {
+  CertifyOptions& opt = c.options;
   const CLI::Range count(0L, 1L << 30);
   cmd.add_flag("--quick", opt.quick, "200 queries per family and 30 soup pairs: under a minute");
   cmd.add_option("--out", opt.out_dir, "where the output goes (default: " + opt.out_dir + ")")
@@ -98,19 +102,19 @@ void add_certify_options(CLI::App& cmd, CertifyOptions& opt, bool& quiet) {
                  "--quick)")
       ->type_name("N")
       ->check(count);
-  add_quiet_flag(cmd, quiet);
+  add_threads_option(cmd, c.threads, "the checks");
+  add_quiet_flag(cmd, c.quiet);
   cmd.add_option("EXTRA", opt.extra_files,
                  "more query files: native (*.vf) or CCD benchmark CSV (*.csv)");
 }
 
 Command add_certify(CLI::App& app) {
-  auto opt = std::make_shared<CertifyOptions>();
-  opt->out_dir = "certificate";
+  auto c = std::make_shared<CertifyCommand>();
+  c->options.out_dir = "certificate";
   CLI::App* cmd = add_command(app, "certify", kCertifyAbout, kCertifyFooter);
-  auto quiet = std::make_shared<bool>(false);
-  add_certify_options(*cmd, *opt, *quiet);
+  add_certify_options(*cmd, *c);
   add_plugin_option(*cmd);
-  return {cmd, [opt, quiet](const Io& io) { return run_certify(*opt, *quiet, io); }};
+  return {cmd, [c](const Io& io) { return run_certify(*c, io); }};
 }
 
 }  // namespace fdh::verify

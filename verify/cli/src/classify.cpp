@@ -11,6 +11,7 @@
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
+#include "fdh/suite/classify_files.hpp"
 #include "fdh/suite/report.hpp"
 #include "plugin_option.hpp"
 
@@ -62,28 +63,6 @@ struct ClassifyOptions {
   double ratio_limit = 1.1;
   int rounds = 7;
 };
-
-// Every file's queries, read before anything is printed; files without queries are skipped.
-struct Inputs {
-  std::vector<std::string> files;
-  std::vector<std::vector<Query>> groups;
-  std::vector<Query> all;
-};
-
-Inputs read_inputs(const ClassifyOptions& o) {
-  std::optional<QueryKind> kind;
-  if (!o.kind.empty()) kind = o.kind == "ee" ? QueryKind::EdgeEdge : QueryKind::VertexFace;
-  Inputs in;
-  for (const std::string& f : o.files) {
-    std::vector<Query> qs = read_query_file(f, kind);
-    if (qs.empty()) continue;
-    in.all.insert(in.all.end(), qs.begin(), qs.end());
-    in.files.push_back(f);
-    in.groups.push_back(std::move(qs));
-  }
-  if (in.all.empty()) throw InputError(o.files.front(), 0, "no query to classify");
-  return in;
-}
 
 std::string where_and_id(const Query& q) {
   return where(q) + " (query " + q.id + ")";
@@ -160,22 +139,16 @@ nlohmann::ordered_json print_time_ratios(const ClassifyOptions& o, const std::ve
 int run_classify(const ClassifyOptions& o, const Io& io) {
   if (!o.per_query.empty()) check_output_path(o.per_query);
   const std::vector<Method> methods = methods_named(o.methods, o.gate);
-  const Inputs in = read_inputs(o);
-  std::vector<FileClassification> per_file;
-  std::vector<Classification> parts;
-  for (std::size_t i = 0; i < in.groups.size(); ++i) {
-    parts.push_back(classify(in.groups[i], methods));
-    per_file.push_back({in.files[i], parts.back()});
-  }
-  const Classification c = join(parts);
+  const ClassifiedFiles in = classify_files(o.files, methods, o.kind);
+  const Classification& c = in.total;
 
   const ReportContext ctx{o.gate};
   if (!o.per_query.empty()) write_file_atomically(o.per_query, per_query_csv(in.all, c));
   nlohmann::ordered_json j;
   if (o.json)
-    j = classification_json(per_file, c, ctx);
+    j = classification_json(in.files, c, ctx);
   else
-    print_table(io.out, per_file, c, ctx);
+    print_table(io.out, in.files, c, ctx);
   if (!o.time_ratio.empty()) j["time_ratio"] = print_time_ratios(o, in.all, methods, io.out);
   if (o.json) print_json(io.out, j);
   const std::size_t disagreements = report_disagreements(in.all, methods, c, io.err);

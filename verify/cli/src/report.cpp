@@ -10,6 +10,7 @@
 #include "plugin_option.hpp"
 #include "progress.hpp"
 #include "suite_commands.hpp"
+#include "threads_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -38,9 +39,11 @@ finds a violation (the report is written all the same). --quick takes smaller
 samples (a quick certificate, 100 queries per family and point): for a first
 look, not for the committed report.)";
 
-int run_report(CertifyOptions opt, bool quiet, const Io& io) {
+int run_report(const CertifyCommand& cmd, const Io& io) {
+  CertifyOptions opt = cmd.options;
   check_output_dir(opt.out_dir, report_outputs());
-  ProgressLine progress(io.err, progress_wanted(io, quiet));
+  const ThreadLimit threads(cmd.threads);
+  ProgressLine progress(io.err, progress_wanted(io, cmd.quiet));
   opt.progress = [&](const std::string& stage, long done, long total) {
     progress.update("report: certify: " + stage, done, total, "");
   };
@@ -65,13 +68,12 @@ int run_report(CertifyOptions opt, bool quiet, const Io& io) {
 }  // namespace
 
 Command add_report(CLI::App& app) {
-  auto opt = std::make_shared<CertifyOptions>();
-  opt->out_dir = "report";
+  auto c = std::make_shared<CertifyCommand>();
+  c->options.out_dir = "report";
   CLI::App* cmd = add_command(app, "report", kReportAbout, kReportFooter);
-  auto quiet = std::make_shared<bool>(false);
-  add_certify_options(*cmd, *opt, *quiet);
+  add_certify_options(*cmd, *c);
   add_plugin_option(*cmd);  // its methods join the certificate, the charts and the tables
-  return {cmd, [opt, quiet](const Io& io) { return run_report(*opt, *quiet, io); }};
+  return {cmd, [c](const Io& io) { return run_report(*c, io); }};
 }
 
 }  // namespace fdh::verify

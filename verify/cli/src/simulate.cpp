@@ -2,8 +2,6 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <tbb/global_control.h>
-
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -17,6 +15,7 @@
 #include "fdh/suite/scene_report.hpp"
 #include "fdh/suite/scene_run.hpp"
 #include "progress.hpp"
+#include "threads_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -181,10 +180,7 @@ void check_outputs(const SimulateOptions& o) {
 
 int run_simulate(SimulateOptions& o, const Io& io) {
   check_outputs(o);
-  // The step's loops use at most this many threads; the results are the same for any number.
-  std::optional<tbb::global_control> threads;
-  if (o.threads > 0)
-    threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
+  const ThreadLimit threads(o.threads);
   o.run.check = !o.no_check;
   const cloth::Scene scene = read_scene_as_asked(o);
   const int frames = o.run.frames < 0 ? scene.frames : o.run.frames;
@@ -266,10 +262,7 @@ void add_output_options(CLI::App& cmd, SimulateOptions& o) {
                  "write every narrow-phase query of the run to FILE in the\n"
                  "native vf format, for `fdhcert classify FILE`")
       ->type_name("FILE");
-  add_number_option(cmd, "--threads", o.threads,
-                    "threads for the step (default: every core); the results\n"
-                    "are the same for any number",
-                    "N", 1, 1024);
+  add_threads_option(cmd, o.threads, "the step");
   cmd.add_flag("--json", o.json, "print one JSON object instead of the text");
   cmd.add_flag("--no-check", o.no_check, "skip the accuracy count and the audit");
   add_quiet_flag(cmd, o.quiet);

@@ -13,8 +13,16 @@ Command add_table1(CLI::App& app);
 Command add_scenes(CLI::App& app);
 Command add_peers(CLI::App& app);
 
+// What certify and report take beside CertifyOptions: --quiet and --threads.
+struct CertifyCommand {
+  CertifyOptions options;
+  bool quiet = false;
+  int threads = 0;  // 0: every core
+};
+
 // The options certify and report share: --quick --out --corpus --seed --per-family --soups
-// --peer-cases --quiet and the extra query files. --out's default is opt.out_dir as given.
-void add_certify_options(CLI::App& cmd, CertifyOptions& opt, bool& quiet);
+// --peer-cases --quiet --threads and the extra query files. --out's default is
+// c.options.out_dir as given.
+void add_certify_options(CLI::App& cmd, CertifyCommand& c);
 
 }  // namespace fdh::verify

@@ -1,33 +1,16 @@
 #include "fdh/gen/shrink_point_sets.hpp"
 
 #include <cmath>
-#include <cstdint>
 #include <cstdlib>
-#include <cstring>
+
+#include "fdh/gen/short_doubles.hpp"
 
 namespace fdh::verify {
 namespace {
 
-int significant_bits(double v) {
-  if (v == 0 || !std::isfinite(v)) return 0;
-  int e = 0;
-  const double m = std::ldexp(std::frexp(std::fabs(v), &e), 53);  // an integer < 2^53
-  auto bits = static_cast<std::uint64_t>(m);
-  int trailing = 0;
-  while (bits && !(bits & 1)) bits >>= 1, ++trailing;
-  return 53 - trailing;
-}
-
 long coordinate_size(double v) {
   if (v == 0 || !std::isfinite(v)) return 0;
   return significant_bits(v) + std::abs(std::ilogb(v)) + 1;
-}
-
-// v rounded to `bits` significant bits (to nearest; exact scalings by powers of two).
-double round_bits(double v, int bits) {
-  if (v == 0 || !std::isfinite(v)) return v;
-  const int shift = bits - 1 - std::ilogb(v);
-  return std::ldexp(std::nearbyint(std::ldexp(v, shift)), -shift);
 }
 
 template <class F>
@@ -50,7 +33,7 @@ std::vector<PointSets> candidates(const PointSets& sets) {
   const Vec3 first = sets.front().front();
   for (int bits : {1, 2, 4, 8, 16, 32, 53})  // a common translation toward the origin
     for (int axis = 0; axis < 3; ++axis) {
-      const double t = round_bits(first[axis], bits);
+      const double t = with_bits(first[axis], bits, Rounding::Nearest);
       out.push_back(mapped(sets, [&](Vec3 p) {
         double xyz[3] = {p.x, p.y, p.z};
         xyz[axis] -= t;
@@ -66,7 +49,7 @@ std::vector<PointSets> candidates(const PointSets& sets) {
           PointSets c = sets;
           Vec3& p = c[s][i];
           double xyz[3] = {p.x, p.y, p.z};
-          xyz[axis] = bits ? round_bits(xyz[axis], bits) : 0.0;
+          xyz[axis] = bits ? with_bits(xyz[axis], bits, Rounding::Nearest) : 0.0;
           p = {xyz[0], xyz[1], xyz[2]};
           out.push_back(std::move(c));
         }

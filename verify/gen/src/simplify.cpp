@@ -2,6 +2,7 @@
 #include "fdh/gen/simplify.hpp"
 
 #include "fdh/dyadic.hpp"
+#include "fdh/gen/short_doubles.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,32 +15,6 @@ namespace {
 
 double& coord(Vec3& v, int axis) {
   return axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
-}
-
-int bit_length(std::uint64_t m) {
-  int n = 0;
-  for (; m; m >>= 1) ++n;
-  return n;
-}
-
-// v = ±m 2^e with m odd (v finite, not 0).
-void odd_mantissa(double v, std::uint64_t& m, int& e) {
-  int exp = 0;
-  const double f = std::frexp(std::fabs(v), &exp);
-  m = std::uint64_t(std::ldexp(f, 53));
-  e = exp - 53;
-  for (; (m & 1) == 0; m >>= 1) ++e;
-}
-
-// v with its odd mantissa cut to its top `bits` bits, toward zero; v itself if it is that short.
-double cut_to_bits(double v, int bits) {
-  if (v == 0 || !std::isfinite(v)) return v;
-  std::uint64_t m = 0;
-  int e = 0;
-  odd_mantissa(v, m, e);
-  const int drop = bit_length(m) - bits;
-  if (drop <= 0) return v;
-  return std::copysign(std::ldexp(double(m >> drop), e + drop), v);
 }
 
 // The query with `shift` added to the points in [from, to), when every sum is exact.
@@ -116,7 +91,8 @@ void shorten(const Query& q, std::vector<Query>& out) {
       const bool both = q.x[twin][a] == v;
       if (both && twin < i) continue;  // done with the vertex's start
       std::vector<double> shorter = {0, std::trunc(v)};
-      for (int bits = 1; bits <= 32; bits *= 2) shorter.push_back(cut_to_bits(v, bits));
+      for (int bits = 1; bits <= 32; bits *= 2)
+        shorter.push_back(with_bits(v, bits, Rounding::TowardZero));
       for (const double s : shorter) {
         if (s == v) continue;
         Query c = q;
@@ -146,10 +122,8 @@ Query without_negative_zeros(Query q) {
 
 int binary_length(double v) {
   if (v == 0 || !std::isfinite(v)) return 0;
-  std::uint64_t m = 0;
-  int e = 0;
-  odd_mantissa(v, m, e);
-  return e >= 0 ? bit_length(m) + e : std::max(bit_length(m), -e);
+  const OddMantissa m = odd_mantissa(v);
+  return m.exponent >= 0 ? m.bits() + m.exponent : std::max(m.bits(), -m.exponent);
 }
 
 bool Simplicity::operator<(const Simplicity& o) const {

@@ -6,27 +6,18 @@
 #include <filesystem>
 #include <sstream>
 
+#include "fdh/io/case_hash.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
 
 namespace fdh::verify {
 
 std::string case_hash(const Query& q) {
-  std::uint64_t h = 1469598103934665603ull;
-  const auto mix = [&h](std::uint64_t v) {
-    for (int b = 0; b < 8; ++b) h = (h ^ ((v >> (8 * b)) & 0xff)) * 1099511628211ull;
-  };
-  mix(q.kind == QueryKind::VertexFace ? 1 : 2);
+  CaseHash h;
+  h.add(q.kind == QueryKind::VertexFace ? 1 : 2);
   for (const Vec3& p : q.x)
-    for (int c = 0; c < 3; ++c) {
-      std::uint64_t bits;
-      const double v = p[c] == 0 ? 0.0 : p[c];  // -0 and +0 are the same case
-      std::memcpy(&bits, &v, sizeof bits);
-      mix(bits);
-    }
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
+    for (int c = 0; c < 3; ++c) h.add_coordinate(p[c]);
+  return h.hex();
 }
 
 std::string case_file_text(const Query& q, const std::vector<std::string>& comments) {

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "fdh/io/case_files.hpp"
+#include "fdh/io/case_hash.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
 
@@ -42,25 +43,15 @@ void read_point(const InputFile& in, const std::vector<std::string>& w, PeerCase
 }  // namespace
 
 std::string peer_case_hash(const PeerCase& c) {
-  std::uint64_t h = 1469598103934665603ull;
-  const auto mix = [&h](std::uint64_t v) {
-    for (int b = 0; b < 8; ++b) h = (h ^ ((v >> (8 * b)) & 0xff)) * 1099511628211ull;
-  };
+  CaseHash h;
   for (const std::string* s : {&c.library, &c.method, &c.property})
-    for (const char ch : *s) mix(std::uint64_t(static_cast<unsigned char>(ch)));
+    for (const char ch : *s) h.add(std::uint64_t(static_cast<unsigned char>(ch)));
   for (const auto* set : {&c.a, &c.b}) {
-    mix(set->size());
+    h.add(set->size());
     for (const Vec3& p : *set)
-      for (int i = 0; i < 3; ++i) {
-        const double v = p[i] == 0 ? 0.0 : p[i];  // -0 and +0 are the same case
-        std::uint64_t bits;
-        std::memcpy(&bits, &v, sizeof bits);
-        mix(bits);
-      }
+      for (int i = 0; i < 3; ++i) h.add_coordinate(p[i]);
   }
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
+  return h.hex();
 }
 
 std::string peer_case_file_name(const PeerCase& c) {

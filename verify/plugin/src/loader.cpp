@@ -94,6 +94,7 @@ QueryTest query_test(const LoadedPtr& p, fdh_query_fn f, const char* function) {
 Method query_method(const LoadedPtr& p) {
   Method m;
   m.name = p->name;
+  m.one_thread = true;  // docs/plugins.md: called from one thread
   m.summary = std::string(p->api.summary ? p->api.summary : "") + " (plug-in " + p->path + ")";
   m.promise = Promise(p->api.promise == FDH_PROMISE_EXACT          ? Promise::Exact
                       : p->api.promise == FDH_PROMISE_CONSERVATIVE ? Promise::Conservative
@@ -126,8 +127,10 @@ std::string shortest(double v) {
 BoxMethod box_method(const LoadedPtr& p, int k) {
   BoxMethod b;
   b.name = p->name;
+  b.one_thread = true;
   b.summary = std::string(p->api.summary ? p->api.summary : "") + " (plug-in " + p->path + ")";
   b.k = k;
+  b.directions = kdop_directions(k);  // the ABI's order (docs/plugins.md)
   b.promise = Promise::Conservative;
   b.build = [p, k](const Vec3* pts, std::size_t n, double* lo, double* hi) {
     std::vector<double> xyz;  // the ABI's plain rows of three doubles

@@ -2,25 +2,11 @@
 #include "fuzz_target.hpp"
 
 #include "fdh/check/checker.hpp"
+#include "fdh/check/contact.hpp"
 #include "fdh/check/metamorphic.hpp"
-#include "fdh/exact/ccd.hpp"
-#include "fdh/exact/point_triangle.hpp"
 #include "fdh/io/case_files.hpp"
 
 namespace fdh::verify {
-
-std::string exact_contact_words(const Query& q) {
-  if (decision_of(q) == Decision::PointTriangle) {
-    const exact::PointTriangleContact e =
-        exact::point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f());
-    if (!e.hit) return "no";
-    return std::string("hit (") + exact::to_string(e.kind) + " at t = " + e.time + ")";
-  }
-  const exact::CcdContact c = exact::ccd(q);
-  if (!c.hit) return "no";
-  if (c.time_exact()) return "hit (at t = " + c.time_lo + ")";
-  return "hit (at t in [" + c.time_lo + ", " + c.time_hi + "])";
-}
 
 bool FuzzTarget::fails(const Query& q) const {
   if (metamorphic) return metamorphic_failure(method, q).has_value();
@@ -31,18 +17,19 @@ std::string FuzzTarget::case_folder(const std::string& family) const {
   return (metamorphic ? "metamorphic/" : "") + method.name + "/" + family;
 }
 
+// The exact contact, computed once, gives the twin's verdict (the case's truth) and its words.
 std::string FuzzTarget::case_text(Query q, const std::string& family) const {
   q.id = case_folder(family);
+  const TwinContact contact = twin_contact(q);
+  q.truth = contact.hit;
   if (metamorphic) {
     const MetamorphicFailure f = *metamorphic_failure(method, q);
-    q.truth = twin_hit(q);
-    return case_file_text(q, {describe(method, f) + "; exact says " + exact_contact_words(q) + ".",
+    return case_file_text(q, {describe(method, f) + "; exact says " + contact_words(contact) + ".",
                               "Shrunk by fdhcert fuzz --metamorphic from family " + family + "."});
   }
-  const Verdicts v = check(method, q);
-  q.truth = v.twin;
+  const Verdicts v = check(method, q, contact.hit);
   return case_file_text(q, {method.name + " says " + (v.said ? "hit" : "no") + ", exact says " +
-                                exact_contact_words(q) + ".",
+                                contact_words(contact) + ".",
                             "Shrunk by fdhcert fuzz from family " + family + "."});
 }
 

@@ -29,8 +29,4 @@ struct FuzzTarget {
   std::string case_text(Query q, const std::string& family) const;
 };
 
-// "hit (edge at t = 15/22)", "hit (at t = 1/2)", "hit (at t in [a, b])" or "no": the exact
-// contact of the query's own decision.
-std::string exact_contact_words(const Query& q);
-
 }  // namespace fdh::verify

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "fdh/check/checker.hpp"
+#include "fdh/check/parallel.hpp"
 #include "fdh/gen/point_sets.hpp"
 #include "fdh/gen/shrink_point_sets.hpp"
 #include "fdh/io/atomic_file.hpp"
@@ -20,12 +21,17 @@ bool is_overlap(const PeerCase& c) {
   return c.property == "overlap";
 }
 
-// Whether m fails c's property, through the checker: held to the conservative promise whatever
-// m itself promises.
-bool fails(const BoxMethod& m, const PeerCase& c) {
-  if (!is_overlap(c)) return check_box(m, c.a.data(), c.a.size()) >= 0;
+// What one method did on one case, through the checker, held to the conservative promise
+// whatever the method itself promises: whether it fails the property, and (overlap) whether
+// the exact FDHs overlap.
+struct Outcome {
+  bool fails = false, exact_overlap = false;
+};
+
+Outcome outcome(const BoxMethod& m, const PeerCase& c) {
+  if (!is_overlap(c)) return {check_box(m, c.a.data(), c.a.size()) >= 0, false};
   const Verdicts v = check_overlap(m, c.a, c.b);
-  return !keeps_promise(Promise::Conservative, v.said, v.twin);
+  return {!keeps_promise(Promise::Conservative, v.said, v.twin), v.twin};
 }
 
 // A row and the method it certifies.
@@ -56,28 +62,26 @@ std::vector<Entry> entries() {
   return out;
 }
 
+// A generated case and where it came from, for the saved file.
+struct Drawn {
+  PeerCase c;
+  std::string origin;
+};
+
 class PeerRun {
  public:
   explicit PeerRun(PeersReport& r) : r_(r) {}
 
-  void check(PeerCase c, const std::string& origin) {
-    for (Entry& e : entries_) {
-      PeerProperty& p = is_overlap(c) ? e.row.overlap : e.row.containment;
-      ++p.checked;
-      if (is_overlap(c)) {
-        const Verdicts v = check_overlap(e.method, c.a, c.b);
-        p.exact_overlaps += v.twin;
-        if (keeps_promise(Promise::Conservative, v.said, v.twin)) continue;
-      } else if (check_box(e.method, c.a.data(), c.a.size()) < 0) {
-        continue;
-      }
-      ++p.violations;
-      c.library = e.row.library, c.method = e.row.method;
-      std::string saved;
-      if (int(p.shrunk.size()) < r_.options.keep) saved = save(e, p, shrunk(e.method, c), origin);
-      if (e.row.promise != Promise::None)
-        own_violation(e, "on a " + origin + (saved.empty() ? "" : ", saved to " + saved));
-    }
+  // Every method on every case: the outcomes on every core (check/parallel.hpp), then counted,
+  // shrunk and saved on this thread in the cases' order.
+  void check(std::vector<Drawn> cases) {
+    std::vector<std::vector<Outcome>> outcomes(cases.size());
+    for_each_index(cases.size(), 8, [&](std::size_t i) {
+      for (const Entry& e : entries_) outcomes[i].push_back(outcome(e.method, cases[i].c));
+    });
+    for (std::size_t i = 0; i < cases.size(); ++i)
+      for (std::size_t e = 0; e < entries_.size(); ++e)
+        count(entries_[e], cases[i], outcomes[i][e]);
   }
 
   void replay(const PeerCase& c, const std::string& file) {
@@ -86,7 +90,7 @@ class PeerRun {
       if (!own && (e.row.library != c.library || e.row.method != c.method)) continue;
       PeerProperty& p = is_overlap(c) ? e.row.overlap : e.row.containment;
       ++p.stored;
-      if (!fails(e.method, c)) continue;
+      if (!outcome(e.method, c).fails) continue;
       ++p.stored_failing;
       if (own) own_violation(e, "on the stored case " + file);
     }
@@ -97,13 +101,27 @@ class PeerRun {
   }
 
  private:
+  void count(Entry& e, Drawn& d, Outcome o) {
+    PeerCase& c = d.c;
+    PeerProperty& p = is_overlap(c) ? e.row.overlap : e.row.containment;
+    ++p.checked;
+    p.exact_overlaps += o.exact_overlap;
+    if (!o.fails) return;
+    ++p.violations;
+    c.library = e.row.library, c.method = e.row.method;
+    std::string saved;
+    if (int(p.shrunk.size()) < r_.options.keep) saved = save(e, p, shrunk(e.method, c), d.origin);
+    if (e.row.promise != Promise::None)
+      own_violation(e, "on a " + d.origin + (saved.empty() ? "" : ", saved to " + saved));
+  }
+
   PeerCase shrunk(const BoxMethod& m, PeerCase c) const {
     PointSets sets = {c.a};
     if (is_overlap(c)) sets.push_back(c.b);
     const auto still_fails = [&](const PointSets& s) {
       PeerCase t = c;
       t.a = s[0], t.b = s.size() > 1 ? s[1] : std::vector<Vec3>{};
-      return fails(m, t);
+      return outcome(m, t).fails;
     };
     sets = shrink_point_sets(sets, still_fails, r_.options.quick ? 600 : 3000);
     c.a = sets[0], c.b = sets.size() > 1 ? sets[1] : std::vector<Vec3>{};
@@ -163,14 +181,19 @@ PeersReport certify_peers(const PeerOptions& options) {
   if (r.options.keep < 0) r.options.keep = options.quick ? 1 : 3;
   PeerRun run(r);
   const std::uint64_t stream = r.options.seed * 1000 + 500;
-  for (long i = 0; i < r.options.cases; ++i) {
-    const std::string seed =
-        "seed " + std::to_string(r.options.seed) + ", case " + std::to_string(i);
-    run.check({"", "", "containment", random_point_set(case_seed(stream, i)), {}},
-              "random point set (" + seed + ")");
-    TouchingSets t = touching_point_sets(case_seed(stream + 1, i));
-    run.check({"", "", "overlap", std::move(t.a), std::move(t.b)},
-              "pair of sets touching at a " + t.contact + " (" + seed + ")");
+  const long batch = 1000;  // cases drawn, then checked, at a time
+  for (long first = 0; first < r.options.cases; first += batch) {
+    std::vector<Drawn> cases;
+    for (long i = first; i < std::min(first + batch, r.options.cases); ++i) {
+      const std::string seed =
+          "seed " + std::to_string(r.options.seed) + ", case " + std::to_string(i);
+      cases.push_back({{"", "", "containment", random_point_set(case_seed(stream, i)), {}},
+                       "random point set (" + seed + ")"});
+      TouchingSets t = touching_point_sets(case_seed(stream + 1, i));
+      cases.push_back({{"", "", "overlap", std::move(t.a), std::move(t.b)},
+                       "pair of sets touching at a " + t.contact + " (" + seed + ")"});
+    }
+    run.check(std::move(cases));
   }
   if (!r.options.replay_dir.empty())
     for (const std::string& f : list_peer_case_files(r.options.replay_dir))

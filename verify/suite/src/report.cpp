@@ -7,9 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include "fdh/check/contact.hpp"
 #include "fdh/check/registry.hpp"
-#include "fdh/exact/ccd.hpp"
-#include "fdh/exact/point_triangle.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -73,16 +72,12 @@ std::string csv_field(const std::string& s) {
   return out + "\"";
 }
 
-// The contact and time columns: the exact test of the query's own decision.
-std::pair<std::string, std::string> exact_contact(const Query& q) {
-  if (decision_of(q) == Decision::PointTriangle) {
-    const exact::PointTriangleContact e =
-        exact::point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f());
-    return {exact::to_string(e.kind), e.time};
-  }
-  const exact::CcdContact e = exact::ccd(q);
-  if (!e.hit) return {"none", ""};
-  return {"moving", e.time_exact() ? e.time_lo : e.time_lo + ".." + e.time_hi};
+// The contact and time columns: the exact contact of the query's own decision.
+std::pair<std::string, std::string> contact_columns(const Query& q) {
+  const TwinContact c = twin_contact(q);
+  if (!c.kind.empty()) return {c.kind, c.time_lo};  // static: its kind, and "" without a hit
+  if (!c.hit) return {"none", ""};
+  return {"moving", c.time_exact() ? c.time_lo : c.time_lo + ".." + c.time_hi};
 }
 
 std::string verdict_field(char v) {
@@ -123,7 +118,7 @@ std::string per_query_csv(const std::vector<Query>& queries, const Classificatio
     const Query& q = queries[i];
     os << csv_field(prefix ? q.file + ":" + q.id : q.id) << ',' << int(c.reference[i]);
     for (const MethodResult& m : c.methods) os << ',' << verdict_field(m.verdict[i]);
-    const auto [contact, time] = exact_contact(q);
+    const auto [contact, time] = contact_columns(q);
     os << ',' << contact << ',' << time << '\n';
   }
   return os.str();

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fdh/check/checker.hpp"
+#include "fdh/check/parallel.hpp"
 #include "fdh/check/registry.hpp"
 #include "fdh/suite/measurements.hpp"
 
@@ -185,32 +186,48 @@ const std::vector<SweepDef>& sweep_defs() {
   return defs;
 }
 
+// What one value p of a sweep counts per method: the queries it applies to and gets wrong.
+struct PointCounts {
+  std::vector<long> wrong, applied;
+};
+
+// per_point queries at p, from their own stream: the same counts on any thread.
+PointCounts point_counts(const SweepDef& def, const std::vector<Method>& methods, int p,
+                         long per_point, std::uint64_t seed) {
+  Sampler s(seed * 7919 + std::uint64_t(p) * 131 + std::uint64_t(def.sweep.name[0]));
+  PointCounts n{std::vector<long>(methods.size()), std::vector<long>(methods.size())};
+  for (long i = 0; i < per_point; ++i) {
+    const Query q = def.make(p, s);
+    const bool twin = twin_hit(q);
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      if (!methods[m].applies_to(q)) continue;
+      const Verdicts v = check(methods[m], q, twin);
+      n.wrong[m] += v.said != v.twin;
+      ++n.applied[m];
+    }
+  }
+  return n;
+}
+
 // failure[m][p]: the share of the queries of each p that methods[m] applies to and gets
-// wrong; empty for a method that applies to none of the sweep's queries.
+// wrong; empty for a method that applies to none of the sweep's queries. The values of p run
+// on every core (check/parallel.hpp).
 std::vector<std::vector<double>> sweep_rates(const SweepDef& def,
                                              const std::vector<Method>& methods, long per_point,
                                              std::uint64_t seed) {
   const StabilitySweep& sw = def.sweep;
+  const auto points = parts_in_order(std::size_t(sw.last) + 1, 1, PointCounts{},
+                                     [&](std::size_t p, std::size_t, PointCounts& n) {
+                                       n = point_counts(def, methods, int(p), per_point, seed);
+                                     });
   std::vector<std::vector<double>> failure(methods.size(), std::vector<double>(sw.last + 1));
   std::vector<long> applied_in_sweep(methods.size());
-  for (int p = 0; p <= sw.last; ++p) {
-    Sampler s(seed * 7919 + std::uint64_t(p) * 131 + std::uint64_t(sw.name[0]));
-    std::vector<long> wrong(methods.size()), applied(methods.size());
-    for (long i = 0; i < per_point; ++i) {
-      const Query q = def.make(p, s);
-      const bool twin = twin_hit(q);
-      for (std::size_t m = 0; m < methods.size(); ++m) {
-        if (!methods[m].applies_to(q)) continue;
-        const Verdicts v = check(methods[m], q, twin);
-        wrong[m] += v.said != v.twin;
-        ++applied[m];
-      }
-    }
+  for (std::size_t p = 0; p < points.size(); ++p)
     for (std::size_t m = 0; m < methods.size(); ++m) {
-      failure[m][p] = applied[m] ? double(wrong[m]) / double(applied[m]) : 0;
-      applied_in_sweep[m] += applied[m];
+      const long applied = points[p].applied[m];
+      failure[m][p] = applied ? double(points[p].wrong[m]) / double(applied) : 0;
+      applied_in_sweep[m] += applied;
     }
-  }
   for (std::size_t m = 0; m < methods.size(); ++m)
     if (applied_in_sweep[m] == 0) failure[m].clear();
   return failure;

@@ -51,12 +51,13 @@ struct CheckTally {
 CheckTally check_all(const Method& m, const std::vector<Query>& queries,
                      const std::vector<char>& twin);
 
-// A k-DOP method's box of `n` points: the first slab (in the order of slab_directions(m)) where
-// it fails to contain the exact FDH along them, or -1. Conservative methods must return -1.
+// A k-DOP method's box of `n` points: the first slab (in the order of m.directions) where it
+// fails to contain the exact FDH along them, or -1. Conservative methods must return -1. Throws
+// std::invalid_argument for a method without k / 2 directions.
 int check_box(const BoxMethod& m, const Vec3* pts, std::size_t n);
 
 // A k-DOP method's overlap test on the boxes it builds of two point sets, against the exact
-// FDHs along slab_directions(m). Conservative methods must not say "no" where the exact FDHs
+// FDHs along m.directions. Conservative methods must not say "no" where the exact FDHs
 // overlap.
 Verdicts check_overlap(const BoxMethod& m, const std::vector<Vec3>& a, const std::vector<Vec3>& b);
 

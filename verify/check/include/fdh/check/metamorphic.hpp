@@ -50,11 +50,13 @@ struct Transformed {
 std::vector<Transformed> transforms_of(const Query& q);
 
 // m on q under every transform that applies: how many were checked and how many changed its
-// verdict; `first` (if given) gets the first change. `moved` is transforms_of(q).
+// verdict; `first` (if given) gets the first change.
 struct MetamorphicCount {
   long checked = 0, violations = 0;
 };
-MetamorphicCount count_metamorphic(const Method& m, const Query& q,
+// The same with m's verdict on q known already (`before`; m applies to q) and `moved` =
+// transforms_of(q): made once for several methods.
+MetamorphicCount count_metamorphic(const Method& m, bool before,
                                    const std::vector<Transformed>& moved,
                                    std::optional<MetamorphicFailure>* first = nullptr);
 MetamorphicCount count_metamorphic(const Method& m, const Query& q,

@@ -59,6 +59,9 @@ struct Method {
   PointTriangleTest point_triangle = nullptr;
   // True for the entry that is the exact twin itself (listed so that tables show it).
   bool is_twin = false;
+  // Its functions are called from the calling thread only, one call at a time: a plug-in's
+  // (docs/plugins.md promises no more). The built-in methods are safe from any thread.
+  bool one_thread = false;
 
   bool applies_to(const Query& q) const { return bool(test[std::size_t(decision_of(q))]); }
   bool hit(const Query& q) const { return test[std::size_t(decision_of(q))](q); }
@@ -70,8 +73,9 @@ bool twin_hit(const Query& q);
 bool twin_hit(const Query& q, Decision d);
 
 // A k-DOP method of a fixed k: builds a box (lo, hi per slab) and decides overlap of two boxes.
-// Slab s has the integer direction directions[s] (k = 2 × directions.size()): the library's own
-// order for a peer (verify/peers/); left empty, fdh::Kdop<k>'s (slab_directions below).
+// Slab s has the integer direction directions[s] (k = 2 × directions.size()), in the method's
+// own order: fdh::Kdop<k>'s for the project's boxes and a plug-in's (kdop_directions below), the
+// library's own for a peer (verify/peers/). The checker takes them as given.
 struct BoxMethod {
   std::string name, summary;
   int k = 0;
@@ -83,10 +87,11 @@ struct BoxMethod {
   std::function<bool(const double* lo_a, const double* hi_a, const double* lo_b,
                      const double* hi_b)>
       overlap;
+  bool one_thread = false;  // as Method::one_thread
 };
 
-// The slab directions of m's boxes: m.directions, or fdh::Kdop<m.k>'s in its order when empty.
-std::vector<Direction> slab_directions(const BoxMethod& m);
+// fdh::Kdop<k>'s slab directions, in its order (fast/kdop.hpp): k / 2 of them.
+std::vector<Direction> kdop_directions(int k);
 
 // Every query method: the twin first, then robust, float-cubic, paper-literal,
 // paper-intended, linear-system; then the added ones (add_methods). With gate_k > 0 the methods
@@ -120,5 +125,11 @@ inline constexpr std::array<int, 4> kCertifiedK = {6, 14, 18, 26};
 void add_methods(std::vector<Method> methods, std::vector<BoxMethod> boxes);
 // Forgets every added method (the end of one command run, in-process).
 void remove_added_methods();
+
+// Whether every registered method may be called from several threads at once (no plug-in's
+// one_thread method is registered): the suite's loops then run on every core (parallel.hpp).
+// add_methods and remove_added_methods must not run while anything else uses the registry;
+// every other function here may be called from several threads at once.
+bool registry_thread_safe();
 
 }  // namespace fdh::verify

@@ -13,17 +13,20 @@ namespace fdh::verify {
 
 class MetamorphicCertifier {
  public:
-  // One row per method (by default every method of the registry), appended to `rows` (the
-  // certificate's).
-  explicit MetamorphicCertifier(std::vector<MetamorphicCheck>& rows,
-                                std::vector<Method> methods = all_methods());
+  // One row per method: by default every method of the registry.
+  explicit MetamorphicCertifier(std::vector<Method> methods = all_methods());
 
-  // Counts every method on q; the words of the first verdict change of a method held to
-  // invariance (MetamorphicCheck::held), if there is one.
-  std::optional<std::string> check(const Query& q);
+  // The rows, in the methods' order, with nothing counted yet.
+  std::vector<MetamorphicCheck> rows() const;
+
+  // Counts every method on q into `rows` (rows()'s order); `twin` is the twin's verdict on q,
+  // known already. Returns the words of the first verdict change of a method held to invariance
+  // (MetamorphicCheck::held), if there is one. Safe to call from several threads at once (each
+  // with its own rows) when the methods are (registry.hpp).
+  std::optional<std::string> check(const Query& q, bool twin,
+                                   std::vector<MetamorphicCheck>& rows) const;
 
  private:
-  std::vector<MetamorphicCheck>& rows_;
   std::vector<Method> methods_;
 };
 

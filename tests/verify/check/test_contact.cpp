@@ -1,0 +1,42 @@
+// The exact contact of a query's own decision (fdh/check/contact.hpp): the twin's verdict, and
+// the kind and time that the per-query CSV and fuzz's case files show.
+#include "fdh/check/contact.hpp"
+
+#include <gtest/gtest.h>
+
+#include "fdh/check/registry.hpp"
+#include "fdh/io/query_io.hpp"
+#include "test_data.hpp"
+
+namespace fdh::verify {
+namespace {
+
+TEST(Contact, StaticQueriesHaveAKindAndARationalTime) {
+  for (const Query& q : read_native(kData + "static.vf")) {
+    const TwinContact c = twin_contact(q);
+    EXPECT_EQ(c.hit, twin_hit(q)) << q.id;
+    EXPECT_FALSE(c.kind.empty()) << q.id;
+    EXPECT_EQ(c.time_lo, c.time_hi) << q.id;
+  }
+  const TwinContact face = twin_contact(read_native(kData + "static.vf").front());
+  EXPECT_EQ(contact_words(face), "hit (face at t = 1/2)");
+  EXPECT_EQ(contact_words(twin_contact(read_native(kData + "static.vf")[1])), "no");
+}
+
+TEST(Contact, MovingQueriesHaveATimeOrABracket) {
+  std::vector<std::string> words;
+  for (const Query& q : read_native(kData + "moving_times.vf")) {
+    const TwinContact c = twin_contact(q);
+    EXPECT_EQ(c.hit, twin_hit(q)) << q.id;
+    EXPECT_TRUE(c.kind.empty()) << q.id;
+    words.push_back(contact_words(c));
+  }
+  ASSERT_GE(words.size(), 4u);
+  EXPECT_EQ(words[0], "hit (at t = 1/4)");
+  EXPECT_EQ(words[1], "hit (at t = 0)");
+  EXPECT_EQ(words[2], "no");
+  EXPECT_EQ(words[3].rfind("hit (at t in [", 0), 0u) << words[3];
+}
+
+}  // namespace
+}  // namespace fdh::verify
