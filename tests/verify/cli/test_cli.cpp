@@ -290,10 +290,9 @@ TEST(Cli, FuzzJsonSummary) {
                             "--count", "100", "--threads", "1", "--shard", "1/2", "--json"});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::ordered_json::parse(r.out);
-  EXPECT_EQ(keys(j),
-            (std::vector<std::string>{"method", "metamorphic", "family", "seed", "shard", "first",
-                                      "last", "cases", "resumed", "disagreements", "distinct",
-                                      "files"}));
+  EXPECT_EQ(keys(j), (std::vector<std::string>{"method", "metamorphic", "family", "seed", "shard",
+                                               "first", "last", "cases", "resumed", "disagreements",
+                                               "distinct", "files"}));
   EXPECT_EQ(j["method"], "paper-literal");
   EXPECT_EQ(j["shard"], "1/2");
   EXPECT_EQ(j["first"], 0);
@@ -394,6 +393,23 @@ TEST(Cli, PeersPrintsEveryRowAndSavesShrunkCases) {
   const CliRun j = fdhcert({"peers", "--cases", "5", "--keep", "0", "--json", "--out", out});
   EXPECT_EQ(j.status, 0) << j.err;
   EXPECT_EQ(Json::parse(j.out)["rows"][0]["library"], "fdhcert");
+}
+
+// The peers' JSON (shrunk case names included) is the same for any thread count.
+TEST(Cli, PeersPrintTheSameForAnyThreadCount) {
+  const std::string corpus = FDH_SOURCE_DIR "/corpus";
+  std::string first;
+  for (const char* threads : {"1", "2", "64"}) {
+    const std::string out = fresh_temp_dir(std::string("cli_peers_threads_") + threads).string();
+    const CliRun r = fdhcert({"peers", "--cases", "30", "--keep", "1", "--json", "--out", out,
+                              "--corpus", corpus, "--threads", threads});
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::string json = r.out;  // the saved cases' folder differs per run: compare past it
+    for (std::size_t at; (at = json.find(out)) != std::string::npos;)
+      json.replace(at, out.size(), "OUT");
+    if (first.empty()) first = json;
+    EXPECT_EQ(json, first) << threads;
+  }
 }
 
 // A bad stored peer case: FILE:LINE, exit status 2, nothing on out.

@@ -8,6 +8,7 @@
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/suite/peers.hpp"
 #include "suite_commands.hpp"
+#include "threads_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -38,6 +39,7 @@ struct PeersCommand {
   PeerOptions peers;
   std::string corpus = "corpus";
   bool json = false;
+  int threads = 0;  // 0: every core
 };
 
 // overlapping: the pairs whose exact FDHs overlap (where a "disjoint" is a miss).
@@ -61,6 +63,7 @@ void print_table(const PeersReport& r, std::ostream& out) {
 int run_peers(PeersCommand& cmd, const Io& io) {
   if (!cmd.peers.save_dir.empty()) check_output_dir(cmd.peers.save_dir);
   cmd.peers.replay_dir = (std::filesystem::path(cmd.corpus) / "peers").string();
+  const ThreadLimit threads(cmd.threads);
   const PeersReport r = certify_peers(cmd.peers);
   if (cmd.json)
     print_json(io.out, peers_json(r));
@@ -91,6 +94,7 @@ Command add_peers(CLI::App& app) {
   sub->add_option("--corpus", cmd->corpus, "stored cases are replayed from CORPUS/peers")
       ->type_name("DIR");
   sub->add_flag("--json", cmd->json, "JSON instead of a table");
+  add_threads_option(*sub, cmd->threads, "the checks");
   return {sub, [cmd](const Io& io) { return run_peers(*cmd, io); }};
 }
 
