@@ -240,23 +240,30 @@ bool split_pair(const Bvh<K>& a, const Bvh<K>& b, int i, int j, std::pair<int, i
 }
 
 // Every pair of primitives under the node pairs on `stack`, one from each side, whose leaf
-// boxes overlap: the loop of traverse() and traverse_self().
+// boxes overlap: the loop of traverse() and traverse_self(). The pairs given are tested first;
+// below them, both children of a split pair are tested before either is pushed, so a pair that
+// does not overlap never goes through the stack (same pairs, same order, as testing on pop).
 template <int K, class Overlaps>
 void descend_pairs(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, int>>& stack,
                    std::vector<std::pair<int, int>>& out, const Overlaps& overlaps) {
+  const auto* A = a.nodes().data();
+  const auto* B = b.nodes().data();
+  const auto meet = [&](const std::pair<int, int>& p) {
+    return overlaps(A[p.first].box, B[p.second].box);
+  };
+  stack.erase(std::remove_if(stack.begin(), stack.end(), [&](const auto& p) { return !meet(p); }),
+              stack.end());
   while (!stack.empty()) {
     const auto [i, j] = stack.back();
     stack.pop_back();
-    const auto& na = a.nodes()[i];
-    const auto& nb = b.nodes()[j];
-    if (!overlaps(na.box, nb.box)) continue;
     std::pair<int, int> first, second;
     if (split_pair(a, b, i, j, first, second)) {
-      stack.push_back(second);
-      stack.push_back(first);
+      const bool second_meets = meet(second), first_meets = meet(first);
+      if (second_meets) stack.push_back(second);
+      if (first_meets) stack.push_back(first);
     } else {
-      for (int p = na.first; p < na.first + na.count; ++p)
-        for (int q = nb.first; q < nb.first + nb.count; ++q)
+      for (int p = A[i].first; p < A[i].first + A[i].count; ++p)
+        for (int q = B[j].first; q < B[j].first + B[j].count; ++q)
           out.push_back({a.prims()[p], b.prims()[q]});
     }
   }
@@ -294,7 +301,9 @@ template <int K>
 void traverse(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, int>>& out,
               int first_slab = -1) {
   if (a.empty() || b.empty()) return;
-  std::vector<std::pair<int, int>> stack = {{0, 0}};
+  std::vector<std::pair<int, int>> stack;
+  stack.reserve(128);  // a descent holds at most about one pair per level of each tree
+  stack.push_back({0, 0});
   if (first_slab >= 0)
     descend_pairs(a, b, stack, out, [first_slab](const Kdop<K>& x, const Kdop<K>& y) {
       return overlap(x, y, first_slab);
