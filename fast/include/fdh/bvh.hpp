@@ -2,7 +2,7 @@
 // against tree.
 // - Split direction: the direction of D along which the node is longest, in world units
 //   (slab width / |d|, so diagonals are not favoured by their length), judged on the centres of
-//   at most 32 of its primitives, evenly spaced (a constant cost per node).
+//   at most 16 of its primitives, evenly spaced (a constant cost per node).
 // - Split value: the median of the primitives' centroid projections on it (nth_element, so the
 //   halves are balanced even when projections tie).
 // - Leaves: `leaf_size` primitives, 1 by default as in the paper.
@@ -35,6 +35,7 @@ template <int K>
 class Bvh {
  public:
   struct Node {
+    Node() {}  // the box is written before it is read: no zeroing of 8·k bytes per node
     Kdop<K> box;
     int left = -1, right = -1;  // children, for an internal node
     int first = 0, count = 0;   // a leaf's range in prims()
@@ -46,17 +47,20 @@ class Bvh {
       int leaf_size = 1)
       : tris_(std::move(tris)), leaf_size_(std::max(1, leaf_size)) {
     const int n = int(tris_.size());
-    // Each primitive's centre (the sum of its corners: the centroid up to a factor) once, kept
-    // beside its index and its key for the split, so that a node's work reads memory in order.
+    // Each primitive's centre (the sum of its corners: the centroid up to a factor) once; the
+    // items the splits reorder are only a key and an index (16 bytes: nth_element moves less).
     std::vector<Item> items(n);
+    centres_.resize(n);
     for (int i = 0; i < n; ++i) {
       Vec3 c{};
       for (const int v : tris_[i]) c += x1.empty() ? x0[v] : x0[v] + x1[v];
-      items[i] = {0.0, i, c};
+      centres_[i] = c;
+      items[i] = {0.0, i};
     }
     prims_.resize(n);
     nodes_.reserve(2 * std::size_t(n));
     if (n > 0) build(0, n, items, x0, x1);
+    centres_ = {};
   }
 
   // New positions, same topology: leaves recomputed, internal nodes merged bottom up (children
@@ -139,7 +143,6 @@ class Bvh {
   struct Item {
     double key;
     int prim;
-    Vec3 centre;
   };
 
   // The node over items[first, last) and, below it, its subtree; returns its index. A leaf's
@@ -152,17 +155,21 @@ class Bvh {
     if (last - first <= leaf_size_) {
       for (int i = first; i < last; ++i) prims_[i] = items[i].prim;
       Node& node = nodes_[id];
-      range_box(node.box, first, last, x0, x1);
+      const Tri& t = tris_[items[first].prim];
+      if (last - first == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: its own widening
+        const Vec3 &p0 = x0[t[0]], &p1 = x1.empty() ? p0 : x1[t[0]];
+        const double w = widening_of(std::max(max_abs(p0), max_abs(p1)));
+        set_point(node.box, p0, w);
+        add_point(node.box, p1, w);
+      } else {
+        range_box(node.box, first, last, x0, x1);
+      }
       node.first = first;
       node.count = last - first;
       return id;
     }
-    const Direction& d = Kdop<K>::direction(longest_slab(sample_box(first, last, items)));
-    // Each centre's projection once (not once per comparison), then the median.
-    for (int i = first; i < last; ++i) items[i].key = project(d, items[i].centre);
     const int mid = first + (last - first) / 2;
-    std::nth_element(items.begin() + first, items.begin() + mid, items.begin() + last,
-                     [](const Item& a, const Item& b) { return a.key < b.key; });
+    if (last - first > 2) median_split(first, mid, last, items);  // two: already one a side
     const int left = build(first, mid, items, x0, x1);
     const int right = build(mid, last, items, x0, x1);
     Node& node = nodes_[id];
@@ -173,14 +180,34 @@ class Bvh {
     return id;
   }
 
-  // The k-DOP of the centres of at most 32 of the range's primitives, evenly spaced: enough to
+  // Orders items[first, last) so that [first, mid) holds the ones whose centres come first
+  // along the direction in which a sample of them spreads widest (ties in any order).
+  void median_split(int first, int mid, int last, std::vector<Item>& items) const {
+    const Direction& d = Kdop<K>::direction(longest_slab(sample_box(first, last, items)));
+    const double dx = d.x, dy = d.y, dz = d.z;  // as project() computes it, converted once
+    for (int i = first; i < last; ++i) {
+      const Vec3& c = centres_[items[i].prim];
+      items[i].key = dx * c.x + dy * c.y + dz * c.z;
+    }
+    const auto by_key = [](const Item& a, const Item& b) { return a.key < b.key; };
+    std::nth_element(items.begin() + first, items.begin() + mid, items.begin() + last, by_key);
+  }
+
+  // The k-DOP of the centres of at most 16 of the range's primitives, evenly spaced: enough to
   // choose the split direction (the split itself is the exact median), at a constant cost per
   // node. Only its shape is used, so it needs no widening.
-  static Kdop<K> sample_box(int first, int last, const std::vector<Item>& items) {
-    const int n = last - first, m = std::min(n, 32);
+  Kdop<K> sample_box(int first, int last, const std::vector<Item>& items) const {
+    const int n = last - first, m = std::min(n, 16);
     const double step = double(n - 1) / (m - 1);  // no integer division per sample
     Kdop<K> b = Kdop<K>::empty();
-    for (int i = 0; i < m; ++i) add_point(b, items[first + int(i * step)].centre, 0.0);
+    for (int i = 0; i < m; ++i) {
+      const std::array<double, 13> v = projections(centres_[items[first + int(i * step)].prim]);
+      for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
+        const double x = v[Kdop<K>::kDirIndex[s]];
+        b.lo[s] = x < b.lo[s] ? x : b.lo[s];
+        b.hi[s] = x > b.hi[s] ? x : b.hi[s];
+      }
+    }
     return b;
   }
 
@@ -207,6 +234,7 @@ class Bvh {
 
   std::vector<Tri> tris_;
   int leaf_size_;
+  std::vector<Vec3> centres_;  // each primitive's, during the build
   std::vector<int> prims_;
   std::vector<Node> nodes_;
 };
