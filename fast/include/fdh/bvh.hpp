@@ -98,8 +98,7 @@ class Bvh {
     if (n.leaf()) {
       const Tri& t = tris_[prims_[n.first]];
       if (n.count == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: the cloth's leaves
-        set_point(n.box, x0[t[0]], w);
-        if (!x1.empty()) add_point(n.box, x1[t[0]], w);
+        set_segment(n.box, x0[t[0]], x1.empty() ? x0[t[0]] : x1[t[0]], w);
       } else {
         range_box(n.box, n.first, n.first + n.count, x0, x1);
       }
@@ -158,9 +157,7 @@ class Bvh {
       const Tri& t = tris_[items[first].prim];
       if (last - first == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: its own widening
         const Vec3 &p0 = x0[t[0]], &p1 = x1.empty() ? p0 : x1[t[0]];
-        const double w = widening_of(std::max(max_abs(p0), max_abs(p1)));
-        set_point(node.box, p0, w);
-        add_point(node.box, p1, w);
+        set_segment(node.box, p0, p1, widening_of(std::max(max_abs(p0), max_abs(p1))));
       } else {
         range_box(node.box, first, last, x0, x1);
       }
@@ -253,8 +250,9 @@ double size(const Kdop<K>& b) {  // slabs 0-2 are the axes for every k
 // The children to descend into from the overlapping node pair (i, j): the larger box's (or the
 // one that is not a leaf), as (first, second); none for two leaves.
 template <int K>
-bool split_pair(const Bvh<K>& a, const Bvh<K>& b, int i, int j, std::pair<int, int>& first,
-                std::pair<int, int>& second) {
+[[gnu::always_inline]] inline bool split_pair(const Bvh<K>& a, const Bvh<K>& b, int i, int j,
+                                              std::pair<int, int>& first,
+                                              std::pair<int, int>& second) {
   const auto& na = a.nodes()[i];
   const auto& nb = b.nodes()[j];
   if (!na.leaf() && (nb.leaf() || size(na.box) >= size(nb.box))) {

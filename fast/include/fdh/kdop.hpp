@@ -136,6 +136,27 @@ inline void set_point(Kdop<K>& b, const Vec3& p, double w) {
   set_point_slabs(b, projections(p), w, std::make_index_sequence<Kdop<K>::kSlabs>{});
 }
 
+// Sets b to the box of the segment p q (both ends), pushed out likewise: set_point(b, p, w)
+// then add_point(b, q, w) in one pass that writes each slab once (min(a - w, c - w) and
+// min(a, c) - w round alike). A swept particle's leaf: the hot loop of every cloth refit.
+template <int K, std::size_t... S>
+inline void set_segment_slabs(Kdop<K>& b, const std::array<double, 13>& u,
+                              const std::array<double, 13>& v, double w,
+                              std::index_sequence<S...>) {
+  constexpr auto& dir = Kdop<K>::kDirIndex;
+  ((b.lo[S] = Kdop<K>::is_exact_slab(S) ? std::min(u[dir[S]], v[dir[S]])
+                                        : std::min(u[dir[S]], v[dir[S]]) - w,
+    b.hi[S] = Kdop<K>::is_exact_slab(S) ? std::max(u[dir[S]], v[dir[S]])
+                                        : std::max(u[dir[S]], v[dir[S]]) + w),
+   ...);
+}
+
+template <int K>
+inline void set_segment(Kdop<K>& b, const Vec3& p, const Vec3& q, double w) {
+  set_segment_slabs(b, projections(p), projections(q), w,
+                    std::make_index_sequence<Kdop<K>::kSlabs>{});
+}
+
 // Accumulates points, then widens the diagonal slabs once (not once per point).
 // Precondition: every coordinate is finite with magnitude <= 2^1020.
 template <int K>
