@@ -91,8 +91,8 @@ class Bvh {
 
   // One node of a refit: a leaf from the positions (widened by w, from widening()), an
   // internal node from its children (which must be refit already). Nodes are in preorder, so
-  // node i's subtree is the index range [i, subtree_end(i)): refitting such a range from its end
-  // is a refit of that subtree, and disjoint subtrees can be refit at the same time.
+  // a subtree is a range of indices: refitting such a range from its end is a refit of that
+  // subtree, and disjoint subtrees can be refit at the same time.
   void refit_node(int i, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, double w) {
     Node& n = nodes_[i];
     if (n.leaf()) {
@@ -112,10 +112,6 @@ class Bvh {
       n.box.lo[s] = l.lo[s] < r.lo[s] ? l.lo[s] : r.lo[s];
       n.box.hi[s] = l.hi[s] > r.hi[s] ? l.hi[s] : r.hi[s];
     }
-  }
-  int subtree_end(int i) const {
-    while (!nodes_[i].leaf()) i = nodes_[i].right;
-    return i + 1;
   }
 
   bool empty() const { return nodes_.empty(); }
