@@ -37,7 +37,8 @@ class Bvh {
   struct Node {
     Node() {}  // the box is written before it is read: no zeroing of 8·k bytes per node
     Kdop<K> box;
-    int left = -1, right = -1;  // children, for an internal node
+    int left = -1, right = -1;  // children, for an internal node; a leaf of one point: right
+                                // is that point's vertex (what a refit reads first)
     int first = 0, count = 0;   // a leaf's range in prims()
     bool leaf() const { return count > 0; }
   };
@@ -96,9 +97,8 @@ class Bvh {
   void refit_node(int i, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, double w) {
     Node& n = nodes_[i];
     if (n.leaf()) {
-      const Tri& t = tris_[prims_[n.first]];
-      if (n.count == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: the cloth's leaves
-        set_segment(n.box, x0[t[0]], x1.empty() ? x0[t[0]] : x1[t[0]], w);
+      if (n.right >= 0) {  // one point: the cloth's leaves
+        set_segment(n.box, x0[n.right], x1.empty() ? x0[n.right] : x1[n.right], w);
       } else {
         range_box(n.box, n.first, n.first + n.count, x0, x1);
       }
@@ -154,6 +154,7 @@ class Bvh {
       if (last - first == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: its own widening
         const Vec3 &p0 = x0[t[0]], &p1 = x1.empty() ? p0 : x1[t[0]];
         set_segment(node.box, p0, p1, widening_of(std::max(max_abs(p0), max_abs(p1))));
+        node.right = t[0];
       } else {
         range_box(node.box, first, last, x0, x1);
       }
