@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -265,7 +266,8 @@ template <int K>
 // Every pair of primitives under the node pairs on `stack`, one from each side, whose leaf
 // boxes overlap: the loop of traverse() and traverse_self(). The pairs given are tested first;
 // below them, both children of a split pair are tested before either is pushed, so a pair that
-// does not overlap never goes through the stack (same pairs, same order, as testing on pop).
+// does not overlap never goes through the stack, and the first is descended at once (same
+// pairs, same order, as pushing both and testing on pop).
 template <int K, class Overlaps>
 void descend_pairs(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, int>>& stack,
                    std::vector<std::pair<int, int>>& out, const Overlaps& overlaps) {
@@ -277,18 +279,19 @@ void descend_pairs(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, 
   stack.erase(std::remove_if(stack.begin(), stack.end(), [&](const auto& p) { return !meet(p); }),
               stack.end());
   while (!stack.empty()) {
-    const auto [i, j] = stack.back();
+    auto [i, j] = stack.back();
     stack.pop_back();
-    std::pair<int, int> first, second;
-    if (split_pair(a, b, i, j, first, second)) {
-      const bool second_meets = meet(second), first_meets = meet(first);
-      if (second_meets) stack.push_back(second);
-      if (first_meets) stack.push_back(first);
-    } else {
-      for (int p = A[i].first; p < A[i].first + A[i].count; ++p)
-        for (int q = B[j].first; q < B[j].first + B[j].count; ++q)
-          out.push_back({a.prims()[p], b.prims()[q]});
+    // Down the first child pair without the stack while it meets; the second waits there.
+    bool meets = true;
+    for (std::pair<int, int> first, second; meets && split_pair(a, b, i, j, first, second);) {
+      if (meet(second)) stack.push_back(second);
+      meets = meet(first);
+      std::tie(i, j) = first;
     }
+    if (!meets) continue;
+    for (int p = A[i].first; p < A[i].first + A[i].count; ++p)
+      for (int q = B[j].first; q < B[j].first + B[j].count; ++q)
+        out.push_back({a.prims()[p], b.prims()[q]});
   }
 }
 
