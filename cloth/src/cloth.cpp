@@ -8,19 +8,39 @@
 
 namespace fdh::cloth {
 
-Cloth::Cloth(const ClothSpec& spec) : grid_(spec.grid), spec_(spec) {
-  if (grid_ < 2) throw std::invalid_argument("a cloth needs at least 2×2 particles");
+namespace {
+
+int check_grid(int grid) {
+  if (grid < 2) throw std::invalid_argument("a cloth needs at least 2×2 particles");
+  return grid;
+}
+
+// Flat and level, row by row, centred on spec.centre.
+std::vector<Vec3> rest_positions(const ClothSpec& spec) {
+  const int g = spec.grid;
+  const double spacing = spec.size / (g - 1);
+  std::vector<Vec3> x(std::size_t(g) * g);
+  for (int r = 0; r < g; ++r)
+    for (int c = 0; c < g; ++c)
+      x[std::size_t(r) * g + c] =
+          spec.centre + Vec3{(c - (g - 1) / 2.0) * spacing, 0, (r - (g - 1) / 2.0) * spacing};
+  return x;
+}
+
+}  // namespace
+
+Cloth::Cloth(const ClothSpec& spec)
+    : grid_(check_grid(spec.grid)),
+      spec_(spec),
+      springs_by_family_(grid_, rest_positions(spec), spec.k_structural, spec.k_shear,
+                         spec.k_bend) {
   const int n = grid_ * grid_;
   m_ = spec.mass / n;
   spacing_ = spec.size / (grid_ - 1);
-  x_.resize(n);
+  x_ = rest_positions(spec);
   v_.assign(n, Vec3{});
   pinned_.assign(n, 0);
   k_sum_.assign(n, 0);
-  for (int r = 0; r < grid_; ++r)
-    for (int c = 0; c < grid_; ++c)
-      x_[index(r, c)] = spec.centre + Vec3{(c - (grid_ - 1) / 2.0) * spacing_, 0,
-                                           (r - (grid_ - 1) / 2.0) * spacing_};
   for (const auto& uv : spec.pins) {
     const int c = int(std::lround(std::clamp(uv[0], 0.0, 1.0) * (grid_ - 1)));
     const int r = int(std::lround(std::clamp(uv[1], 0.0, 1.0) * (grid_ - 1)));
@@ -44,7 +64,6 @@ Cloth::Cloth(const ClothSpec& spec) : grid_(spec.grid), spec_(spec) {
       if (c + 1 < grid_) edges_.push_back({i, index(r, c + 1)});
       if (r + 1 < grid_) edges_.push_back({i, index(r + 1, c)});
     }
-  index_springs();
 }
 
 void Cloth::add_spring(int i, int j, double k) {
@@ -54,94 +73,40 @@ void Cloth::add_spring(int i, int j, double k) {
   k_sum_[j] += k;
 }
 
-void Cloth::index_springs() {
-  const int n = this->n();
-  incident_start_.assign(n + 1, 0);
-  for (const Spring& s : springs_) ++incident_start_[s.i + 1], ++incident_start_[s.j + 1];
-  for (int i = 0; i < n; ++i) incident_start_[i + 1] += incident_start_[i];
-  incident_.resize(incident_start_[n]);
-  std::vector<int> next(incident_start_.begin(), incident_start_.end() - 1);
-  for (int s = 0; s < int(springs_.size()); ++s) {
-    incident_[next[springs_[s].i]++] = 2 * s;
-    incident_[next[springs_[s].j]++] = 2 * s + 1;
-  }
-  pull_.resize(2 * springs_.size());
-}
+// Rows per chunk: a cloth up to 64x64 is one chunk, run on the calling thread (waking other
+// threads costs more than its whole step); larger ones are cut into chunks for every core.
+constexpr int kParticleChunk = 1 << 12;
 
-// Chunk sizes: a cloth up to about 60x60 is one chunk of each, run on the calling thread (waking
-// other threads costs more than its whole step); larger ones are cut into chunks for every core.
-constexpr int kSpringChunk = 1 << 15, kParticleChunk = 1 << 12;
-
-// Hooke: k·(|d| - rest)·d/|d| with d = x_j - x_i, each spring's pull on both its ends. (One
-// pass: splitting it so that the square roots run on vector registers was slower, the extra
-// passes over memory costing more than the square roots.)
-void Cloth::spring_forces() {
-  for_chunks(int(springs_.size()), kSpringChunk, [&](int begin, int end) {
-    for (int s = begin; s < end; ++s) {
-      const Spring& sp = springs_[s];
-      const Vec3 d = x_[sp.j] - x_[sp.i];
-      if (d == Vec3{}) {  // no direction to push along
-        pull_[2 * s] = pull_[2 * s + 1] = Vec3{};
-        continue;
-      }
-      const double len = std::sqrt(dot(d, d));
-      const Vec3 f = (sp.k * (len - sp.rest) / (len == 0 ? 1.0 : len)) * d;
-      pull_[2 * s] = f;
-      pull_[2 * s + 1] = -f;  // exact: adding it is subtracting the pull
+// Eqs. (1)–(3). Each particle's force is gravity and air, F = m·g - c·m·(v - wind), then its
+// springs (GridSprings' order): the same sums in the same order for any chunks, so any threads.
+void Cloth::integrate(double dt, std::vector<Vec3>& x_next) {
+  const int n = this->n(), g = grid_, rows = std::max(1, kParticleChunk / g);
+  x_next.resize(n);
+  for (auto* a : {&px_, &py_, &pz_, &fx_, &fy_, &fz_}) a->resize(n);
+  for_chunks(g, rows, [&](int r0, int r1) {
+    for (int i = r0 * g; i < r1 * g; ++i) {
+      px_[i] = x_[i].x, py_[i] = x_[i].y, pz_[i] = x_[i].z;
+      const Vec3 f = m_ * spec_.gravity - (spec_.damping * m_) * (v_[i] - spec_.wind);
+      fx_[i] = f.x, fy_[i] = f.y, fz_[i] = f.z;
     }
   });
-}
-
-void Cloth::integrate(double dt, std::vector<Vec3>& x_next) {
-  const int n = this->n();
-  x_next.resize(n);
-  if (int(springs_.size()) <= kSpringChunk && n <= kParticleChunk) {
-    integrate_serial(dt, x_next);
-    return;
-  }
-  spring_forces();
+  for_chunks(g, rows, [&](int r0, int r1) {
+    springs_by_family_.start(px_.data(), py_.data(), pz_.data(), fx_.data(), fy_.data(), fz_.data(),
+                             r0, r1);
+  });
   const double h = dt / m_;  // Δt·a = Δt·F/m, eqs. (1)–(2)
-  for_chunks(n, kParticleChunk, [&](int begin, int end) {
-    for (int i = begin; i < end; ++i) {
+  for_chunks(g, rows, [&](int r0, int r1) {
+    springs_by_family_.finish(fx_.data(), fy_.data(), fz_.data(), r0, r1);
+    for (int i = r0 * g; i < r1 * g; ++i) {
       if (pinned_[i]) {
         v_[i] = Vec3{};
         x_next[i] = x_[i];
         continue;
       }
-      // Gravity and air: F = m·g - c·m·(v - wind); then the springs, in spring order.
-      Vec3 f = m_ * spec_.gravity - (spec_.damping * m_) * (v_[i] - spec_.wind);
-      for (int e = incident_start_[i]; e < incident_start_[i + 1]; ++e) f += pull_[incident_[e]];
-      v_[i] += h * f;
+      v_[i] += h * Vec3{fx_[i], fy_[i], fz_[i]};
       x_next[i] = x_[i] + dt * v_[i];  // eq. (3), with the new velocity
     }
   });
-}
-
-// The same sums in the same order (each particle's force, then its springs in spring order),
-// scattered spring by spring: faster on one thread.
-void Cloth::integrate_serial(double dt, std::vector<Vec3>& x_next) {
-  const int n = this->n();
-  force_.resize(n);
-  for (int i = 0; i < n; ++i)  // gravity and air: F = m·g - c·m·(v - wind)
-    force_[i] = m_ * spec_.gravity - (spec_.damping * m_) * (v_[i] - spec_.wind);
-  for (const Spring& s : springs_) {  // Hooke: k·(|d| - rest)·d/|d|
-    const Vec3 d = x_[s.j] - x_[s.i];
-    if (d == Vec3{}) continue;  // no direction to push along
-    const double len = std::sqrt(dot(d, d));
-    const Vec3 f = (s.k * (len - s.rest) / (len == 0 ? 1.0 : len)) * d;
-    force_[s.i] += f;
-    force_[s.j] += -f;  // as the parallel path adds it
-  }
-  const double h = dt / m_;  // Δt·a = Δt·F/m, eqs. (1)–(2)
-  for (int i = 0; i < n; ++i) {
-    if (pinned_[i]) {
-      v_[i] = Vec3{};
-      x_next[i] = x_[i];
-      continue;
-    }
-    v_[i] += h * force_[i];
-    x_next[i] = x_[i] + dt * v_[i];  // eq. (3), with the new velocity
-  }
 }
 
 double Cloth::energy() const {

@@ -9,7 +9,7 @@ PatchTree::PatchTree(const Cloth& cloth) : cloth_(cloth), grid_(cloth.grid()), c
   build(0, 0, cols_, cols_);
   own_primitives();
   normals_.resize(nodes_.size());
-  split_subtrees(nodes_, 0, roots_, top_);
+  order_ = BottomUp(nodes_);
   lean_.resize(nodes_.size());
 }
 

@@ -214,9 +214,8 @@ struct Zones {
 
 }  // namespace
 
-SelfCollision::Result SelfCollision::resolve(const Cloth& cloth, const std::vector<Vec3>& x0,
-                                             std::vector<Vec3>& x, std::vector<Vec3>& v) {
-  (void)cloth;
+SelfCollision::Result SelfCollision::resolve(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
+                                             std::vector<Vec3>& v) {
   Result r;
   std::vector<Vec3> v_in;  // the velocities before any response, for the zones' means
   for (int round = 0; round < rounds_; ++round) {  // stage 1

@@ -159,14 +159,14 @@ TEST(SelfCollision, StopsAPointBeforeItPassesThroughTheCloth) {
   std::vector<Vec3> x = x0, v(x0.size());
   x[0] = {0.6, -0.5, 0.6};
   SelfCollision pass(cloth, 18, &exact::ccd_hit);
-  const SelfCollision::Result r = pass.resolve(cloth, x0, x, v);
+  const SelfCollision::Result r = pass.resolve(x0, x, v);
   EXPECT_GT(r.hits, 0);
   EXPECT_EQ(x[0], x0[0]);  // stopped where the step began
   EXPECT_FALSE(r.stopped_all);
   // Moving away instead: nothing to do.
   std::vector<Vec3> y = x0, w(x0.size());
   y[0] = {0.6, 1.5, 0.6};
-  EXPECT_EQ(pass.resolve(cloth, x0, y, w).hits, 0);
+  EXPECT_EQ(pass.resolve(x0, y, w).hits, 0);
   EXPECT_EQ(y[0], (Vec3{0.6, 1.5, 0.6}));
 }
 
@@ -181,7 +181,7 @@ TEST(SelfCollision, ImpactZonesResolveWhatTheRoundsLeave) {
   v[0] = {0, -1, 0};
   x[2] += Vec3{0, 0, 0.001};  // a particle outside the contact, moving
   SelfCollision pass(cloth, 18, &exact::ccd_hit, /*rounds=*/0);
-  const SelfCollision::Result r = pass.resolve(cloth, x0, x, v);
+  const SelfCollision::Result r = pass.resolve(x0, x, v);
   EXPECT_TRUE(r.zones);
   EXPECT_FALSE(r.stopped_all);
   EXPECT_GT(r.zone_particles, 0);
@@ -194,7 +194,7 @@ TEST(SelfCollision, ImpactZonesResolveWhatTheRoundsLeave) {
   EXPECT_GT(v[0].z, 0);
   // And the step is now free of contact.
   std::vector<Vec3> w = v;
-  EXPECT_EQ(SelfCollision(cloth, 18, &exact::ccd_hit).resolve(cloth, x0, x, w).hits, 0);
+  EXPECT_EQ(SelfCollision(cloth, 18, &exact::ccd_hit).resolve(x0, x, w).hits, 0);
 }
 
 // The step on one thread and on two gives the same cloth, to the bit: chunks fixed by the sizes

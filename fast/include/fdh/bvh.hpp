@@ -2,7 +2,7 @@
 // against tree.
 // - Split direction: the direction of D along which the node is longest, in world units
 //   (slab width / |d|, so diagonals are not favoured by their length), judged on the centres of
-//   at most 32 of its primitives, evenly spaced (a constant cost per node).
+//   at most 16 of its primitives, evenly spaced (a constant cost per node).
 // - Split value: the median of the primitives' centroid projections on it (nth_element, so the
 //   halves are balanced even when projections tie).
 // - Leaves: `leaf_size` primitives, 1 by default as in the paper.
@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -35,8 +36,10 @@ template <int K>
 class Bvh {
  public:
   struct Node {
+    Node() {}  // the box is written before it is read: no zeroing of 8·k bytes per node
     Kdop<K> box;
-    int left = -1, right = -1;  // children, for an internal node
+    int left = -1, right = -1;  // children, for an internal node; a leaf of one point: right
+                                // is that point's vertex (what a refit reads first)
     int first = 0, count = 0;   // a leaf's range in prims()
     bool leaf() const { return count > 0; }
   };
@@ -46,17 +49,20 @@ class Bvh {
       int leaf_size = 1)
       : tris_(std::move(tris)), leaf_size_(std::max(1, leaf_size)) {
     const int n = int(tris_.size());
-    // Each primitive's centre (the sum of its corners: the centroid up to a factor) once, kept
-    // beside its index and its key for the split, so that a node's work reads memory in order.
+    // Each primitive's centre (the sum of its corners: the centroid up to a factor) once; the
+    // items the splits reorder are only a key and an index (16 bytes: nth_element moves less).
     std::vector<Item> items(n);
+    centres_.resize(n);
     for (int i = 0; i < n; ++i) {
       Vec3 c{};
       for (const int v : tris_[i]) c += x1.empty() ? x0[v] : x0[v] + x1[v];
-      items[i] = {0.0, i, c};
+      centres_[i] = c;
+      items[i] = {0.0, i};
     }
     prims_.resize(n);
     nodes_.reserve(2 * std::size_t(n));
     if (n > 0) build(0, n, items, x0, x1);
+    centres_ = {};
   }
 
   // New positions, same topology: leaves recomputed, internal nodes merged bottom up (children
@@ -87,15 +93,13 @@ class Bvh {
 
   // One node of a refit: a leaf from the positions (widened by w, from widening()), an
   // internal node from its children (which must be refit already). Nodes are in preorder, so
-  // node i's subtree is the index range [i, subtree_end(i)): refitting such a range from its end
-  // is a refit of that subtree, and disjoint subtrees can be refit at the same time.
+  // a subtree is a range of indices: refitting such a range from its end is a refit of that
+  // subtree, and disjoint subtrees can be refit at the same time.
   void refit_node(int i, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, double w) {
     Node& n = nodes_[i];
     if (n.leaf()) {
-      const Tri& t = tris_[prims_[n.first]];
-      if (n.count == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: the cloth's leaves
-        set_point(n.box, x0[t[0]], w);
-        if (!x1.empty()) add_point(n.box, x1[t[0]], w);
+      if (n.right >= 0) {  // one point: the cloth's leaves
+        set_segment(n.box, x0[n.right], x1.empty() ? x0[n.right] : x1[n.right], w);
       } else {
         range_box(n.box, n.first, n.first + n.count, x0, x1);
       }
@@ -109,10 +113,6 @@ class Bvh {
       n.box.lo[s] = l.lo[s] < r.lo[s] ? l.lo[s] : r.lo[s];
       n.box.hi[s] = l.hi[s] > r.hi[s] ? l.hi[s] : r.hi[s];
     }
-  }
-  int subtree_end(int i) const {
-    while (!nodes_[i].leaf()) i = nodes_[i].right;
-    return i + 1;
   }
 
   bool empty() const { return nodes_.empty(); }
@@ -139,7 +139,6 @@ class Bvh {
   struct Item {
     double key;
     int prim;
-    Vec3 centre;
   };
 
   // The node over items[first, last) and, below it, its subtree; returns its index. A leaf's
@@ -152,17 +151,20 @@ class Bvh {
     if (last - first <= leaf_size_) {
       for (int i = first; i < last; ++i) prims_[i] = items[i].prim;
       Node& node = nodes_[id];
-      range_box(node.box, first, last, x0, x1);
+      const Tri& t = tris_[items[first].prim];
+      if (last - first == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: its own widening
+        const Vec3 &p0 = x0[t[0]], &p1 = x1.empty() ? p0 : x1[t[0]];
+        set_segment(node.box, p0, p1, widening_of(std::max(max_abs(p0), max_abs(p1))));
+        node.right = t[0];
+      } else {
+        range_box(node.box, first, last, x0, x1);
+      }
       node.first = first;
       node.count = last - first;
       return id;
     }
-    const Direction& d = Kdop<K>::direction(longest_slab(sample_box(first, last, items)));
-    // Each centre's projection once (not once per comparison), then the median.
-    for (int i = first; i < last; ++i) items[i].key = project(d, items[i].centre);
     const int mid = first + (last - first) / 2;
-    std::nth_element(items.begin() + first, items.begin() + mid, items.begin() + last,
-                     [](const Item& a, const Item& b) { return a.key < b.key; });
+    if (last - first > 2) median_split(first, mid, last, items);  // two: already one a side
     const int left = build(first, mid, items, x0, x1);
     const int right = build(mid, last, items, x0, x1);
     Node& node = nodes_[id];
@@ -173,14 +175,34 @@ class Bvh {
     return id;
   }
 
-  // The k-DOP of the centres of at most 32 of the range's primitives, evenly spaced: enough to
+  // Orders items[first, last) so that [first, mid) holds the ones whose centres come first
+  // along the direction in which a sample of them spreads widest (ties in any order).
+  void median_split(int first, int mid, int last, std::vector<Item>& items) const {
+    const Direction& d = Kdop<K>::direction(longest_slab(sample_box(first, last, items)));
+    const double dx = d.x, dy = d.y, dz = d.z;  // as project() computes it, converted once
+    for (int i = first; i < last; ++i) {
+      const Vec3& c = centres_[items[i].prim];
+      items[i].key = dx * c.x + dy * c.y + dz * c.z;
+    }
+    const auto by_key = [](const Item& a, const Item& b) { return a.key < b.key; };
+    std::nth_element(items.begin() + first, items.begin() + mid, items.begin() + last, by_key);
+  }
+
+  // The k-DOP of the centres of at most 16 of the range's primitives, evenly spaced: enough to
   // choose the split direction (the split itself is the exact median), at a constant cost per
   // node. Only its shape is used, so it needs no widening.
-  static Kdop<K> sample_box(int first, int last, const std::vector<Item>& items) {
-    const int n = last - first, m = std::min(n, 32);
+  Kdop<K> sample_box(int first, int last, const std::vector<Item>& items) const {
+    const int n = last - first, m = std::min(n, 16);
     const double step = double(n - 1) / (m - 1);  // no integer division per sample
     Kdop<K> b = Kdop<K>::empty();
-    for (int i = 0; i < m; ++i) add_point(b, items[first + int(i * step)].centre, 0.0);
+    for (int i = 0; i < m; ++i) {
+      const std::array<double, 13> v = projections(centres_[items[first + int(i * step)].prim]);
+      for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
+        const double x = v[Kdop<K>::kDirIndex[s]];
+        b.lo[s] = x < b.lo[s] ? x : b.lo[s];
+        b.hi[s] = x > b.hi[s] ? x : b.hi[s];
+      }
+    }
     return b;
   }
 
@@ -207,6 +229,7 @@ class Bvh {
 
   std::vector<Tri> tris_;
   int leaf_size_;
+  std::vector<Vec3> centres_;  // each primitive's, during the build
   std::vector<int> prims_;
   std::vector<Node> nodes_;
 };
@@ -225,8 +248,9 @@ double size(const Kdop<K>& b) {  // slabs 0-2 are the axes for every k
 // The children to descend into from the overlapping node pair (i, j): the larger box's (or the
 // one that is not a leaf), as (first, second); none for two leaves.
 template <int K>
-bool split_pair(const Bvh<K>& a, const Bvh<K>& b, int i, int j, std::pair<int, int>& first,
-                std::pair<int, int>& second) {
+[[gnu::always_inline]] inline bool split_pair(const Bvh<K>& a, const Bvh<K>& b, int i, int j,
+                                              std::pair<int, int>& first,
+                                              std::pair<int, int>& second) {
   const auto& na = a.nodes()[i];
   const auto& nb = b.nodes()[j];
   if (!na.leaf() && (nb.leaf() || size(na.box) >= size(nb.box))) {
@@ -240,25 +264,34 @@ bool split_pair(const Bvh<K>& a, const Bvh<K>& b, int i, int j, std::pair<int, i
 }
 
 // Every pair of primitives under the node pairs on `stack`, one from each side, whose leaf
-// boxes overlap: the loop of traverse() and traverse_self().
+// boxes overlap: the loop of traverse() and traverse_self(). The pairs given are tested first;
+// below them, both children of a split pair are tested before either is pushed, so a pair that
+// does not overlap never goes through the stack, and the first is descended at once (same
+// pairs, same order, as pushing both and testing on pop).
 template <int K, class Overlaps>
 void descend_pairs(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, int>>& stack,
                    std::vector<std::pair<int, int>>& out, const Overlaps& overlaps) {
+  const auto* A = a.nodes().data();
+  const auto* B = b.nodes().data();
+  const auto meet = [&](const std::pair<int, int>& p) {
+    return overlaps(A[p.first].box, B[p.second].box);
+  };
+  stack.erase(std::remove_if(stack.begin(), stack.end(), [&](const auto& p) { return !meet(p); }),
+              stack.end());
   while (!stack.empty()) {
-    const auto [i, j] = stack.back();
+    auto [i, j] = stack.back();
     stack.pop_back();
-    const auto& na = a.nodes()[i];
-    const auto& nb = b.nodes()[j];
-    if (!overlaps(na.box, nb.box)) continue;
-    std::pair<int, int> first, second;
-    if (split_pair(a, b, i, j, first, second)) {
-      stack.push_back(second);
-      stack.push_back(first);
-    } else {
-      for (int p = na.first; p < na.first + na.count; ++p)
-        for (int q = nb.first; q < nb.first + nb.count; ++q)
-          out.push_back({a.prims()[p], b.prims()[q]});
+    // Down the first child pair without the stack while it meets; the second waits there.
+    bool meets = true;
+    for (std::pair<int, int> first, second; meets && split_pair(a, b, i, j, first, second);) {
+      if (meet(second)) stack.push_back(second);
+      meets = meet(first);
+      std::tie(i, j) = first;
     }
+    if (!meets) continue;
+    for (int p = A[i].first; p < A[i].first + A[i].count; ++p)
+      for (int q = B[j].first; q < B[j].first + B[j].count; ++q)
+        out.push_back({a.prims()[p], b.prims()[q]});
   }
 }
 
@@ -294,7 +327,9 @@ template <int K>
 void traverse(const Bvh<K>& a, const Bvh<K>& b, std::vector<std::pair<int, int>>& out,
               int first_slab = -1) {
   if (a.empty() || b.empty()) return;
-  std::vector<std::pair<int, int>> stack = {{0, 0}};
+  std::vector<std::pair<int, int>> stack;
+  stack.reserve(128);  // a descent holds at most about one pair per level of each tree
+  stack.push_back({0, 0});
   if (first_slab >= 0)
     descend_pairs(a, b, stack, out, [first_slab](const Kdop<K>& x, const Kdop<K>& y) {
       return overlap(x, y, first_slab);

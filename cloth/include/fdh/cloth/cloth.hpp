@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fdh/bvh.hpp"
+#include "fdh/cloth/grid_springs.hpp"
 #include "fdh/vec3.hpp"
 
 namespace fdh::cloth {
@@ -73,7 +74,7 @@ class Cloth {
 
   // Eqs. (1)–(3) for one step: new velocities into v(), and the positions they lead to into
   // `x_next` (x() is left as the start of the step, for the swept collision test). Each
-  // particle sums its springs' forces in the order of springs(), whatever the thread count.
+  // particle sums its forces in one order (GridSprings'), whatever the thread count.
   void integrate(double dt, std::vector<Vec3>& x_next);
 
   // Kinetic + gravitational + spring energy, J.
@@ -87,9 +88,6 @@ class Cloth {
 
  private:
   void add_spring(int i, int j, double k);
-  void spring_forces();  // each spring's pull on its two ends, into pull_
-  void index_springs();  // builds incident_ and incident_start_
-  void integrate_serial(double dt, std::vector<Vec3>& x_next);  // one chunk: on this thread
 
   int grid_;
   double m_, spacing_;
@@ -97,12 +95,9 @@ class Cloth {
   std::vector<Vec3> x_, v_;
   std::vector<char> pinned_;
   std::vector<Spring> springs_;
-  // The springs at each particle, in spring order: incident_[incident_start_[i] ..
-  // incident_start_[i + 1]), each the index in pull_ of that spring's force on i.
-  std::vector<int> incident_, incident_start_;
-  std::vector<Vec3> pull_;     // per spring s: at 2s the force on its i end, at 2s + 1 on its j end
-  std::vector<Vec3> force_;    // per particle, for the serial path
-  std::vector<double> k_sum_;  // Σ_j k_ij per particle
+  GridSprings springs_by_family_;                    // the same springs, for the forces
+  std::vector<double> px_, py_, pz_, fx_, fy_, fz_;  // positions and forces, by coordinate
+  std::vector<double> k_sum_;                        // Σ_j k_ij per particle
   std::vector<Tri> tris_;
   std::vector<std::array<int, 2>> edges_;
 };

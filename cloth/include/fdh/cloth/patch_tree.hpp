@@ -43,38 +43,24 @@ class PatchTree {
   // Every node's swept normals for the step x0 -> x1 (bottom up, one pass over the triangles).
   void update_normals(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
 
-  // f(node) for every node, children before parents: a large tree by subtrees side by side
-  // (nodes are in preorder, so a subtree is a range of them), then the nodes above them.
+  // f(node) for every node, children before parents (BottomUp: on every core when large).
   template <class F>
   void bottom_up(const F& f) const {
-    if (nodes_.size() < kParallelNodes) {
-      for (int i = int(nodes_.size()) - 1; i >= 0; --i) f(i);
-      return;
-    }
-    for_chunks(int(roots_.size()), 1, [&](int begin, int end) {
-      for (int r = begin; r < end; ++r)
-        for (int i = subtree_end(roots_[r]) - 1; i >= roots_[r]; --i) f(i);
-    });
-    for (auto i = top_.rbegin(); i != top_.rend(); ++i) f(*i);
+    order_.run(f);
   }
   // Whether the node is flat over that step (its mask, then its contour): asked top down by the
   // pass, only of the nodes it reaches.
   bool flat(int node, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) const;
 
  private:
-  static constexpr std::size_t kParallelNodes = 1 << 14;  // below: on the calling thread
   int build(int r0, int c0, int r1, int c1);
-  int subtree_end(int i) const {
-    while (!nodes_[i].leaf()) i = nodes_[i].right;
-    return i + 1;
-  }
   void own_primitives();
   void contour_of(const Node& n, std::vector<int>& out) const;
 
   const Cloth& cloth_;
   int grid_, cols_;  // particles per side, cells per side
   std::vector<Node> nodes_;
-  std::vector<int> roots_, top_;  // bottom_up's subtrees, and the nodes above them (preorder)
+  BottomUp order_;  // bottom_up's order
   std::vector<int> vertex_, vertex_start_, edge_, edge_start_;
   std::vector<NormalBox> normals_;  // per node: its triangles' swept normals
   std::vector<Vec3> lean_;          // per node: sum of its triangles' normals at the end

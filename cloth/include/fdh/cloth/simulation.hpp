@@ -1,7 +1,8 @@
 // One cloth among still obstacles, stepped frame by frame. Each frame (one step of Δt):
 //   1. springs and integration: eqs. (1)–(3) give every particle's end of step;
 //   2. refit: the cloth's FDH tree over the particles, leaves swept from start to end (§2);
-//   3. traversal: the cloth tree against the obstacles' tree (§3, y slab first as in §3.1);
+//   3. traversal: the cloth tree against the obstacles' tree (§3; each box test checks every
+//      slab at once, which subsumes §3.1's y slab first);
 //   4. narrow phase: the chosen point–triangle test on every candidate pair (§3.2);
 //   5. response: for each hit, eqs. (4)–(5) on the velocity, and the particle put back on the
 //      surface it crossed (a hair outside it, so that the next step starts outside);
