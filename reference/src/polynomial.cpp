@@ -305,26 +305,46 @@ Poly exact_quotient(const Poly& p, const Poly& g0) {
 
 }  // namespace
 
-// p is the convex combination sum b_i B_i(t) of the Bernstein basis, B_i >= 0 on [0, 1] and
-// sum B_i = 1, with b_i = sum_{j <= i} C(i, j) / C(d, j) a_j (Farouki & Rajan 1988, "Algorithms
-// for polynomials in Bernstein form"). Scaled by d!, the b_i are the integers
-// sum_{j <= i} C(i, j) j! (d - j)! a_j.
-bool no_root_in_unit(const Poly& p) {
-  const int d = p.degree();
-  if (d < 0) return false;
+namespace {
+
+// The sign of p's i-th Bernstein coefficient on [0, 1], for p != 0. p is the convex
+// combination sum b_i B_i(t) of the Bernstein basis, B_i >= 0 on [0, 1] and sum B_i = 1, with
+// b_i = sum_{j <= i} C(i, j) / C(d, j) a_j (Farouki & Rajan 1988, "Algorithms for polynomials
+// in Bernstein form"). Scaled by d!, the b_i are the integers sum_{j <= i} C(i, j) j! (d - j)! a_j.
+int bernstein_sign(const Poly& p, int i) {
   static const long factorial[] = {1, 1, 2, 6, 24};
   static const long binomial[5][5] = {{1}, {1, 1}, {1, 2, 1}, {1, 3, 3, 1}, {1, 4, 6, 4, 1}};
-  int sign = 0;
-  Int b;
-  for (int i = 0; i <= d; ++i) {
-    b = p.c[0];
-    mul(b, b, Int(factorial[d]));
-    for (int j = 1; j <= i; ++j)
-      addmul(b, p.c[j], Int(binomial[i][j] * factorial[j] * factorial[d - j]));
-    const int s = b.sign();
-    if (s == 0 || (sign != 0 && s != sign)) return false;
-    sign = s;
+  const int d = p.degree();
+  thread_local Int b;
+  mul(b, p.c[0], Int(factorial[d]));
+  for (int j = 1; j <= i; ++j)
+    addmul(b, p.c[j], Int(binomial[i][j] * factorial[j] * factorial[d - j]));
+  return b.sign();
+}
+
+// Exactly one root in (0, 1), and a simple one, by the rule of signs for the Bernstein form
+// (Farouki & Rajan 1988): the roots there, with multiplicity, are at most the sign variations
+// of the b_i and of the same parity. b_0 = p(0) and b_d = p(1) (times d!) are nonzero, so one
+// variation is exactly one root, in the open interval.
+bool one_root_in_open_unit(const Poly& p) {
+  const int d = p.degree(), first = p.c[0].sign();
+  if (d < 1 || first == 0 || bernstein_sign(p, d) == 0) return false;
+  int changes = 0, last = first;
+  for (int i = 1; i <= d && changes < 2; ++i) {
+    const int x = bernstein_sign(p, i);
+    if (x != 0 && x != last) ++changes, last = x;
   }
+  return changes == 1;
+}
+
+}  // namespace
+
+// All Bernstein coefficients of one strict sign: p has no root in [0, 1].
+bool no_root_in_unit(const Poly& p) {
+  if (p.is_zero()) return false;
+  const int first = p.c[0].sign();
+  for (int i = 0; i <= p.degree(); ++i)
+    if (first == 0 || bernstein_sign(p, i) != first) return false;
   return true;
 }
 
@@ -365,6 +385,9 @@ int sign_at(const Poly& p, const Dyadic& t) {
 }
 
 Roots roots_in(Poly& s, const Dyadic& t0, const Dyadic& t1) {
+  // The unit window with one simple root inside: what Sturm isolation would find, without it.
+  if (t0.a.is_zero() && t1.k == 0 && t1.a == Int(1) && one_root_in_open_unit(s))
+    return Roots{Root{&s, Int(0), Int(1), 0}};
   InlineVector<Poly, 5> seq = sturm_sequence(s);
   // The last element is gcd(s, s') up to a factor (a remainder sequence): s is squarefree iff
   // it is a constant. Else the roots are those of s / gcd(s, s'), each simple.
