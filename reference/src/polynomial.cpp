@@ -348,7 +348,7 @@ bool no_root_in_unit(const Poly& p) {
   return true;
 }
 
-Dyadic Dyadic::of(double x) {
+Binary Binary::of(double x) {
   if (x == 0) return {};
   // IEEE 754 binary64: x = m 2^e with m the significand (the hidden bit set unless subnormal).
   std::uint64_t bits = 0;
@@ -359,9 +359,13 @@ Dyadic Dyadic::of(double x) {
   if (biased != 0) m |= std::uint64_t(1) << 52, e = biased - 1075;
   const int zeros = __builtin_ctzll(m);  // the fewest bits, so that the integers stay small
   m >>= zeros, e += zeros;
-  const Int a(bits >> 63 ? -long(m) : long(m));
-  if (e <= 0) return {a, unsigned(-e)};
-  return {a << unsigned(e), 0};
+  return {bits >> 63 ? -long(m) : long(m), e};
+}
+
+Dyadic Dyadic::of(double x) {
+  const Binary b = Binary::of(x);
+  if (b.e <= 0) return {Int(b.m), unsigned(-b.e)};
+  return {Int(b.m) << unsigned(b.e), 0};
 }
 
 mpq_class Dyadic::value() const {
