@@ -322,19 +322,32 @@ int bernstein_sign(const Poly& p, int i) {
   return b.sign();
 }
 
-// Exactly one root in (0, 1), and a simple one, by the rule of signs for the Bernstein form
-// (Farouki & Rajan 1988): the roots there, with multiplicity, are at most the sign variations
-// of the b_i and of the same parity. b_0 = p(0) and b_d = p(1) (times d!) are nonzero, so one
-// variation is exactly one root, in the open interval.
-bool one_root_in_open_unit(const Poly& p) {
-  const int d = p.degree(), first = p.c[0].sign();
-  if (d < 1 || first == 0 || bernstein_sign(p, d) == 0) return false;
-  int changes = 0, last = first;
-  for (int i = 1; i <= d && changes < 2; ++i) {
-    const int x = bernstein_sign(p, i);
-    if (x != 0 && x != last) ++changes, last = x;
+// The roots of p in [0, 1] when the signs of its Bernstein coefficients b_i alone tell them
+// (Farouki & Rajan 1988), as Sturm isolation would give them: b_0 = d! p(0), b_d = d! p(1),
+// and B_i > 0 on (0, 1). Nonzero ends with one sign variation: one simple root in (0, 1) (the
+// rule of signs: roots there with multiplicity are at most the variations, of the same
+// parity). b_0 = 0 and no b_i of sign opposite to b_d != 0: p has b_d's sign on (0, 1], the
+// root is 0 alone; mirrored, 1 alone. False if the signs do not tell.
+bool unit_roots_by_signs(const Poly& p, Roots& out) {
+  const int d = p.degree();
+  if (d < 1) return false;
+  InlineVector<int, 5> b;
+  for (int i = 0; i <= d; ++i) b.push_back(bernstein_sign(p, i));
+  if (b[0] == 0 || b[d] == 0) {
+    if (b[0] == b[d]) return false;  // both zero
+    const int other = b[0] == 0 ? b[d] : b[0];
+    for (int x : b)
+      if (x == -other) return false;
+    const Int at(b[0] == 0 ? 0 : 1);
+    out.push_back(Root{&p, at, at, 0});
+    return true;
   }
-  return changes == 1;
+  int changes = 0, last = b[0];
+  for (int x : b)
+    if (x != 0 && x != last) ++changes, last = x;
+  if (changes != 1) return false;
+  out.push_back(Root{&p, Int(0), Int(1), 0});
+  return true;
 }
 
 }  // namespace
@@ -389,9 +402,10 @@ int sign_at(const Poly& p, const Dyadic& t) {
 }
 
 Roots roots_in(Poly& s, const Dyadic& t0, const Dyadic& t1) {
-  // The unit window with one simple root inside: what Sturm isolation would find, without it.
-  if (t0.a.is_zero() && t1.k == 0 && t1.a == Int(1) && one_root_in_open_unit(s))
-    return Roots{Root{&s, Int(0), Int(1), 0}};
+  // The unit window, when the Bernstein signs tell the roots: no Sturm sequence.
+  Roots by_signs;
+  if (t0.a.is_zero() && t1.k == 0 && t1.a == Int(1) && unit_roots_by_signs(s, by_signs))
+    return by_signs;
   InlineVector<Poly, 5> seq = sturm_sequence(s);
   // The last element is gcd(s, s') up to a factor (a remainder sequence): s is squarefree iff
   // it is a constant. Else the roots are those of s / gcd(s, s'), each simple.
