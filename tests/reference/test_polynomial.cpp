@@ -101,7 +101,7 @@ TEST(Polynomial, NoRootInTheUnitIntervalIsNeverWrongAndOftenDecides) {
   EXPECT_GT(decided, without / 2);  // the test is of use, not only safe
 }
 
-// The unit window skips Sturm sequences when the Bernstein coefficients change sign once; the
+// The unit window skips Sturm sequences when the Bernstein signs tell the roots; the
 // halves [0, 1/2] and [1/2, 1] never do. Random small coefficients give complex pairs, close
 // roots and roots at the ends, so both must count the same roots.
 TEST(Polynomial, UnitWindowCountsTheRootsOfItsHalves) {
