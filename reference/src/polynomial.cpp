@@ -305,30 +305,63 @@ Poly exact_quotient(const Poly& p, const Poly& g0) {
 
 }  // namespace
 
-// p is the convex combination sum b_i B_i(t) of the Bernstein basis, B_i >= 0 on [0, 1] and
-// sum B_i = 1, with b_i = sum_{j <= i} C(i, j) / C(d, j) a_j (Farouki & Rajan 1988, "Algorithms
-// for polynomials in Bernstein form"). Scaled by d!, the b_i are the integers
-// sum_{j <= i} C(i, j) j! (d - j)! a_j.
-bool no_root_in_unit(const Poly& p) {
-  const int d = p.degree();
-  if (d < 0) return false;
+namespace {
+
+// The sign of p's i-th Bernstein coefficient on [0, 1], for p != 0. p is the convex
+// combination sum b_i B_i(t) of the Bernstein basis, B_i >= 0 on [0, 1] and sum B_i = 1, with
+// b_i = sum_{j <= i} C(i, j) / C(d, j) a_j (Farouki & Rajan 1988, "Algorithms for polynomials
+// in Bernstein form"). Scaled by d!, the b_i are the integers sum_{j <= i} C(i, j) j! (d - j)! a_j.
+int bernstein_sign(const Poly& p, int i) {
   static const long factorial[] = {1, 1, 2, 6, 24};
   static const long binomial[5][5] = {{1}, {1, 1}, {1, 2, 1}, {1, 3, 3, 1}, {1, 4, 6, 4, 1}};
-  int sign = 0;
-  Int b;
-  for (int i = 0; i <= d; ++i) {
-    b = p.c[0];
-    mul(b, b, Int(factorial[d]));
-    for (int j = 1; j <= i; ++j)
-      addmul(b, p.c[j], Int(binomial[i][j] * factorial[j] * factorial[d - j]));
-    const int s = b.sign();
-    if (s == 0 || (sign != 0 && s != sign)) return false;
-    sign = s;
+  const int d = p.degree();
+  thread_local Int b;
+  mul(b, p.c[0], Int(factorial[d]));
+  for (int j = 1; j <= i; ++j)
+    addmul(b, p.c[j], Int(binomial[i][j] * factorial[j] * factorial[d - j]));
+  return b.sign();
+}
+
+// The roots of p in [0, 1] when the signs of its Bernstein coefficients b_i alone tell them
+// (Farouki & Rajan 1988), as Sturm isolation would give them: b_0 = d! p(0), b_d = d! p(1),
+// and B_i > 0 on (0, 1). Nonzero ends with one sign variation: one simple root in (0, 1) (the
+// rule of signs: roots there with multiplicity are at most the variations, of the same
+// parity). b_0 = 0 and no b_i of sign opposite to b_d != 0: p has b_d's sign on (0, 1], the
+// root is 0 alone; mirrored, 1 alone. False if the signs do not tell.
+bool unit_roots_by_signs(const Poly& p, Roots& out) {
+  const int d = p.degree();
+  if (d < 1) return false;
+  InlineVector<int, 5> b;
+  for (int i = 0; i <= d; ++i) b.push_back(bernstein_sign(p, i));
+  if (b[0] == 0 || b[d] == 0) {
+    if (b[0] == b[d]) return false;  // both zero
+    const int other = b[0] == 0 ? b[d] : b[0];
+    for (int x : b)
+      if (x == -other) return false;
+    const Int at(b[0] == 0 ? 0 : 1);
+    out.push_back(Root{&p, at, at, 0});
+    return true;
   }
+  int changes = 0, last = b[0];
+  for (int x : b)
+    if (x != 0 && x != last) ++changes, last = x;
+  if (changes != 1) return false;
+  out.push_back(Root{&p, Int(0), Int(1), 0});
   return true;
 }
 
-Dyadic Dyadic::of(double x) {
+}  // namespace
+
+// All Bernstein coefficients of one strict sign: p has no root in [0, 1].
+bool no_root_in_unit(const Poly& p) {
+  if (p.is_zero()) return false;
+  const int first = p.c[0].sign();
+  for (int i = 0; i <= p.degree(); ++i)
+    if (first == 0 || bernstein_sign(p, i) != first) return false;
+  return true;
+}
+
+Binary Binary::of(double x) {
   if (x == 0) return {};
   // IEEE 754 binary64: x = m 2^e with m the significand (the hidden bit set unless subnormal).
   std::uint64_t bits = 0;
@@ -339,9 +372,13 @@ Dyadic Dyadic::of(double x) {
   if (biased != 0) m |= std::uint64_t(1) << 52, e = biased - 1075;
   const int zeros = __builtin_ctzll(m);  // the fewest bits, so that the integers stay small
   m >>= zeros, e += zeros;
-  const Int a(bits >> 63 ? -long(m) : long(m));
-  if (e <= 0) return {a, unsigned(-e)};
-  return {a << unsigned(e), 0};
+  return {bits >> 63 ? -long(m) : long(m), e};
+}
+
+Dyadic Dyadic::of(double x) {
+  const Binary b = Binary::of(x);
+  if (b.e <= 0) return {Int(b.m), unsigned(-b.e)};
+  return {Int(b.m) << unsigned(b.e), 0};
 }
 
 mpq_class Dyadic::value() const {
@@ -365,6 +402,10 @@ int sign_at(const Poly& p, const Dyadic& t) {
 }
 
 Roots roots_in(Poly& s, const Dyadic& t0, const Dyadic& t1) {
+  // The unit window, when the Bernstein signs tell the roots: no Sturm sequence.
+  Roots by_signs;
+  if (t0.a.is_zero() && t1.k == 0 && t1.a == Int(1) && unit_roots_by_signs(s, by_signs))
+    return by_signs;
   InlineVector<Poly, 5> seq = sturm_sequence(s);
   // The last element is gcd(s, s') up to a factor (a remainder sequence): s is squarefree iff
   // it is a constant. Else the roots are those of s / gcd(s, s'), each simple.

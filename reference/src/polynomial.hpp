@@ -58,6 +58,13 @@ Poly gcd(const Poly& a, const Poly& b);  // primitive, positive leading coeffici
 // one strict sign. A cheap exact test before gcds and Sturm sequences.
 bool no_root_in_unit(const Poly& p);
 
+// A double as m 2^e exactly, m odd (0 = 0 2^0): the fewest bits.
+struct Binary {
+  long m = 0;
+  int e = 0;
+  static Binary of(double x);
+};
+
 // The dyadic number a / 2^k.
 struct Dyadic {
   Int a;

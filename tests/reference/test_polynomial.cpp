@@ -101,6 +101,28 @@ TEST(Polynomial, NoRootInTheUnitIntervalIsNeverWrongAndOftenDecides) {
   EXPECT_GT(decided, without / 2);  // the test is of use, not only safe
 }
 
+// The unit window skips Sturm sequences when the Bernstein signs tell the roots; the
+// halves [0, 1/2] and [1/2, 1] never do. Random small coefficients give complex pairs, close
+// roots and roots at the ends, so both must count the same roots.
+TEST(Polynomial, UnitWindowCountsTheRootsOfItsHalves) {
+  std::mt19937 rng(11);
+  int one_root = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    Coeffs c;
+    for (int i = 0, n = 2 + int(rng() % 4); i < n; ++i) c.push_back(Int(long(rng() % 41) - 20));
+    Poly p(c);
+    if (p.degree() < 1) continue;
+    Poly s = p, s0 = p, s1 = p;
+    const Roots all = roots_in(s, Dyadic::of(0), Dyadic::of(1));
+    const Dyadic half = Dyadic::of(0.5);
+    const Roots left = roots_in(s0, Dyadic::of(0), half), right = roots_in(s1, half, Dyadic::of(1));
+    const bool shared = !left.empty() && left.back().exact() && left.back().lo().value() == 0.5;
+    EXPECT_EQ(all.size(), left.size() + right.size() - shared) << "trial " << trial;
+    one_root += all.size() == 1;
+  }
+  EXPECT_GT(one_root, 300);  // the one-root case is exercised
+}
+
 TEST(Polynomial, DyadicOfADoubleIsExactWithTheFewestBits) {
   for (const double x : {0.0, 1.0, 0.5, -3.75, 0.1, -1e-17, 1e300, -0x1.fffffffffffffp+1023,
                          0x1p-1074, 0x1.8p-1070, 0x1p-1022, 3.0 * 0x1p60, 0x1.c8p-4}) {
