@@ -321,20 +321,25 @@ bool outside(const Query& q, const Piece& p) {
 }
 
 // Whether, by a plain floating-point look, some condition is clearly < 0 in p's middle and at
-// both its ends (the middle first: most often it is not).
+// both its ends (the middle first: most often it is not), clearly meaning below -2^-20 of the
+// largest condition at any of the three: where all are tiny in the middle only (nearly
+// parallel edges there), the intervals over the piece are as wide as at the ends.
 bool negative_throughout(const Query& q, const Piece& p) {
-  const auto negative_at = [&q](double t) {
-    const Conditions<double> c = conditions_at(q, t);
+  const auto size_of = [](const Conditions<double>& c) {
     double size = 0;
     for (int i = 0; i < c.n; ++i) size = std::max(size, std::fabs(c.g[i]));
+    return size;
+  };
+  const auto negative = [](const Conditions<double>& c, double size) {
     unsigned which = 0;
     for (int i = 0; i < c.n; ++i) which |= unsigned(c.g[i] < -0x1p-20 * size) << i;
     return which;
   };
-  unsigned which = negative_at(p.lo + 0.5 * (p.hi - p.lo));
-  if (which != 0) which &= negative_at(p.lo);
-  if (which != 0) which &= negative_at(p.hi);
-  return which != 0;
+  const Conditions<double> mid = conditions_at(q, p.lo + 0.5 * (p.hi - p.lo));
+  if (negative(mid, size_of(mid)) == 0) return false;
+  const Conditions<double> lo = conditions_at(q, p.lo), hi = conditions_at(q, p.hi);
+  const double size = std::max({size_of(mid), size_of(lo), size_of(hi)});
+  return (negative(mid, size) & negative(lo, size) & negative(hi, size)) != 0;
 }
 
 // A piece of [0, 1] that may hold a root of f, kept for later.
