@@ -274,6 +274,58 @@ bool bracket_root(const Bernstein& f, Piece& p, double u) {
   return true;
 }
 
+// Each condition at t with every coordinate difference, product and sum taken in absolute
+// value, each difference first widened by `delta`: with delta = 0 its rounding error is some
+// eps times that; the growth from delta = 2^-49 X (X the largest |coordinate|: what rounding
+// pushes the positions' intervals by) is, to first order, what the intervals widen it by even
+// over a single instant. A condition tiny only because its vectors are short is not noise;
+// one tiny because the edges are nearly parallel (their cross product is noise) is.
+V3<double> abs3(const V3<double>& v, double delta) {
+  return {std::fabs(v.x) + delta, std::fabs(v.y) + delta, std::fabs(v.z) + delta};
+}
+V3<double> cross_abs(const V3<double>& a, const V3<double>& b) {
+  return {a.y * b.z + a.z * b.y, a.z * b.x + a.x * b.z, a.x * b.y + a.y * b.x};
+}
+Conditions<double> magnitudes(const V3<double> x[4], QueryKind kind, double delta) {
+  if (kind == QueryKind::VertexFace) {  // x0 the point, x1 x2 x3 the triangle
+    const V3<double> a = abs3(x[1] - x[0], delta), b = abs3(x[2] - x[0], delta),
+                     c = abs3(x[3] - x[0], delta),
+                     n = cross_abs(abs3(x[2] - x[1], delta), abs3(x[3] - x[1], delta));
+    return {{dot(n, cross_abs(b, c)), dot(n, cross_abs(c, a)), dot(n, cross_abs(a, b))}, 3};
+  }
+  const V3<double> ea = abs3(x[1] - x[0], delta), eb = abs3(x[3] - x[2], delta),
+                   w = abs3(x[2] - x[0], delta), m = cross_abs(ea, eb);
+  const double mm = dot(m, m), s = dot(cross_abs(w, eb), m), u = dot(cross_abs(w, ea), m);
+  return {{s, mm + s, u, mm + u}, 4};
+}
+
+// How wide the intervals of each condition are at t at the least (see magnitudes()).
+Conditions<double> noise_at(const Query& q, double t) {
+  V3<double> x[4];
+  double big = 0;
+  for (int i = 0; i < 4; ++i) {
+    x[i] = at(q.x[i], q.x[i + 4], t);
+    big = std::max({big, std::fabs(x[i].x), std::fabs(x[i].y), std::fabs(x[i].z)});
+  }
+  Conditions<double> wide = magnitudes(x, q.kind, 0x1p-49 * big);
+  const Conditions<double> exact = magnitudes(x, q.kind, 0);
+  for (int i = 0; i < wide.n; ++i) wide.g[i] = wide.g[i] - exact.g[i] + 0x1p-48 * exact.g[i];
+  return wide;
+}
+
+// Whether intervals at the instant t could settle anything, by a plain look against the
+// noise (noise_at): 1 if every condition is above it (inside), -1 if some is below minus it
+// (outside), 0 if neither, where the intervals would almost surely fail as well.
+int beyond_noise(const Query& q, double t) {
+  const Conditions<double> c = conditions_at(q, t), noise = noise_at(q, t);
+  bool inside = true;
+  for (int i = 0; i < c.n; ++i) {
+    if (c.g[i] < -noise.g[i]) return -1;
+    inside &= c.g[i] > noise.g[i];
+  }
+  return inside ? 1 : 0;
+}
+
 // True if intervals of width about 2 w around t would certainly fail: no condition keeps one
 // sign clearly (its value at t more than four times its change from t - w to t + w, roughly
 // what the intervals widen it by) where it is < 0, and some condition does not where it is > 0.
@@ -335,11 +387,16 @@ bool negative_throughout(const Query& q, const Piece& p) {
     for (int i = 0; i < c.n; ++i) which |= unsigned(c.g[i] < -0x1p-20 * size) << i;
     return which;
   };
-  const Conditions<double> mid = conditions_at(q, p.lo + 0.5 * (p.hi - p.lo));
-  if (negative(mid, size_of(mid)) == 0) return false;
+  const double t = p.lo + 0.5 * (p.hi - p.lo);
+  const Conditions<double> mid = conditions_at(q, t);
+  unsigned which = negative(mid, size_of(mid));
+  if (which == 0) return false;
+  const Conditions<double> noise = noise_at(q, t);
+  for (int i = 0; i < mid.n; ++i) which &= ~(unsigned(-mid.g[i] <= noise.g[i]) << i);
+  if (which == 0) return false;
   const Conditions<double> lo = conditions_at(q, p.lo), hi = conditions_at(q, p.hi);
   const double size = std::max({size_of(mid), size_of(lo), size_of(hi)});
-  return (negative(mid, size) & negative(lo, size) & negative(hi, size)) != 0;
+  return (which & negative(lo, size) & negative(hi, size)) != 0;
 }
 
 // A piece of [0, 1] that may hold a root of f, kept for later.
@@ -417,6 +474,7 @@ Filtered settle_end(const Query& q, const Piece& p, double end, bool contact_onl
   if (look.hopeless(0x1p-40) || (contact_only && look.lowest <= 0x1p-20) ||
       ++evaluations > kMaxEvaluations)
     return Filtered::Uncertain;
+  if (beyond_noise(q, end) == 0) return Filtered::Uncertain;
   const Conditions<Interval> c = conditions_at(q, Interval{end, end});
   bool out = false, inside = true;
   for (int i = 0; i < c.n; ++i) out |= c.g[i].negative(), inside &= c.g[i].positive();
