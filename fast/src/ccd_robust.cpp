@@ -389,14 +389,14 @@ bool negative_throughout(const Query& q, const Piece& p) {
   };
   const double t = p.lo + 0.5 * (p.hi - p.lo);
   const Conditions<double> mid = conditions_at(q, t);
-  unsigned which = negative(mid, size_of(mid));
-  if (which == 0) return false;
-  const Conditions<double> noise = noise_at(q, t);
-  for (int i = 0; i < mid.n; ++i) which &= ~(unsigned(-mid.g[i] <= noise.g[i]) << i);
-  if (which == 0) return false;
+  if (negative(mid, size_of(mid)) == 0) return false;
   const Conditions<double> lo = conditions_at(q, p.lo), hi = conditions_at(q, p.hi);
   const double size = std::max({size_of(mid), size_of(lo), size_of(hi)});
-  return (which & negative(lo, size) & negative(hi, size)) != 0;
+  unsigned which = negative(mid, size) & negative(lo, size) & negative(hi, size);
+  if (which == 0) return false;  // the noise last: it costs two looks
+  const Conditions<double> noise = noise_at(q, t);
+  for (int i = 0; i < mid.n; ++i) which &= ~(unsigned(-mid.g[i] <= noise.g[i]) << i);
+  return which != 0;
 }
 
 // A piece of [0, 1] that may hold a root of f, kept for later.
@@ -468,9 +468,9 @@ bool cut_sliver(const Query& q, const Piece& p, double end, const Conditions<Int
 // on a sliver of the piece at that end (cut_sliver); the rest is pushed back for the search,
 // unless only a contact is asked for (a piece where f is flat throughout: the rest would be no
 // better). Otherwise uncertain.
-Filtered settle_end(const Query& q, const Piece& p, double end, bool contact_only, Stack& stack,
-                    int& evaluations) {
-  const Look look = look_at(q, end);
+// `look` is look_at(q, end).
+Filtered settle_end(const Query& q, const Piece& p, double end, const Look& look, bool contact_only,
+                    Stack& stack, int& evaluations) {
   if (look.hopeless(0x1p-40) || (contact_only && look.lowest <= 0x1p-20) ||
       ++evaluations > kMaxEvaluations)
     return Filtered::Uncertain;
@@ -482,6 +482,12 @@ Filtered settle_end(const Query& q, const Piece& p, double end, bool contact_onl
   if (!out || contact_only || p.depth == Stack::kMaxDepth || ++evaluations > kMaxEvaluations)
     return Filtered::Uncertain;
   return cut_sliver(q, p, end, c, stack, evaluations) ? Filtered::No : Filtered::Uncertain;
+}
+
+// 0 or 1 if f's sign is uncertain at that end of [0, 1] and p reaches it (0 first), else -1.
+int open_end(const Piece& p, double err) {
+  if (p.lo == 0 && sign_beyond(p.b[0], err) == 0) return 0;
+  return p.hi == 1 && sign_beyond(p.b[3], err) == 0 ? 1 : -1;
 }
 
 // Stage 2: isolate the roots of f in [0, 1] by Bernstein subdivision (a piece whose
@@ -499,6 +505,12 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
     const int v = variations(p, err);
     if (v == 0) continue;  // one certain sign: no root here
     if (v < 0) {
+      // f's sign uncertain at t = 0 or 1 (see below): where a condition is about 0 there and
+      // none clearly < 0, settle_end gives up, and none is clearly < 0 throughout either (the
+      // test below would look at that end too): given up at once, one look sooner.
+      const int end = open_end(p, err);
+      const Look look = end < 0 ? Look{} : look_at(q, end);
+      if (end >= 0 && look.hopeless(0x1p-40)) return Filtered::Uncertain;
       // f's sign is uncertain somewhere here (f may even vanish throughout, as for a cube
       // sliding on a plane): a condition certainly < 0 over the whole piece still excludes it.
       // Only where some condition is clearly < 0 at both ends and in the middle: else none is
@@ -514,9 +526,8 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
       // (coplanar motion that starts or ends inside the triangle): settle_end, for a yes only.
       const bool is_flat = flat(p, err);
       if (is_flat && p.lo != 0 && p.hi != 1) return Filtered::Uncertain;
-      const bool open_start = p.lo == 0 && sign_beyond(p.b[0], err) == 0;
-      if (open_start || (p.hi == 1 && sign_beyond(p.b[3], err) == 0)) {
-        const Filtered r = settle_end(q, p, open_start ? 0 : 1, is_flat, stack, evaluations);
+      if (end >= 0) {
+        const Filtered r = settle_end(q, p, end, look, is_flat, stack, evaluations);
         if (r != Filtered::No) return r;
         continue;
       }
