@@ -299,15 +299,19 @@ Conditions<double> magnitudes(const V3<double> x[4], QueryKind kind, double delt
   return {{s, mm + s, u, mm + u}, 4};
 }
 
-// How wide the intervals of each condition are at t at the least (see magnitudes()).
-Conditions<double> noise_at(const Query& q, double t) {
+// How wide the intervals of each condition are at t at the least (see magnitudes()); with
+// `half` > 0, roughly how wide over [t - half, t + half]: each difference of positions then
+// spread by 2 half times the largest |motion| of a coordinate.
+Conditions<double> noise_at(const Query& q, double t, double half = 0) {
   V3<double> x[4];
-  double big = 0;
+  double big = 0, motion = 0;
   for (int i = 0; i < 4; ++i) {
     x[i] = at(q.x[i], q.x[i + 4], t);
     big = std::max({big, std::fabs(x[i].x), std::fabs(x[i].y), std::fabs(x[i].z)});
+    const Vec3 d = q.x[i + 4] - q.x[i];
+    motion = std::max({motion, std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
   }
-  Conditions<double> wide = magnitudes(x, q.kind, 0x1p-49 * big);
+  Conditions<double> wide = magnitudes(x, q.kind, 0x1p-49 * big + 2 * half * motion);
   const Conditions<double> exact = magnitudes(x, q.kind, 0);
   for (int i = 0; i < wide.n; ++i) wide.g[i] = wide.g[i] - exact.g[i] + 0x1p-48 * exact.g[i];
   return wide;
@@ -375,8 +379,9 @@ bool outside(const Query& q, const Piece& p) {
 // Whether, by a plain floating-point look, some condition is clearly < 0 in p's middle and at
 // both its ends (the middle first: most often it is not), clearly meaning below -2^-20 of the
 // largest condition at any of the three: where all are tiny in the middle only (nearly
-// parallel edges there), the intervals over the piece are as wide as at the ends.
-bool negative_throughout(const Query& q, const Piece& p) {
+// parallel edges there), the intervals over the piece are as wide as at the ends; and in the
+// middle below minus its noise (noise_at), spread over `spread` of the piece on either side.
+bool negative_throughout(const Query& q, const Piece& p, double spread) {
   const auto size_of = [](const Conditions<double>& c) {
     double size = 0;
     for (int i = 0; i < c.n; ++i) size = std::max(size, std::fabs(c.g[i]));
@@ -394,7 +399,7 @@ bool negative_throughout(const Query& q, const Piece& p) {
   const double size = std::max({size_of(mid), size_of(lo), size_of(hi)});
   unsigned which = negative(mid, size) & negative(lo, size) & negative(hi, size);
   if (which == 0) return false;  // the noise last: it costs two looks
-  const Conditions<double> noise = noise_at(q, t);
+  const Conditions<double> noise = noise_at(q, t, spread * (p.hi - p.lo));
   for (int i = 0; i < mid.n; ++i) which &= ~(unsigned(-mid.g[i] <= noise.g[i]) << i);
   return which != 0;
 }
@@ -515,7 +520,14 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
       // sliding on a plane): a condition certainly < 0 over the whole piece still excludes it.
       // Only where some condition is clearly < 0 at both ends and in the middle: else none is
       // < 0 throughout, or the intervals would be too wide to show it.
-      if (negative_throughout(q, p)) {
+      // Where nothing else could decide (f flat on the piece, and settle_end would give up at
+      // its end), the intervals over the piece are paid for only where the condition in the
+      // middle clears their rough width over the middle quarter: on the sliding-on-edge and
+      // coplanar families these evaluations almost all fail, and a few decisions are lost.
+      const bool is_flat = flat(p, err);
+      const bool last_chance =
+          is_flat && (end < 0 ? p.lo != 0 && p.hi != 1 : look.lowest <= 0x1p-20);
+      if (negative_throughout(q, p, last_chance ? 0.125 : 0)) {
         if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
         if (outside(q, p)) continue;
       }
@@ -524,7 +536,6 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
       // its first or last one is uncertain there: settle_end decides what it can.
       // Where it is flat at t = 0 or 1 too, a contact right there is still worth a look
       // (coplanar motion that starts or ends inside the triangle): settle_end, for a yes only.
-      const bool is_flat = flat(p, err);
       if (is_flat && p.lo != 0 && p.hi != 1) return Filtered::Uncertain;
       if (end >= 0) {
         const Filtered r = settle_end(q, p, end, look, is_flat, stack, evaluations);
