@@ -187,7 +187,9 @@ class Search {
   }
   // The roots in [t0, t1] common to `zeros` (not all zero), increasing.
   algebra::Roots common_roots(std::initializer_list<const Poly*> zeros) {
-    if (unit_window_)  // one of them without roots there: the common case, decided cheaply
+    // One of them without roots there: the common case, decided cheaply (roots_in's own
+    // Bernstein test decides it for one polynomial).
+    if (unit_window_ && zeros.size() > 1)
       for (const Poly* z : zeros)
         if (algebra::no_root_in_unit(*z)) return {};
     Poly g = **zeros.begin();
