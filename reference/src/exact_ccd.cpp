@@ -187,13 +187,25 @@ class Search {
   }
   // The roots in [t0, t1] common to `zeros` (not all zero), increasing.
   algebra::Roots common_roots(std::initializer_list<const Poly*> zeros) {
-    if (unit_window_)  // one of them without roots there: the common case, decided cheaply
+    // One of them without roots there: the common case, decided cheaply (roots_in's own
+    // Bernstein test decides it for one polynomial).
+    if (unit_window_ && zeros.size() > 1)
       for (const Poly* z : zeros)
         if (algebra::no_root_in_unit(*z)) return {};
-    Poly g = **zeros.begin();
-    for (const Poly* z : zeros) {
+    // The gcd from the lowest degree up, zeros skipped (gcd(g, 0) = g): the fewest remainders.
+    std::array<const Poly*, 3> order{};
+    std::size_t n = 0;
+    for (const Poly* z : zeros)  // insertion by degree
+      if (!z->is_zero()) {
+        std::size_t i = n++;
+        for (; i > 0 && order[i - 1]->degree() > z->degree(); --i) order[i] = order[i - 1];
+        order[i] = z;
+      }
+    if (n == 0) return {};
+    Poly g = *order[0];
+    for (std::size_t i = 1; i < n; ++i) {
       if (g.degree() == 0) return {};  // a nonzero constant divides everything after it
-      if (z != *zeros.begin()) g = algebra::gcd(g, *z);
+      g = algebra::gcd(g, *order[i]);
     }
     if (g.degree() < 1) return {};
     keep_.push_back(std::move(g));

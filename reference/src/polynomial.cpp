@@ -307,46 +307,75 @@ Poly exact_quotient(const Poly& p, const Poly& g0) {
 
 namespace {
 
-// The sign of p's i-th Bernstein coefficient on [0, 1], for p != 0. p is the convex
+// p's Bernstein coefficients on [0, 1] scaled by d! > 0, for p != 0. p is the convex
 // combination sum b_i B_i(t) of the Bernstein basis, B_i >= 0 on [0, 1] and sum B_i = 1, with
 // b_i = sum_{j <= i} C(i, j) / C(d, j) a_j (Farouki & Rajan 1988, "Algorithms for polynomials
 // in Bernstein form"). Scaled by d!, the b_i are the integers sum_{j <= i} C(i, j) j! (d - j)! a_j.
-int bernstein_sign(const Poly& p, int i) {
+Coeffs bernstein(const Poly& p) {
   static const long factorial[] = {1, 1, 2, 6, 24};
   static const long binomial[5][5] = {{1}, {1, 1}, {1, 2, 1}, {1, 3, 3, 1}, {1, 4, 6, 4, 1}};
   const int d = p.degree();
-  thread_local Int b;
-  mul(b, p.c[0], Int(factorial[d]));
-  for (int j = 1; j <= i; ++j)
-    addmul(b, p.c[j], Int(binomial[i][j] * factorial[j] * factorial[d - j]));
-  return b.sign();
+  Coeffs b(p.c.size());
+  for (int i = 0; i <= d; ++i) {
+    mul(b[i], p.c[0], Int(factorial[d]));
+    for (int j = 1; j <= i; ++j)
+      addmul(b[i], p.c[j], Int(binomial[i][j] * factorial[j] * factorial[d - j]));
+  }
+  return b;
 }
 
-// The roots of p in [0, 1] when the signs of its Bernstein coefficients b_i alone tell them
-// (Farouki & Rajan 1988), as Sturm isolation would give them: b_0 = d! p(0), b_d = d! p(1),
-// and B_i > 0 on (0, 1). Nonzero ends with one sign variation: one simple root in (0, 1) (the
-// rule of signs: roots there with multiplicity are at most the variations, of the same
-// parity). b_0 = 0 and no b_i of sign opposite to b_d != 0: p has b_d's sign on (0, 1], the
-// root is 0 alone; mirrored, 1 alone. False if the signs do not tell.
-bool unit_roots_by_signs(const Poly& p, Roots& out) {
-  const int d = p.degree();
-  if (d < 1) return false;
-  InlineVector<int, 5> b;
-  for (int i = 0; i <= d; ++i) b.push_back(bernstein_sign(p, i));
-  if (b[0] == 0 || b[d] == 0) {
-    if (b[0] == b[d]) return false;  // both zero
-    const int other = b[0] == 0 ? b[d] : b[0];
-    for (int x : b)
-      if (x == -other) return false;
-    const Int at(b[0] == 0 ? 0 : 1);
-    out.push_back(Root{&p, at, at, 0});
+// Root isolation on the Bernstein form by integer de Casteljau bisection (Farouki & Rajan
+// 1988): on [a, a + 1] / 2^k, p is sum b_i B_i with B_i > 0 inside, b_0 and b_d its values at
+// the ends (up to one positive factor). By the rule of signs, the roots inside, counted with
+// multiplicity, are at most the sign variations of the b_i, of the same parity: none without
+// variations; one simple root with one variation and nonzero ends (so p changes sign across).
+// A zero end coefficient is a root at that end: dropping it leaves the signs of p / (t - end).
+struct BernsteinIsolator {
+  const Poly& s;
+  Roots out;
+  // Appends the roots in (a, a + 1] / 2^k, increasing; false if that takes too many halvings
+  // (a multiple root or roots closer than 2^-max_k): then Sturm decides.
+  bool isolate(const Coeffs& b, const Int& a, unsigned long k) {
+    static constexpr unsigned long max_k = 6;
+    const int d = int(b.size()) - 1;
+    int changes = 0, last = 0;
+    for (const Int& x : b)
+      if (const int sx = x.sign(); sx != 0) changes += last != 0 && sx != last, last = sx;
+    if (changes == 1 && !b[0].is_zero() && !b[d].is_zero()) {
+      out.push_back(Root{&s, a, a + Int(1), k});
+    } else if (changes > 0) {  // halve: the left half ends at the midpoint, the right at ours
+      if (k >= max_k) return false;
+      Coeffs left(b.size()), right(b.size());
+      halves(b, left, right);
+      const Int a2 = a << 1;
+      return isolate(left, a2, k + 1) && isolate(right, a2 + Int(1), k + 1);
+    }
+    if (b[d].is_zero()) out.push_back(Root{&s, a + Int(1), a + Int(1), k});
     return true;
   }
-  int changes = 0, last = b[0];
-  for (int x : b)
-    if (x != 0 && x != last) ++changes, last = x;
-  if (changes != 1) return false;
-  out.push_back(Root{&p, Int(0), Int(1), 0});
+  // The Bernstein coefficients on both halves, scaled by 2^d (de Casteljau at 1/2 on sums).
+  static void halves(const Coeffs& b, Coeffs& left, Coeffs& right) {
+    const int d = int(b.size()) - 1;
+    Coeffs row = b;  // row r holds 2^r times de Casteljau's r-th row
+    for (int r = 0;; ++r) {
+      mul_2exp(left[r], row[0], unsigned(d - r));
+      mul_2exp(right[d - r], row[d - r], unsigned(d - r));
+      if (r == d) break;
+      for (int i = 0; i + r < d; ++i) add(row[i], row[i], row[i + 1]);
+    }
+  }
+};
+
+// The roots of p in [0, 1] by Bernstein bisection, as Sturm isolation would give them (each
+// exact or simple in its interval, so p needs no squarefree part); false if that does not
+// finish (BernsteinIsolator).
+bool unit_roots_by_bernstein(const Poly& p, Roots& out) {
+  if (p.degree() < 1) return false;
+  const Coeffs b = bernstein(p);
+  BernsteinIsolator iso{p, {}};
+  if (b[0].is_zero()) iso.out.push_back(Root{&p, Int(0), Int(0), 0});
+  if (!iso.isolate(b, Int(0), 0)) return false;
+  out = std::move(iso.out);
   return true;
 }
 
@@ -354,10 +383,10 @@ bool unit_roots_by_signs(const Poly& p, Roots& out) {
 
 // All Bernstein coefficients of one strict sign: p has no root in [0, 1].
 bool no_root_in_unit(const Poly& p) {
-  if (p.is_zero()) return false;
+  if (p.is_zero() || p.c[0].is_zero()) return false;
   const int first = p.c[0].sign();
-  for (int i = 0; i <= p.degree(); ++i)
-    if (first == 0 || bernstein_sign(p, i) != first) return false;
+  for (const Int& b : bernstein(p))
+    if (b.sign() != first) return false;
   return true;
 }
 
@@ -402,9 +431,9 @@ int sign_at(const Poly& p, const Dyadic& t) {
 }
 
 Roots roots_in(Poly& s, const Dyadic& t0, const Dyadic& t1) {
-  // The unit window, when the Bernstein signs tell the roots: no Sturm sequence.
+  // The unit window: Bernstein bisection mostly finishes, without a Sturm sequence.
   Roots by_signs;
-  if (t0.a.is_zero() && t1.k == 0 && t1.a == Int(1) && unit_roots_by_signs(s, by_signs))
+  if (t0.a.is_zero() && t1.k == 0 && t1.a == Int(1) && unit_roots_by_bernstein(s, by_signs))
     return by_signs;
   InlineVector<Poly, 5> seq = sturm_sequence(s);
   // The last element is gcd(s, s') up to a factor (a remainder sequence): s is squarefree iff

@@ -1,7 +1,7 @@
 // Univariate polynomials in the time t with integer coefficients, and their real roots in a
-// dyadic window: isolated by Sturm sequences, refined by bisection, with the exact sign of any
-// other polynomial at a root. The algebra behind the exact CCD (exact_ccd.cpp); private to
-// reference/.
+// dyadic window: isolated by Bernstein bisection on [0, 1] or Sturm sequences, refined by
+// bisection, with the exact sign of any other polynomial at a root. The algebra behind the
+// exact CCD (exact_ccd.cpp); private to reference/.
 //
 // Integers only: the query's doubles are scaled by one power of two into integers, every
 // polynomial then has integer coefficients, every point where we evaluate is dyadic (a / 2^k),

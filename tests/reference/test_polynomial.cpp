@@ -101,9 +101,10 @@ TEST(Polynomial, NoRootInTheUnitIntervalIsNeverWrongAndOftenDecides) {
   EXPECT_GT(decided, without / 2);  // the test is of use, not only safe
 }
 
-// The unit window skips Sturm sequences when the Bernstein signs tell the roots; the
-// halves [0, 1/2] and [1/2, 1] never do. Random small coefficients give complex pairs, close
-// roots and roots at the ends, so both must count the same roots.
+// The unit window isolates by Bernstein bisection (Sturm only when that does not finish); the
+// halves [0, 1/2] and [1/2, 1] always use Sturm sequences. Random small coefficients give
+// complex pairs, close and double roots and roots at the ends (and at 1/2, where bisection
+// splits), so both must count the same roots, and p must change sign across each interval.
 TEST(Polynomial, UnitWindowCountsTheRootsOfItsHalves) {
   std::mt19937 rng(11);
   int one_root = 0;
@@ -118,6 +119,11 @@ TEST(Polynomial, UnitWindowCountsTheRootsOfItsHalves) {
     const Roots left = roots_in(s0, Dyadic::of(0), half), right = roots_in(s1, half, Dyadic::of(1));
     const bool shared = !left.empty() && left.back().exact() && left.back().lo().value() == 0.5;
     EXPECT_EQ(all.size(), left.size() + right.size() - shared) << "trial " << trial;
+    for (const Root& r : all) {
+      if (!r.exact()) {
+        EXPECT_LT(sign_at(p, r.lo()) * sign_at(p, r.hi()), 0) << "trial " << trial;
+      }
+    }
     one_root += all.size() == 1;
   }
   EXPECT_GT(one_root, 300);  // the one-root case is exercised

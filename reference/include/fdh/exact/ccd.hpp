@@ -5,12 +5,13 @@
 // whole step, triangles or edges of zero size at some time, no motion at all.
 //
 // The algebra (docs/methods.md): contact needs coplanarity, a cubic in t. If the cubic is not
-// identically zero, only its roots in [0, 1] can be contacts; they are isolated by Sturm
-// sequences and the inside test is decided by exact signs at each root. If it is identically
-// zero, the first contact is at the start or where a vertex meets an edge, and the same
-// reasoning recurses to point-edge and point-point problems. Exact integers throughout: machine
-// integers while they fit, GMP's mpn layer on limbs kept inline beyond: heap allocation only for
-// integers beyond 768 bits (reference/src/integer.hpp, inline_vector.hpp).
+// identically zero, only its roots in [0, 1] can be contacts; they are isolated by Bernstein
+// bisection (Sturm sequences where that does not finish) and the inside test is decided by
+// exact signs at each root. If it is identically zero, the first contact is at the start or where a
+// vertex meets an edge, and the same reasoning recurses to point-edge and point-point problems.
+// Exact integers throughout: machine integers while they fit, GMP's mpn layer on limbs kept inline
+// beyond: heap allocation only for integers beyond 768 bits (reference/src/integer.hpp,
+// inline_vector.hpp).
 #pragma once
 
 #include <string>
