@@ -32,12 +32,11 @@ std::vector<Vec3> rest_positions(const ClothSpec& spec) {
 Cloth::Cloth(const ClothSpec& spec)
     : grid_(check_grid(spec.grid)),
       spec_(spec),
-      springs_by_family_(grid_, rest_positions(spec), spec.k_structural, spec.k_shear,
-                         spec.k_bend) {
+      x_(rest_positions(spec)),
+      springs_by_family_(grid_, x_, spec.k_structural, spec.k_shear, spec.k_bend) {
   const int n = grid_ * grid_;
   m_ = spec.mass / n;
   spacing_ = spec.size / (grid_ - 1);
-  x_ = rest_positions(spec);
   v_.assign(n, Vec3{});
   pinned_.assign(n, 0);
   k_sum_.assign(n, 0);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace fdh::cloth {
 
@@ -79,16 +80,13 @@ void GridSprings::finish(double* fx, double* fy, double* fz, int row_begin, int 
   const int g = grid_, i = row_begin * g, m = (row_end - row_begin) * g;
   // Where no spring of a family ends, the pull read is one of its zeros (padding, a particle
   // where none starts, or a family without springs): subtracting it changes nothing.
-  const auto ends = [&](int f, const std::vector<double>& q) {
-    return &q[pad() - (families_[f].dr * g + families_[f].dc) + i];
+  const auto ends = [&](int f, std::vector<double> Family::*q) {
+    return &(families_[f].*q)[pad() - (families_[f].dr * g + families_[f].dc) + i];
   };
-  const auto& F = families_;
-  subtract_six(m, ends(0, F[0].px), ends(1, F[1].px), ends(2, F[2].px), ends(3, F[3].px),
-               ends(4, F[4].px), ends(5, F[5].px), fx + i);
-  subtract_six(m, ends(0, F[0].py), ends(1, F[1].py), ends(2, F[2].py), ends(3, F[3].py),
-               ends(4, F[4].py), ends(5, F[5].py), fy + i);
-  subtract_six(m, ends(0, F[0].pz), ends(1, F[1].pz), ends(2, F[2].pz), ends(3, F[3].pz),
-               ends(4, F[4].pz), ends(5, F[5].pz), fz + i);
+  const std::pair<std::vector<double> Family::*, double*> coordinates[] = {
+      {&Family::px, fx}, {&Family::py, fy}, {&Family::pz, fz}};
+  for (const auto& [q, f] : coordinates)
+    subtract_six(m, ends(0, q), ends(1, q), ends(2, q), ends(3, q), ends(4, q), ends(5, q), f + i);
 }
 
 }  // namespace fdh::cloth

@@ -122,9 +122,7 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
     for_chunks(n, 4096, [&](int begin, int end) {
       for (int i = begin; i < end; ++i) {
         const double ma = max_abs(x0[i]), mb = max_abs(x1[i]);
-        const double w = widening_of(ma > mb ? ma : mb);
-        set_point(particle_box[i], x0[i], w);
-        add_point(particle_box[i], x1[i], w);
+        set_segment(particle_box[i], x0[i], x1[i], widening_of(ma > mb ? ma : mb));
         const Kdop<K>& b = particle_box[i];  // slabs 0-2 are x, y and z for every k
         particle_aabb[i] = {{b.lo[0], b.lo[1], b.lo[2]}, {b.hi[0], b.hi[1], b.hi[2]}};
       }
@@ -148,7 +146,8 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
     const auto cells = [&](int i) {
       return (nodes[i].r1 - nodes[i].r0) * (nodes[i].c1 - nodes[i].c0);
     };
-    std::vector<std::pair<int, int>> stack = {{a, b}};
+    thread_local std::vector<std::pair<int, int>> stack;  // one per thread: no allocation per task
+    stack.assign(1, {a, b});
     while (!stack.empty()) {
       const auto [i, j] = stack.back();
       stack.pop_back();

@@ -23,10 +23,6 @@ struct Simulation::BroadPhase {
   virtual void pairs(std::vector<std::pair<int, int>>& out) = 0;
 };
 
-// Below this many cloth nodes (a cloth of about 90x90 particles) the refit and the traversal
-// stay on the calling thread.
-constexpr std::size_t kParallelNodes = 1 << 14;
-
 template <int K>
 struct Simulation::BroadPhaseK : Simulation::BroadPhase {
   Bvh<K> cloth, obstacles;
@@ -34,9 +30,7 @@ struct Simulation::BroadPhaseK : Simulation::BroadPhase {
   std::vector<std::vector<std::pair<int, int>>> parts;
 
   BroadPhaseK(const std::vector<Vec3>& x, const TriMesh& mesh)
-      : cloth(point_prims(int(x.size())), x),
-        obstacles(mesh.tris, mesh.x),
-        order(cloth.nodes(), kParallelNodes) {}
+      : cloth(point_prims(int(x.size())), x), obstacles(mesh.tris, mesh.x), order(cloth.nodes()) {}
   void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) override {
     const double w = Bvh<K>::widening(x0, x1);
     order.run([&](int i) { cloth.refit_node(i, x0, x1, w); });

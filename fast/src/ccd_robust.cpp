@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "fdh/interval.hpp"
 #include "fdh/orient3d_exact.hpp"
@@ -138,10 +139,16 @@ struct Look {
   double near_zero = 0;  // min |g_i| / size: about 0 where below it
   bool hopeless(double width) const { return near_zero <= width && lowest >= -width; }
 };
-Look look_at(const Query& q, double t) {
-  const Conditions<double> c = conditions_at(q, t);
+// The largest |g_i|.
+double size_of(const Conditions<double>& c) {
   double size = 0;
   for (int i = 0; i < c.n; ++i) size = std::max(size, std::fabs(c.g[i]));
+  return size;
+}
+
+Look look_at(const Query& q, double t) {
+  const Conditions<double> c = conditions_at(q, t);
+  const double size = size_of(c);
   if (!(size > 0)) return {0, 0};  // all 0 (parallel edges, a point triangle): hopeless
   Look look{1, 1};
   for (int i = 0; i < c.n; ++i) {
@@ -205,6 +212,17 @@ Conditions<Interval> conditions(const Query& q, const Piece& p) {
   return conditions_at(q, Interval{p.lo - 2 * p.slack, p.hi + 2 * p.slack});
 }
 
+// What the intervals make certain: some g_i < 0 (out: no contact there), every g_i > 0 (inside:
+// a contact, given coplanarity).
+struct Signs {
+  bool out = false, inside = true;
+};
+Signs certain_signs(const Conditions<Interval>& c) {
+  Signs r;
+  for (int i = 0; i < c.n; ++i) r.out |= c.g[i].negative(), r.inside &= c.g[i].positive();
+  return r;
+}
+
 // Interval evaluations of the conditions allowed per query. One costs some ten times the whole
 // first stage, and a query that needs more (f zero or nearly so for a long time: coplanar
 // motion) almost never gets decided by them: it goes to the exact test sooner.
@@ -266,9 +284,8 @@ bool bracket_root(const Bernstein& f, Piece& p, double u) {
   if (!(s2 > 0 && s2 < 1)) return false;
   split(right, s2, mid, rest);
   const double err = bound(f, mid.depth), err_p = bound(f, p.depth);
-  if (sign_beyond(mid.b[0], err) != sign_beyond(p.b[0], err_p) ||
-      sign_beyond(mid.b[3], err) != sign_beyond(p.b[3], err_p) || sign_beyond(mid.b[0], err) == 0 ||
-      sign_beyond(mid.b[3], err) == 0)
+  const int s0 = sign_beyond(mid.b[0], err), s3 = sign_beyond(mid.b[3], err);
+  if (s0 == 0 || s3 == 0 || s0 != sign_beyond(p.b[0], err_p) || s3 != sign_beyond(p.b[3], err_p))
     return false;
   p = mid;
   return true;
@@ -362,18 +379,13 @@ Filtered contact_at_root(const Query& q, const Bernstein& f, Piece p, int& evalu
     while (p.hi - p.lo > 0x1p-32 && halve_at_root(f, p)) {
     }
   if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
-  const Conditions<Interval> c = conditions(q, p);
-  bool outside = false, inside = true;
-  for (int i = 0; i < c.n; ++i) outside |= c.g[i].negative(), inside &= c.g[i].positive();
-  return outside ? Filtered::No : (inside ? Filtered::Yes : Filtered::Uncertain);
+  const Signs c = certain_signs(conditions(q, p));
+  return c.out ? Filtered::No : (c.inside ? Filtered::Yes : Filtered::Uncertain);
 }
 
 // True if some condition is certainly < 0 over the whole piece: no contact in it, whatever f.
 bool outside(const Query& q, const Piece& p) {
-  const Conditions<Interval> c = conditions(q, p);
-  bool out = false;
-  for (int i = 0; i < c.n; ++i) out |= c.g[i].negative();
-  return out;
+  return certain_signs(conditions(q, p)).out;
 }
 
 // Whether, by a plain floating-point look, some condition is clearly < 0 in p's middle and at
@@ -382,11 +394,6 @@ bool outside(const Query& q, const Piece& p) {
 // parallel edges there), the intervals over the piece are as wide as at the ends; and in the
 // middle below minus its noise (noise_at), spread over `spread` of the piece on either side.
 bool negative_throughout(const Query& q, const Piece& p, double spread) {
-  const auto size_of = [](const Conditions<double>& c) {
-    double size = 0;
-    for (int i = 0; i < c.n; ++i) size = std::max(size, std::fabs(c.g[i]));
-    return size;
-  };
   const auto negative = [](const Conditions<double>& c, double size) {
     unsigned which = 0;
     for (int i = 0; i < c.n; ++i) which |= unsigned(c.g[i] < -0x1p-20 * size) << i;
@@ -476,15 +483,15 @@ bool cut_sliver(const Query& q, const Piece& p, double end, const Conditions<Int
 // `look` is look_at(q, end).
 Filtered settle_end(const Query& q, const Piece& p, double end, const Look& look, bool contact_only,
                     Stack& stack, int& evaluations) {
-  if (look.hopeless(0x1p-40) || (contact_only && look.lowest <= 0x1p-20) ||
-      ++evaluations > kMaxEvaluations)
+  // (look.hopeless(0x1p-40) was settled by the caller.)
+  if ((contact_only && look.lowest <= 0x1p-20) || ++evaluations > kMaxEvaluations)
     return Filtered::Uncertain;
   if (beyond_noise(q, end) == 0) return Filtered::Uncertain;
   const Conditions<Interval> c = conditions_at(q, Interval{end, end});
-  bool out = false, inside = true;
-  for (int i = 0; i < c.n; ++i) out |= c.g[i].negative(), inside &= c.g[i].positive();
-  if (inside) return exactly_coplanar(&q.x[end == 0 ? 0 : 4]) ? Filtered::Yes : Filtered::Uncertain;
-  if (!out || contact_only || p.depth == Stack::kMaxDepth || ++evaluations > kMaxEvaluations)
+  const Signs signs = certain_signs(c);
+  if (signs.inside)
+    return exactly_coplanar(&q.x[end == 0 ? 0 : 4]) ? Filtered::Yes : Filtered::Uncertain;
+  if (!signs.out || contact_only || p.depth == Stack::kMaxDepth || ++evaluations > kMaxEvaluations)
     return Filtered::Uncertain;
   return cut_sliver(q, p, end, c, stack, evaluations) ? Filtered::No : Filtered::Uncertain;
 }
@@ -493,6 +500,40 @@ Filtered settle_end(const Query& q, const Piece& p, double end, const Look& look
 int open_end(const Piece& p, double err) {
   if (p.lo == 0 && sign_beyond(p.b[0], err) == 0) return 0;
   return p.hi == 1 && sign_beyond(p.b[3], err) == 0 ? 1 : -1;
+}
+
+// A piece where f's sign is uncertain (v < 0): No if it holds no contact (drop it), Yes or
+// Uncertain for the whole query, none to split it further.
+std::optional<Filtered> uncertain_piece(const Query& q, const Piece& p, double err, Stack& stack,
+                                        int& evaluations) {
+  // f's sign uncertain at t = 0 or 1 (see below): where a condition is about 0 there and
+  // none clearly < 0, settle_end gives up, and none is clearly < 0 throughout either (the
+  // test below would look at that end too): given up at once, one look sooner.
+  const int end = open_end(p, err);
+  const Look look = end < 0 ? Look{} : look_at(q, end);
+  if (end >= 0 && look.hopeless(0x1p-40)) return Filtered::Uncertain;
+  // f's sign is uncertain somewhere here (f may even vanish throughout, as for a cube
+  // sliding on a plane): a condition certainly < 0 over the whole piece still excludes it.
+  // Only where some condition is clearly < 0 at both ends and in the middle: else none is
+  // < 0 throughout, or the intervals would be too wide to show it.
+  // Where nothing else could decide (f flat on the piece, and settle_end would give up at
+  // its end), the intervals over the piece are paid for only where the condition in the
+  // middle clears their rough width over the middle quarter: on the sliding-on-edge and
+  // coplanar families these evaluations almost all fail, and a few decisions are lost.
+  const bool is_flat = flat(p, err);
+  const bool last_chance = is_flat && (end < 0 ? p.lo != 0 && p.hi != 1 : look.lowest <= 0x1p-20);
+  if (negative_throughout(q, p, last_chance ? 0.125 : 0)) {
+    if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
+    if (outside(q, p)) return Filtered::No;
+  }
+  // Smaller pieces would not show a sign either where f may vanish on the whole piece (no
+  // coefficient certain: coplanar motion): the exact test decides. Nor at t = 0 or 1 when
+  // its first or last one is uncertain there: settle_end decides what it can.
+  // Where it is flat at t = 0 or 1 too, a contact right there is still worth a look
+  // (coplanar motion that starts or ends inside the triangle): settle_end, for a yes only.
+  if (is_flat && p.lo != 0 && p.hi != 1) return Filtered::Uncertain;
+  if (end >= 0) return settle_end(q, p, end, look, is_flat, stack, evaluations);
+  return std::nullopt;
 }
 
 // Stage 2: isolate the roots of f in [0, 1] by Bernstein subdivision (a piece whose
@@ -509,39 +550,10 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
     const double err = bound(f, p.depth);
     const int v = variations(p, err);
     if (v == 0) continue;  // one certain sign: no root here
-    if (v < 0) {
-      // f's sign uncertain at t = 0 or 1 (see below): where a condition is about 0 there and
-      // none clearly < 0, settle_end gives up, and none is clearly < 0 throughout either (the
-      // test below would look at that end too): given up at once, one look sooner.
-      const int end = open_end(p, err);
-      const Look look = end < 0 ? Look{} : look_at(q, end);
-      if (end >= 0 && look.hopeless(0x1p-40)) return Filtered::Uncertain;
-      // f's sign is uncertain somewhere here (f may even vanish throughout, as for a cube
-      // sliding on a plane): a condition certainly < 0 over the whole piece still excludes it.
-      // Only where some condition is clearly < 0 at both ends and in the middle: else none is
-      // < 0 throughout, or the intervals would be too wide to show it.
-      // Where nothing else could decide (f flat on the piece, and settle_end would give up at
-      // its end), the intervals over the piece are paid for only where the condition in the
-      // middle clears their rough width over the middle quarter: on the sliding-on-edge and
-      // coplanar families these evaluations almost all fail, and a few decisions are lost.
-      const bool is_flat = flat(p, err);
-      const bool last_chance =
-          is_flat && (end < 0 ? p.lo != 0 && p.hi != 1 : look.lowest <= 0x1p-20);
-      if (negative_throughout(q, p, last_chance ? 0.125 : 0)) {
-        if (++evaluations > kMaxEvaluations) return Filtered::Uncertain;
-        if (outside(q, p)) continue;
-      }
-      // Smaller pieces would not show a sign either where f may vanish on the whole piece (no
-      // coefficient certain: coplanar motion): the exact test decides. Nor at t = 0 or 1 when
-      // its first or last one is uncertain there: settle_end decides what it can.
-      // Where it is flat at t = 0 or 1 too, a contact right there is still worth a look
-      // (coplanar motion that starts or ends inside the triangle): settle_end, for a yes only.
-      if (is_flat && p.lo != 0 && p.hi != 1) return Filtered::Uncertain;
-      if (end >= 0) {
-        const Filtered r = settle_end(q, p, end, look, is_flat, stack, evaluations);
-        if (r != Filtered::No) return r;
-        continue;
-      }
+    if (v < 0) {           // f's sign uncertain somewhere in p
+      const std::optional<Filtered> r = uncertain_piece(q, p, err, stack, evaluations);
+      if (r == Filtered::No) continue;  // nothing in p
+      if (r) return *r;
     }
     if (v == 1 && sign_beyond(p.b[0], err) != sign_beyond(p.b[3], err)) {
       const Filtered r = contact_at_root(q, f, p, evaluations);

@@ -7,7 +7,6 @@
 
 namespace fdh {
 using normal_cone_detail::kTiny;
-using normal_cone_detail::kU;
 
 // For d with coordinates in {-1, 0, 1}, the least d·n over the box is s = Σ (lo_i where
 // d_i = 1, -hi_i where d_i = -1). The true control vectors are within err per coordinate, so
@@ -24,7 +23,7 @@ bool leans(const NormalBox& b, int bit) {
                t2 = term(d.z, b.lo.z, b.hi.z);
   const double s = (t0 + t1) + t2;
   const double margin =
-      1.01 * (3 * b.err + 4 * kU * (std::fabs(t0) + std::fabs(t1) + std::fabs(t2))) + kTiny;
+      1.01 * (3 * b.err + 4 * kEps * (std::fabs(t0) + std::fabs(t1) + std::fabs(t2))) + kTiny;
   return s > margin;
 }
 

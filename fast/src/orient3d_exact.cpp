@@ -7,14 +7,6 @@
 namespace fdh {
 namespace {
 
-// a + b = s + e exactly (Knuth's Two-Sum; Shewchuk 1997, Theorem 7). No multiplication, so no
-// contraction into a fused multiply-add can change it.
-void two_sum(double a, double b, double& s, double& e) {
-  s = a + b;
-  const double bb = s - a;
-  e = (a - (s - bb)) + (b - bb);
-}
-
 // a b = p + e exactly, for a, b and a b far from overflow and underflow (Shewchuk 1997,
 // Theorem 18: Dekker's product of Veltkamp's halves, each product of halves exact). Where a
 // fused multiply-add is fast, e is fma(a, b, -p), exact by definition; there the compiler could

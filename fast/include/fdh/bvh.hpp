@@ -105,14 +105,7 @@ class Bvh {
       }
       return;
     }
-    // In place, in one pass: a Kdop returned by value, or copied then merged, costs more in
-    // stores than the merge itself.
-    const Kdop<K>& l = nodes_[n.left].box;
-    const Kdop<K>& r = nodes_[n.right].box;
-    for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
-      n.box.lo[s] = l.lo[s] < r.lo[s] ? l.lo[s] : r.lo[s];
-      n.box.hi[s] = l.hi[s] > r.hi[s] ? l.hi[s] : r.hi[s];
-    }
+    merge_into(n.box, nodes_[n.left].box, nodes_[n.right].box);
   }
 
   bool empty() const { return nodes_.empty(); }
@@ -170,8 +163,7 @@ class Bvh {
     Node& node = nodes_[id];
     node.left = left;
     node.right = right;
-    node.box = nodes_[left].box;
-    merge_into(node.box, nodes_[right].box);
+    merge_into(node.box, nodes_[left].box, nodes_[right].box);
     return id;
   }
 
@@ -218,13 +210,6 @@ class Bvh {
       if (len > longest) axis = s, longest = len;
     }
     return axis;
-  }
-
-  static void merge_into(Kdop<K>& m, const Kdop<K>& b) {
-    for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
-      m.lo[s] = b.lo[s] < m.lo[s] ? b.lo[s] : m.lo[s];
-      m.hi[s] = b.hi[s] > m.hi[s] ? b.hi[s] : m.hi[s];
-    }
   }
 
   std::vector<Tri> tris_;

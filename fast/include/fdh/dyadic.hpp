@@ -7,11 +7,18 @@
 
 namespace fdh {
 
-// s = a + b; true when that sum is exact and finite (Knuth's TwoSum error term is zero).
-inline bool add_exactly(double a, double b, double& s) {
+// a + b = s + e exactly (Knuth's Two-Sum; Shewchuk 1997, Theorem 7), for a finite s.
+inline void two_sum(double a, double b, double& s, double& e) {
   s = a + b;
   const double bb = s - a;
-  return std::isfinite(s) && (a - (s - bb)) + (b - bb) == 0;
+  e = (a - (s - bb)) + (b - bb);
+}
+
+// s = a + b; true when that sum is exact and finite (Two-Sum's error term is zero).
+inline bool add_exactly(double a, double b, double& s) {
+  double e;
+  two_sum(a, b, s, e);
+  return std::isfinite(s) && e == 0;
 }
 
 // s = x 2^e; true when that is exact: no overflow, no bits lost to underflow.

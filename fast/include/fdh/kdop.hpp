@@ -189,14 +189,21 @@ Kdop<K> kdop_of(const Vec3* pts, std::size_t n) {
   return b.finish();
 }
 
-// Union of two k-DOPs: min and max are exact, so containment is kept.
+// Union of two k-DOPs into m (which may be a or b), in one pass: min and max are exact, so
+// containment is kept. In place because the trees' refit and build merge into their nodes: a
+// Kdop returned by value, or copied then merged, costs more in stores than the merge itself.
 template <int K>
-Kdop<K> merge(const Kdop<K>& a, const Kdop<K>& b) {
-  Kdop<K> m;
+void merge_into(Kdop<K>& m, const Kdop<K>& a, const Kdop<K>& b) {
   for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
     m.lo[s] = std::min(a.lo[s], b.lo[s]);
     m.hi[s] = std::max(a.hi[s], b.hi[s]);
   }
+}
+
+template <int K>
+Kdop<K> merge(const Kdop<K>& a, const Kdop<K>& b) {
+  Kdop<K> m;
+  merge_into(m, a, b);
   return m;
 }
 

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "fdh/orient3d_filter.hpp"  // kEps, min_of, max_of
 #include "fdh/vec3.hpp"
 
 namespace fdh {
@@ -42,17 +43,8 @@ struct NormalBox {
 };
 
 namespace normal_cone_detail {
-inline constexpr double kU = 0x1p-53;  // unit roundoff
 // Underflow: an absolute term far above the error of any product of subnormal size.
 inline constexpr double kTiny = 1e-290;
-inline double lo3(double a, double b, double c) {
-  const double ab = a < b ? a : b;
-  return ab < c ? ab : c;
-}
-inline double hi3(double a, double b, double c) {
-  const double ab = a > b ? a : b;
-  return ab > c ? ab : c;
-}
 }  // namespace normal_cone_detail
 
 // Error of each control vector's coordinates: the inputs carry a relative error u per
@@ -65,17 +57,15 @@ inline NormalBox swept_normals(const Vec3& p0, const Vec3& p1, const Vec3& q0, c
   const Vec3 n0 = cross(p0, q0), n2 = cross(p1, q1);
   const Vec3 n1 = 0.5 * (cross(p0, q1) + cross(p1, q0));
   const double pm = std::max(max_abs(p0), max_abs(p1)), qm = std::max(max_abs(q0), max_abs(q1));
-  return {{lo3(n0.x, n1.x, n2.x), lo3(n0.y, n1.y, n2.y), lo3(n0.z, n1.z, n2.z)},
-          {hi3(n0.x, n1.x, n2.x), hi3(n0.y, n1.y, n2.y), hi3(n0.z, n1.z, n2.z)},
-          16 * kU * pm * qm + kTiny};
+  return {{min_of(n0.x, n1.x, n2.x), min_of(n0.y, n1.y, n2.y), min_of(n0.z, n1.z, n2.z)},
+          {max_of(n0.x, n1.x, n2.x), max_of(n0.y, n1.y, n2.y), max_of(n0.z, n1.z, n2.z)},
+          16 * kEps * pm * qm + kTiny};  // kEps: the unit roundoff u
 }
 
 inline NormalBox merge(const NormalBox& a, const NormalBox& b) {
-  const auto mn = [](double x, double y) { return x < y ? x : y; };
-  const auto mx = [](double x, double y) { return x > y ? x : y; };
-  return {{mn(a.lo.x, b.lo.x), mn(a.lo.y, b.lo.y), mn(a.lo.z, b.lo.z)},
-          {mx(a.hi.x, b.hi.x), mx(a.hi.y, b.hi.y), mx(a.hi.z, b.hi.z)},
-          mx(a.err, b.err)};
+  return {{min_of(a.lo.x, b.lo.x), min_of(a.lo.y, b.lo.y), min_of(a.lo.z, b.lo.z)},
+          {max_of(a.hi.x, b.hi.x), max_of(a.hi.y, b.hi.y), max_of(a.hi.z, b.hi.z)},
+          max_of(a.err, b.err)};
 }
 
 // The directions d (bits) with d·n > 0 certainly for every normal n held by the box; and

@@ -3,6 +3,8 @@
 // its own outputs, and whatever is gathered from chunks is merged in chunk order.
 #pragma once
 
+#include <algorithm>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -52,6 +54,10 @@ int subtree_end(const std::vector<Node>& nodes, int i) {
   return i + 1;
 }
 
+// Below this many tree nodes (a cloth of about 90x90 particles) a pass over a tree, and the
+// cloth's traversal, stay on the calling thread: waking the others would cost more.
+inline constexpr std::size_t kParallelNodes = 1 << 14;
+
 // A pass over a binary tree in preorder, children before parents, on every core: the subtrees
 // at depth 6 (64, or the leaves above that depth) side by side, then the 63 nodes above them on
 // the calling thread. A tree smaller than `parallel_nodes` stays on the calling thread (waking
@@ -62,7 +68,7 @@ class BottomUp {
  public:
   BottomUp() = default;  // no nodes
   template <class Node>
-  explicit BottomUp(const std::vector<Node>& nodes, std::size_t parallel_nodes = 1 << 14)
+  explicit BottomUp(const std::vector<Node>& nodes, std::size_t parallel_nodes = kParallelNodes)
       : size_(int(nodes.size())) {
     if (nodes.size() >= parallel_nodes) split(nodes, 0, 0);
   }
