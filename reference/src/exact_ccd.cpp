@@ -143,10 +143,7 @@ std::array<PVec, 4> integer_paths(const Query& q) {
 class Search {
  public:
   Search(const CcdOptions& o, bool want_time)
-      : t0_(algebra::Dyadic::of(o.t0)),
-        t1_(algebra::Dyadic::of(o.t1)),
-        unit_window_(o.t0 == 0 && o.t1 == 1),
-        want_time_(want_time) {}
+      : t0_(algebra::Dyadic::of(o.t0)), t1_(algebra::Dyadic::of(o.t1)), want_time_(want_time) {}
 
   void vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec& c);
   void edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVec& b1);
@@ -189,7 +186,7 @@ class Search {
   algebra::Roots common_roots(std::initializer_list<const Poly*> zeros) {
     // One of them without roots there: the common case, decided cheaply (roots_in's own
     // Bernstein test decides it for one polynomial).
-    if (unit_window_ && zeros.size() > 1)
+    if (zeros.size() > 1 && algebra::is_unit_window(t0_, t1_))
       for (const Poly* z : zeros)
         if (algebra::no_root_in_unit(*z)) return {};
     // The gcd from the lowest degree up, zeros skipped (gcd(g, 0) = g): the fewest remainders.
@@ -221,7 +218,6 @@ class Search {
   bool point_edge(const PVec& p, const PVec& a, const PVec& b);
 
   algebra::Dyadic t0_, t1_;
-  bool unit_window_;  // [t0, t1] = [0, 1]
   bool want_time_;
   // The squarefree polynomials that the roots point into: one for f, else at most two per
   // vertex-edge pair (point_edge), four pairs for edge-edge.

@@ -121,16 +121,22 @@ double Int::frexp(long* e) const {
   return mpz_get_d_2exp(e, view(v));
 }
 
-void Int::sum_limbs(Int& r, const Int& a, const Int& b, bool subtract) {
-  const int room = std::max(a.length(), b.length()) + 1;
-  const Size bn = subtract ? -Size(b.size_) : b.size_;
-  if (room <= r.capacity_) {  // straight into r, which may be a or b
-    r.size_ = int(add_limbs(r.data(), a.limbs(), a.size_, b.limbs(), bn));
+template <class Limbs>
+void Int::write_limbs(Int& r, long room, bool in_place, Limbs limbs) {
+  if (in_place && room <= r.capacity_) {
+    r.size_ = int(limbs(r.data()));
     return;
   }
   Buffer s(room);
-  const Size n = add_limbs(s.data(), a.limbs(), a.size_, b.limbs(), bn);
+  const Size n = limbs(s.data());
   r.assign(s.data(), int(std::abs(n)), n < 0);
+}
+
+void Int::sum_limbs(Int& r, const Int& a, const Int& b, bool subtract) {
+  const Size bn = subtract ? -Size(b.size_) : b.size_;
+  // r may be a or b: add_limbs reads each limb before it writes it (GMP's exact overlap).
+  write_limbs(r, std::max(a.length(), b.length()) + 1, true,
+              [&](mp_limb_t* d) { return add_limbs(d, a.limbs(), a.size_, b.limbs(), bn); });
 }
 
 Int operator+(const Int& a, const Int& b) {
@@ -185,14 +191,9 @@ int compare_abs(const Int& a, const Int& b) {
 }
 
 void Int::product_limbs(Int& r, const Int& a, const Int& b) {
-  const int room = a.length() + b.length();
-  if (room <= r.capacity_ && &r != &a && &r != &b) {  // straight into r
-    r.size_ = int(multiply_limbs(r.data(), a.limbs(), a.size_, b.limbs(), b.size_));
-    return;
-  }
-  Buffer p(room);
-  const Size n = multiply_limbs(p.data(), a.limbs(), a.size_, b.limbs(), b.size_);
-  r.assign(p.data(), int(std::abs(n)), n < 0);
+  write_limbs(r, a.length() + b.length(), &r != &a && &r != &b, [&](mp_limb_t* d) {
+    return multiply_limbs(d, a.limbs(), a.size_, b.limbs(), b.size_);
+  });
 }
 
 void mul_2exp(Int& r, const Int& a, unsigned long k) {
@@ -222,14 +223,8 @@ void Int::accumulate_limbs(Int& r, const Int& a, const Int& b, bool subtract) {
   Size pn = multiply_limbs(p.data(), a.limbs(), a.size_, b.limbs(), b.size_);
   if (pn == 0) return;
   if (subtract) pn = -pn;
-  const Size room = std::max(Size(r.length()), std::abs(pn)) + 1;
-  if (room <= r.capacity_) {  // in place
-    r.size_ = int(add_limbs(r.data(), r.data(), r.size_, p.data(), pn));
-    return;
-  }
-  Buffer s(room);
-  const Size n = add_limbs(s.data(), r.limbs(), r.size_, p.data(), pn);
-  r.assign(s.data(), int(std::abs(n)), n < 0);
+  write_limbs(r, std::max(Size(r.length()), std::abs(pn)) + 1, true,
+              [&](mp_limb_t* d) { return add_limbs(d, r.limbs(), r.size_, p.data(), pn); });
 }
 
 void negate(Int& r) {

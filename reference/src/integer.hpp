@@ -112,6 +112,10 @@ class Int {
   static void sum_limbs(Int& r, const Int& a, const Int& b, bool subtract);
   static void accumulate_limbs(Int& r, const Int& a, const Int& b, bool subtract);
   static void product_limbs(Int& r, const Int& a, const Int& b);
+  // r = what `limbs(d)` writes at d (returning GMP's signed size): straight into r's own limbs
+  // when `in_place` allows and `room` limbs fit there, else through a buffer (integer.cpp).
+  template <class Limbs>
+  static void write_limbs(Int& r, long room, bool in_place, Limbs limbs);
   // The machine fast path: most values of the hard families fit 127 bits, and __int128
   // arithmetic with overflow checks (__builtin_*_overflow) beats any call into GMP.
   bool machine(__int128* v) const {  // false if |value| >= 2^127

@@ -303,10 +303,6 @@ Poly exact_quotient(const Poly& p, const Poly& g0) {
   return primitive(Poly(std::move(out)));
 }
 
-}  // namespace
-
-namespace {
-
 // p's Bernstein coefficients on [0, 1] scaled by d! > 0, for p != 0. p is the convex
 // combination sum b_i B_i(t) of the Bernstein basis, B_i >= 0 on [0, 1] and sum B_i = 1, with
 // b_i = sum_{j <= i} C(i, j) / C(d, j) a_j (Farouki & Rajan 1988, "Algorithms for polynomials
@@ -430,11 +426,14 @@ int sign_at(const Poly& p, const Dyadic& t) {
   return v.sign();
 }
 
+bool is_unit_window(const Dyadic& t0, const Dyadic& t1) {
+  return t0.a.is_zero() && t1.k == 0 && t1.a == Int(1);
+}
+
 Roots roots_in(Poly& s, const Dyadic& t0, const Dyadic& t1) {
   // The unit window: Bernstein bisection mostly finishes, without a Sturm sequence.
   Roots by_signs;
-  if (t0.a.is_zero() && t1.k == 0 && t1.a == Int(1) && unit_roots_by_bernstein(s, by_signs))
-    return by_signs;
+  if (is_unit_window(t0, t1) && unit_roots_by_bernstein(s, by_signs)) return by_signs;
   InlineVector<Poly, 5> seq = sturm_sequence(s);
   // The last element is gcd(s, s') up to a factor (a remainder sequence): s is squarefree iff
   // it is a constant. Else the roots are those of s / gcd(s, s'), each simple.

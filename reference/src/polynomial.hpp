@@ -73,6 +73,8 @@ struct Dyadic {
   mpq_class value() const;
 };
 int sign_at(const Poly& p, const Dyadic& t);
+// Whether [t0, t1] is [0, 1]: the window where Bernstein coefficients decide most roots.
+bool is_unit_window(const Dyadic& t0, const Dyadic& t1);
 
 // A real root of a squarefree polynomial s: either lo (= hi), or the only root of s in the open
 // interval (lo, hi) with s(lo) s(hi) < 0. lo = a / 2^k and hi = b / 2^k share k.
