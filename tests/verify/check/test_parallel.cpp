@@ -16,13 +16,9 @@ namespace {
 // Each chunk's [begin, end), in the order the parts come back.
 std::vector<std::pair<std::size_t, std::size_t>> chunks(std::size_t n, std::size_t grain) {
   using Range = std::pair<std::size_t, std::size_t>;
-  std::vector<Range> out;
-  for (const Range& r :
-       parts_in_order(n, grain, Range{}, [](std::size_t b, std::size_t e, Range&part) {
-         part = {b, e};
-       }))
-    out.push_back(r);
-  return out;
+  return parts_in_order(n, grain, Range{}, [](std::size_t b, std::size_t e, Range& part) {
+    part = {b, e};
+  });
 }
 
 TEST(Parallel, ChunksDependOnTheInputAloneAndComeBackInOrder) {

@@ -83,7 +83,8 @@ class Certifier {
       zero_.boxes.back().tree = b.builds_tree;
     }
     zero_.metamorphic = metamorphic_.rows();
-    c_.promises = zero_.promises, c_.boxes = zero_.boxes, c_.metamorphic = zero_.metamorphic;
+    total_ = zero_;
+    write_counts();
   }
 
   // Every query of qs, on every core; the certificate then counts them in order.
@@ -113,11 +114,8 @@ class Certifier {
 
   // t's counts into the certificate; its violation, if the certificate's first, saved.
   void record(const CertifyTally& t) {
-    CertifyTally sum{c_.promises, c_.boxes, c_.metamorphic, c_.truths, c_.truth_violations, 0, {}};
-    sum.add(t);
-    c_.promises = std::move(sum.promises), c_.boxes = std::move(sum.boxes);
-    c_.metamorphic = std::move(sum.metamorphic);
-    c_.truths = sum.truths, c_.truth_violations = sum.truth_violations;
+    total_.add(t);
+    write_counts();
     if (!t.first || !c_.first_violation.empty()) return;
     const fs::path file = fs::path(c_.options.out_dir) / t.first->file;
     write_file_atomically(file.string(), t.first->text);
@@ -125,6 +123,12 @@ class Certifier {
   }
 
  private:
+  // The certificate's rows and counts are total_'s.
+  void write_counts() {
+    c_.promises = total_.promises, c_.boxes = total_.boxes, c_.metamorphic = total_.metamorphic;
+    c_.truths = total_.truths, c_.truth_violations = total_.truth_violations;
+  }
+
   void check_query(const Query& q, CertifyTally& t) const {
     check_boxes(q, std::vector<Vec3>(q.x.begin(), q.x.end()), t);
     if (q.is_static_vf()) {
@@ -247,7 +251,8 @@ class Certifier {
   const std::vector<Method> methods_ = promised_methods();
   const std::vector<BoxMethod> boxes_ = all_box_methods();
   const MetamorphicCertifier metamorphic_;
-  CertifyTally zero_;
+  CertifyTally zero_;   // every row, every count 0
+  CertifyTally total_;  // what record() has merged so far
 };
 
 // A shipped scene run with robust as its narrow phase (and its self-collision pass, if it has
