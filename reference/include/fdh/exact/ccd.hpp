@@ -16,6 +16,7 @@
 
 #include <string>
 
+#include "fdh/ccd/toi.hpp"
 #include "fdh/query.hpp"
 
 namespace fdh::exact {
@@ -41,5 +42,14 @@ CcdContact ccd(const Query& q, const CcdOptions& options = {});
 
 // The verdict alone: the fallback of fast/'s `robust` moving test.
 bool ccd_hit(const Query& q);
+
+// The exact verdict and an enclosure of the earliest contact t* no wider than `width`, searched
+// in [t0, t1] (fdh/ccd/toi.hpp's ExactToi: the fallback of fast/'s robust_ccd_toi).
+Toi ccd_toi(const Query& q, double t0, double t1, double width);
+
+// Where a time t in [0, 1] lies against the exact earliest contact t* of a query that has one:
+// -1 for t < t*, 0 for t == t*, +1 for t > t*, decided exactly. The twin of the TOI decisions
+// ("late" is +1). Throws std::invalid_argument for a query without contact.
+int compare_with_toi(const Query& q, double t);
 
 }  // namespace fdh::exact
