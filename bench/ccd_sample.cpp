@@ -27,7 +27,7 @@ using Clock = std::chrono::steady_clock;
 // Queries of each set: <set>/<vertex-face|edge-edge>/*.csv.
 std::map<std::string, std::vector<Query>> sample_sets() {
   std::map<std::string, std::vector<Query>> sets;
-  const fs::path root = fs::path(FDH_SHARED_DIR) / "ccd-sample";
+  const fs::path root = FDH_CCD_SAMPLE;  // the build's FDH_CCD_SAMPLE, empty for none
   if (!fs::is_directory(root)) return sets;
   std::vector<fs::path> files;
   for (const auto& e : fs::recursive_directory_iterator(root))
