@@ -26,7 +26,8 @@ if(FDH_BUILD_VERIFY)
   set_target_properties(fdh_reference PROPERTIES EXPORT_NAME reference)
   install(TARGETS fdh_reference EXPORT fdhcertReference
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/reference/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/reference/include/
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   install(EXPORT fdhcertReference NAMESPACE fdhcert:: FILE fdhcertReferenceTargets.cmake
           DESTINATION ${FDH_CMAKE_DIR})
   install(TARGETS fdhcert RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

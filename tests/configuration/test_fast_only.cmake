@@ -2,10 +2,11 @@
 #   cmake -S SRC -B WORK -DFDH_BUILD_VERIFY=OFF -DFDH_BUILD_PYTHON=OFF -DFDH_WITH_PEERS=OFF
 #         -DBUILD_TESTING=OFF
 # configured with --trace-expand into a file, built (fdh_fast and fdh_cloth alone), and checked
-# from CMake's own record: no find_package, find_dependency, pkg_check_modules, find_path or
-# find_library call anywhere (fdhcert's files or the packages' own) names CGAL, GMP, GTest,
-# RapidCheck, FCL, Bullet, Google Benchmark, pybind11 or Python, and the cache holds no
-# <package>_DIR of theirs; Eigen3 and TBB are searched. WORK is removed afterwards, pass or fail.
+# from CMake's own record: no find_package, find_dependency, pkg_check_modules, find_path,
+# find_library or find_program call anywhere (fdhcert's files or the packages' own) names CGAL,
+# GMP, GTest, RapidCheck, FCL, Bullet, Google Benchmark, pybind11, Python, PNG, CLI11, fmt or
+# nlohmann-json, and the cache holds no <package>_DIR of theirs; Eigen3 and TBB are found. WORK
+# is removed afterwards, pass or fail.
 #   cmake -DSRC=<source dir> -DWORK=<scratch dir> -DGENERATOR=<gen> [-DCXX=<compiler>]
 #         [-DLAUNCHER=<compiler launcher, e.g. ccache>] -P test_fast_only.cmake
 foreach(var SRC WORK GENERATOR)
@@ -52,8 +53,10 @@ foreach(library fdh_fast fdh_cloth)
 endforeach()
 
 # One line per searching call in the trace: `<file>(<line>):  find_package(<args> )`.
-file(STRINGS ${WORK}/trace.txt searches
-     REGEX "\\):  *(find_package|find_dependency|pkg_check_modules|pkg_search_module|find_path|find_library)\\(")
+set(searching find_package find_dependency pkg_check_modules pkg_search_module find_path
+    find_library find_program)
+string(REPLACE ";" "|" searching "${searching}")
+file(STRINGS ${WORK}/trace.txt searches REGEX "\\):  *(${searching})\\(")
 file(READ ${WORK}/CMakeCache.txt cache)
 foreach(package IN LISTS unwanted)
   string(TOLOWER ${package} lower)
@@ -74,5 +77,6 @@ foreach(package IN LISTS wanted)
 endforeach()
 list(LENGTH searches count)
 math(EXPR seconds "${end} - ${start}")
-message(STATUS "fast-only: configured and built in ${seconds} s; ${count} searching calls, none for: ${unwanted}")
+message(STATUS "fast-only: configured and built in ${seconds} s; ${count} searching calls, "
+               "none for: ${unwanted}")
 file(REMOVE_RECURSE ${WORK})
