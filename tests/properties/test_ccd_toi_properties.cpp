@@ -1,5 +1,5 @@
 // robust's time of impact against its exact twin, over the moving generator families and the
-// CCD benchmark sample (skipped when there is none, FDH_CCD_SAMPLE), at w = 2^-30 and 2^-50: the verdict
+// CCD benchmark sample (skipped without one, FDH_CCD_SAMPLE), at w = 2^-30 and 2^-50: the verdict
 // is exact's; with a contact, t_lo <= t* <= t_hi, decided exactly by compare_with_toi; the
 // width is at most w; and t_lo = 0 only when t* = 0.
 #include <gtest/gtest.h>
