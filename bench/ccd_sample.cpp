@@ -1,4 +1,4 @@
-// CCD on the benchmark sample (../shared/ccd-sample, skipped when absent): for each set (a
+// CCD on the benchmark sample (FDH_CCD_SAMPLE, skipped without one): for each set (a
 // folder: erleben-sliding-spike, unit-tests, ...) and each method that decides moving queries,
 // the mean, median and maximum time per query. Each query is timed on its own, as the mean of
 // `reps` back-to-back calls (reps chosen so that one timing lasts about 2 µs or more: the
