@@ -224,15 +224,18 @@ class Search {
   }
   bool found_at_start() {
     found_.push_back(Root::at(t0_));
+    at_start_ = true;
     return true;
   }
-  bool done() const { return !want_time_ && !found_.empty(); }
+  // Any contact answers the verdict; one at the window's start is the earliest possible.
+  bool done() const { return (!want_time_ && !found_.empty()) || at_start_; }
 
   bool point_point(const PVec& p, const PVec& a);
   bool point_edge(const PVec& p, const PVec& a, const PVec& b);
 
   algebra::Dyadic t0_, t1_;
   bool want_time_;
+  bool at_start_ = false;  // a contact found at t0
   // The squarefree polynomials that the roots point into: one for f, else at most two per
   // vertex-edge pair (point_edge), four pairs for edge-edge.
   algebra::InlineVector<Poly, 8> keep_;

@@ -170,17 +170,24 @@ void jump(Root& r) {
     if (v == 0) break;
     ((v < 0) == neg_lo ? lo : hi) = mid;
   }
-  const Dyadic dl = Dyadic::of(lo), dh = Dyadic::of(hi);
-  const unsigned long k = std::max({r.k, dl.k, dh.k});
-  const Int a = shifted(dl.a, k - dl.k), b = shifted(dh.a, k - dh.k);
-  const Int ra = shifted(r.a, k - r.k), rb = shifted(r.b, k - r.k);
-  if (!(ra <= a && a < b && b <= rb)) return;
-  const int sa = sign_at(s, Dyadic{a, k}), sb = sign_at(s, Dyadic{b, k});
-  if (sa == 0 || sb == 0) {
-    r.a = r.b = sa == 0 ? a : b;
-    r.k = k;
-  } else if (sa != sb) {
-    r.a = a, r.b = b, r.k = k;
+  // Where rounding noise spread the float bisection's answer (s evaluated in doubles near its
+  // root), the two doubles may both lie on one side: then once more, 2^-40 wider on each side.
+  for (const double pad : {0.0, 0x1p-40}) {
+    const Dyadic dl = Dyadic::of(lo - pad), dh = Dyadic::of(hi + pad);
+    const unsigned long k = std::max({r.k, dl.k, dh.k});
+    const Int a = shifted(dl.a, k - dl.k), b = shifted(dh.a, k - dh.k);
+    const Int ra = shifted(r.a, k - r.k), rb = shifted(r.b, k - r.k);
+    if (!(ra <= a && a < b && b <= rb)) return;
+    const int sa = sign_at(s, Dyadic{a, k}), sb = sign_at(s, Dyadic{b, k});
+    if (sa == 0 || sb == 0) {
+      r.a = r.b = sa == 0 ? a : b;
+      r.k = k;
+      return;
+    }
+    if (sa != sb) {
+      r.a = a, r.b = b, r.k = k;
+      return;
+    }
   }
 }
 
