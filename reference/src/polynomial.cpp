@@ -407,7 +407,8 @@ void clip_to_window(const Poly& s, Roots& roots, const Dyadic& t0, const Dyadic&
           break;
         }
       }
-      if (!r.s) continue;
+      // (With t0 = t1, a cut at t0 can leave (t1, hi): outside.)
+      if (!r.s || (!r.exact() && compare(r.lo(), t1) >= 0)) continue;
     }
     kept.push_back(r);
   }
