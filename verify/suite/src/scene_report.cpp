@@ -67,6 +67,12 @@ std::string json_text(const json& j, const std::string& what) {
   return j.dump(2) + "\n";
 }
 
+// The share of the stopped particles' motion that the self-collision response kept; null
+// where it stopped none.
+json motion_kept(const SceneRun& r) {
+  return r.self_motion > 0 ? json(r.self_motion_kept / r.self_motion) : json();
+}
+
 json scene_run_json(const cloth::Scene& scene, const SceneRunOptions& opt, const SceneRun& r) {
   return {{"scene", scene.name},
           {"grid", r.grid},
@@ -92,6 +98,7 @@ json scene_run_json(const cloth::Scene& scene, const SceneRunOptions& opt, const
           {"self_zone_frames", r.self_zone_frames},
           {"self_zone_particles", r.self_zone_particles},
           {"self_stops", r.self_stops},
+          {"self_motion_kept", motion_kept(r)},
           {"self_crossing", counted(r.self_audited, r.audit.self_crossing)},
           {"energy_start", six_digits(r.energy_start)},
           {"energy_end", six_digits(r.energy_end)}};

@@ -25,7 +25,8 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
   r.frames = opt.frames >= 0 ? opt.frames : scene.frames;
 
   const Method narrow = select_methods({opt.narrow}).front();
-  cloth::Simulation sim(scene, narrow_phase_named(opt.narrow), opt.k, r.dt, &exact::ccd_hit);
+  cloth::Simulation sim(scene, narrow_phase_named(opt.narrow), opt.k, r.dt, &exact::ccd_hit,
+                        &exact::ccd_toi);
   r.self_audited = opt.check && (opt.audit_self || scene.self_collision);
   std::vector<TriMesh> obstacles;
   for (const auto& o : scene.obstacles) obstacles.push_back(cloth::obstacle_mesh(o));
@@ -52,6 +53,7 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
     r.self_zone_frames += sim.self().zones;
     r.self_zone_particles += sim.self().zone_particles;
     r.self_stops += sim.self().stopped_all;
+    r.self_motion += sim.self().motion, r.self_motion_kept += sim.self().kept;
     if (opt.check && (f % scene.audit_every == 0 || f == r.frames)) {  // the scene's stride
       for (const auto& nq : sim.queries()) {
         const Verdicts v = check_given(narrow, sim.query(nq), nq.hit);

@@ -41,6 +41,9 @@ struct SceneRun {
   // frames that needed impact zones (and their particles, summed), frames stopped whole.
   long self_queries = 0, self_hits = 0, self_round_frames = 0, self_zone_frames = 0,
        self_zone_particles = 0, self_stops = 0;
+  // The motion of the particles whose end of step the response changed, summed over the frames
+  // (lengths), and what the response kept of it (stage 1 stops them at their time of impact).
+  double self_motion = 0, self_motion_kept = 0;
   double energy_start = 0, energy_end = 0;
   std::vector<Vec3> final_x;  // the cloth's particles after the last frame
 
