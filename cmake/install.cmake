@@ -13,9 +13,10 @@ include(CMakePackageConfigHelpers)
 set(FDH_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/fdhcert)
 set_target_properties(fdh_fast PROPERTIES EXPORT_NAME fast)
 set_target_properties(fdh_cloth PROPERTIES EXPORT_NAME cloth)
+set_target_properties(fdh_parallel PROPERTIES EXPORT_NAME parallel)
 set_target_properties(fdh_reference PROPERTIES EXPORT_NAME reference)
 
-install(TARGETS fdh_fast fdh_cloth EXPORT fdhcertFast
+install(TARGETS fdh_fast fdh_parallel fdh_cloth EXPORT fdhcertFast
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS fdh_reference EXPORT fdhcertReference
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
@@ -23,7 +24,7 @@ install(TARGETS fdhcert RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The plug-in ABI (docs/plugins.md): plain C, for users' shared libraries.
 install(FILES ${PROJECT_SOURCE_DIR}/verify/plugin/include/fdh/plugin.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/fdh)
-foreach(dir fast cloth reference)
+foreach(dir fast parallel cloth reference)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
 install(EXPORT fdhcertFast NAMESPACE fdhcert:: FILE fdhcertFastTargets.cmake

@@ -1,4 +1,4 @@
-#include "fdh/suite/certify.hpp"
+#include "fdh/certify/certify.hpp"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "fdh/certify/certify_metamorphic.hpp"
 #include "fdh/cli/cli.hpp"
-#include "fdh/suite/build_info.hpp"
-#include "fdh/suite/certify_metamorphic.hpp"
+#include "fdh/run/build_info.hpp"
 
 #include "temp_dir.hpp"
 

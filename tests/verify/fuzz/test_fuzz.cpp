@@ -1,5 +1,6 @@
 // fdhcert fuzz: the same cases whatever the workers or shards, and a SIGKILL loses nothing.
-#include "fdh/suite/fuzz.hpp"
+#include "fdh/fuzz/fuzz.hpp"
+#include "fdh/os/child_process.hpp"
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -63,20 +64,18 @@ std::map<std::string, std::string> cases_in(const fs::path& dir) {
 }
 
 // fdhcert with these arguments as a child process, its standard output discarded.
-pid_t spawn_fdhcert(const std::vector<std::string>& args) {
+ChildProcess spawn_fdhcert(const std::vector<std::string>& args) {
   std::vector<std::string> argv = {FDHCERT_BIN};
   argv.insert(argv.end(), args.begin(), args.end());
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    std::vector<char*> a;
-    for (const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
-    a.push_back(nullptr);
+  std::vector<char*> a;
+  for (const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
+  a.push_back(nullptr);
+  return ChildProcess([&] {
     const int devnull = ::open("/dev/null", O_WRONLY);
     ::dup2(devnull, 1);
     ::execv(a[0], a.data());
-    ::_exit(127);
-  }
-  return pid;
+    return 127;
+  });
 }
 
 // The done-markers (cases-B-E) under out/.fuzz.
@@ -92,20 +91,17 @@ long marker_count(const fs::path& out) {
 // checks that every file left is whole, and runs it again to the end. The markers done before
 // the kill.
 long kill_and_restart(const std::vector<std::string>& args, const fs::path& out, long markers) {
-  const pid_t pid = spawn_fdhcert(args);
+  ChildProcess run = spawn_fdhcert(args);
   for (int i = 0; i < 2000 && marker_count(out) < markers; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  ::kill(pid, SIGKILL);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  EXPECT_TRUE(WIFSIGNALED(status));
+  run.kill();
+  EXPECT_TRUE(WIFSIGNALED(run.wait().raw));
   const long done_before = marker_count(out);
   std::this_thread::sleep_for(std::chrono::milliseconds(100));  // workers die with the parent
   // Every file left behind is whole: a case file parses. Temporaries live in .fuzz/tmp only.
   for (const auto& [rel, text] : cases_in(out))
     EXPECT_NO_THROW(read_native((out / rel).string())) << rel;
-  ::waitpid(spawn_fdhcert(args), &status, 0);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  EXPECT_TRUE(spawn_fdhcert(args).wait().ok());
   return done_before;
 }
 
@@ -125,8 +121,7 @@ void expect_kill_loses_nothing(const FuzzOptions& o, const fs::path& whole, cons
 
 TEST(Fuzz, FindsShrinksAndStoresCasesThatReplayAsFailures) {
   const fs::path d = fuzz_dir("fuzz_basic");
-  std::ostringstream progress;
-  const FuzzSummary s = run_fuzz(options(d, 1), progress);
+  const FuzzSummary s = run_fuzz(options(d, 1));
   EXPECT_EQ(s.cases, 1200);
   EXPECT_GT(s.disagreements, 0);
   ASSERT_FALSE(s.distinct.empty());
@@ -141,9 +136,8 @@ TEST(Fuzz, FindsShrinksAndStoresCasesThatReplayAsFailures) {
 TEST(Fuzz, SameCasesForAnyWorkerCountAndShards) {
   const fs::path one = fuzz_dir("fuzz_one"), two = fuzz_dir("fuzz_two"),
                  shards = fuzz_dir("fuzz_shards");
-  std::ostringstream progress;
-  const FuzzSummary a = run_fuzz(options(one, 1), progress);
-  const FuzzSummary b = run_fuzz(options(two, 2), progress);
+  const FuzzSummary a = run_fuzz(options(one, 1));
+  const FuzzSummary b = run_fuzz(options(two, 2));
   EXPECT_EQ(a.disagreements, b.disagreements);
   EXPECT_EQ(cases_in(one), cases_in(two));
   long disagreements = 0;
@@ -151,7 +145,7 @@ TEST(Fuzz, SameCasesForAnyWorkerCountAndShards) {
     FuzzOptions o = options(shards, 1);
     o.shard = i;
     o.shards = 3;
-    disagreements += run_fuzz(o, progress).disagreements;
+    disagreements += run_fuzz(o).disagreements;
   }
   EXPECT_EQ(disagreements, a.disagreements);
   EXPECT_EQ(cases_in(shards), cases_in(one));
@@ -159,15 +153,14 @@ TEST(Fuzz, SameCasesForAnyWorkerCountAndShards) {
 
 TEST(Fuzz, KilledWithSigkillAndRestartedLosesNothing) {
   const fs::path whole = fuzz_dir("fuzz_whole"), killed = fuzz_dir("fuzz_killed");
-  std::ostringstream progress;
   FuzzOptions o = options(whole, 2);
   o.count = 6000;
-  const FuzzSummary expected = run_fuzz(o, progress);
+  const FuzzSummary expected = run_fuzz(o);
 
   // Kill it mid-run: once some chunks are done but not all.
   expect_kill_loses_nothing(o, whole, killed, 5);
   o.out_dir = killed.string();
-  const FuzzSummary after = run_fuzz(o, progress);  // all done: reads the markers only
+  const FuzzSummary after = run_fuzz(o);  // all done: reads the markers only
   EXPECT_EQ(after.resumed, 6000);
   EXPECT_EQ(after.disagreements, expected.disagreements);
   EXPECT_EQ(after.distinct.size(), expected.distinct.size());
@@ -177,13 +170,12 @@ TEST(Fuzz, KilledWithSigkillAndRestartedLosesNothing) {
 // killed with SIGKILL part way and started again, ends with exactly the uninterrupted run's cases.
 TEST(Fuzz, MovingRunKilledWithSigkillAndRestartedLosesNothing) {
   const fs::path whole = fuzz_dir("fuzz_moving_whole"), killed = fuzz_dir("fuzz_moving_killed");
-  std::ostringstream progress;
   FuzzOptions o = options(whole, 2);
   o.method = "float-cubic";
   o.family = "parallel-edges";
   o.count = 2000;
   o.chunk = 50;
-  const FuzzSummary expected = run_fuzz(o, progress);
+  const FuzzSummary expected = run_fuzz(o);
   ASSERT_FALSE(expected.distinct.empty());
   for (const std::string& f : expected.distinct)
     EXPECT_EQ(read_native(f).at(0).kind, QueryKind::EdgeEdge) << f;
@@ -195,13 +187,12 @@ TEST(Fuzz, MovingRunKilledWithSigkillAndRestartedLosesNothing) {
 // folder `name`.
 std::set<std::string> cases_found(const std::string& name, const std::string& method,
                                   const std::string& family, long count, bool metamorphic) {
-  std::ostringstream progress;
   FuzzOptions o = options(fuzz_dir(name), 2);
   o.method = method;
   o.family = family;
   o.count = count;
   o.metamorphic = metamorphic;
-  return run_fuzz(o, progress).distinct;
+  return run_fuzz(o).distinct;
 }
 
 std::string first_line(const std::string& file) {
@@ -270,17 +261,16 @@ TEST(Fuzz, MetamorphicRunStoresVerdictChangesApart) {
 
 TEST(Fuzz, ResumedWithAnotherChunkAndThreadsEndsWithTheSameCases) {
   const fs::path whole = fuzz_dir("fuzz_rechunk_whole"), part = fuzz_dir("fuzz_rechunk_part");
-  std::ostringstream progress;
-  const FuzzSummary expected = run_fuzz(options(whole, 1), progress);
+  const FuzzSummary expected = run_fuzz(options(whole, 1));
   // A run killed part way: chunks of 100 done, some not (their markers gone, as after a kill).
-  run_fuzz(options(part, 2), progress);
+  run_fuzz(options(part, 2));
   const std::vector<fs::path> markers = fuzz_markers_in(part);
   ASSERT_EQ(markers.size(), 12u);
   for (std::size_t k : {1u, 2u, 7u, 11u}) fs::remove(markers[k]);
   for (const int chunk : {37, 1000, 1}) {
     FuzzOptions o = options(part, chunk == 37 ? 2 : 1);
     o.chunk = chunk;
-    const FuzzSummary s = run_fuzz(o, progress);
+    const FuzzSummary s = run_fuzz(o);
     EXPECT_EQ(s.cases, 1200);
     EXPECT_EQ(s.disagreements, expected.disagreements);
     EXPECT_EQ(s.distinct, [&] {
@@ -301,8 +291,7 @@ TEST(Fuzz, ResumedWithAnotherChunkAndThreadsEndsWithTheSameCases) {
 
 TEST(Fuzz, RefusesToStartBesideAnUnfinishedRunWithOtherOptions) {
   const fs::path d = fuzz_dir("fuzz_other_run");
-  std::ostringstream progress;
-  run_fuzz(options(d, 1), progress);
+  run_fuzz(options(d, 1));
   fs::remove(fuzz_markers_in(d).at(3));  // now unfinished
   for (const auto& change : std::vector<std::function<void(FuzzOptions&)>>{
            [](FuzzOptions& o) { o.seed = 8; }, [](FuzzOptions& o) { o.count = 1300; },
@@ -313,7 +302,7 @@ TEST(Fuzz, RefusesToStartBesideAnUnfinishedRunWithOtherOptions) {
     FuzzOptions o = options(d, 1);
     change(o);
     try {
-      run_fuzz(o, progress);
+      run_fuzz(o);
       ADD_FAILURE() << "a run with other options started beside an unfinished one";
     } catch (const FuzzRefused& e) {
       EXPECT_NE(std::string(e.what()).find("unfinished fuzz run with other options (--method "
@@ -326,24 +315,23 @@ TEST(Fuzz, RefusesToStartBesideAnUnfinishedRunWithOtherOptions) {
   // The same run, with another chunk, resumes it; then a run with other options may start.
   FuzzOptions same = options(d, 2);
   same.chunk = 450;
-  EXPECT_EQ(run_fuzz(same, progress).resumed, 1100);
+  EXPECT_EQ(run_fuzz(same).resumed, 1100);
   FuzzOptions other = options(d, 1);
   other.seed = 8;
   other.count = 100;
-  EXPECT_EQ(run_fuzz(other, progress).cases, 100);
+  EXPECT_EQ(run_fuzz(other).cases, 100);
 }
 
 TEST(Fuzz, RefusesAManifestThatDoesNotRecordItsRun) {
   const fs::path d = fuzz_dir("fuzz_manifest");
-  std::ostringstream progress;
   FuzzOptions o = options(d, 1);
   o.count = 100;
-  run_fuzz(o, progress);
+  run_fuzz(o);
   const fs::path manifest = fuzz_markers_in(d).at(0).parent_path() / "manifest";
   ASSERT_TRUE(fs::exists(manifest));
   std::ofstream(manifest) << "fdhcert fuzz run\nmethod paper-intended\nfamily parallel-cross\n"
                              "seed 9\ncount 100\nshard 1/1\n";
-  EXPECT_THROW(run_fuzz(o, progress), FuzzRefused);
+  EXPECT_THROW(run_fuzz(o), FuzzRefused);
 }
 
 TEST(Fuzz, ASecondRunOnTheSameFolderRefuses) {
@@ -352,11 +340,10 @@ TEST(Fuzz, ASecondRunOnTheSameFolderRefuses) {
   const int fd = ::open((d / ".fuzz" / "lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
   ASSERT_GE(fd, 0);
   ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);  // as a running fuzz run holds it
-  std::ostringstream progress;
   FuzzOptions o = options(d, 1);
   o.lock_wait_seconds = 0.2;
   try {
-    run_fuzz(o, progress);
+    run_fuzz(o);
     ADD_FAILURE() << "ran beside a run holding the lock";
   } catch (const FuzzRefused& e) {
     EXPECT_NE(std::string(e.what()).find("another fuzz run is using " + d.string()),
@@ -366,7 +353,7 @@ TEST(Fuzz, ASecondRunOnTheSameFolderRefuses) {
   EXPECT_FALSE(fs::exists(d / "paper-intended")) << "wrote before it had the lock";
   ::close(fd);
   o.count = 100;
-  EXPECT_EQ(run_fuzz(o, progress).cases, 100);
+  EXPECT_EQ(run_fuzz(o).cases, 100);
 }
 
 TEST(Fuzz, CleanUpRemovesOnlyItsOwnTemporaries) {
@@ -381,10 +368,9 @@ TEST(Fuzz, CleanUpRemovesOnlyItsOwnTemporaries) {
     std::ofstream(p) << "the user's\n";
   }
   std::ofstream(d / ".fuzz" / "tmp" / "123.4") << "half a case";  // a killed run's
-  std::ostringstream progress;
   FuzzOptions o = options(d, 2);
   o.count = 300;
-  run_fuzz(o, progress);
+  run_fuzz(o);
   for (const fs::path& p : users) EXPECT_TRUE(fs::exists(p)) << p;
   EXPECT_TRUE(fs::is_empty(d / ".fuzz" / "tmp"));
 }
@@ -394,8 +380,7 @@ TEST(Fuzz, RefusesATemporaryFolderThatIsALink) {
   std::ofstream(elsewhere / "precious") << "the user's\n";
   fs::create_directories(d / ".fuzz");
   fs::create_directory_symlink(elsewhere, d / ".fuzz" / "tmp");
-  std::ostringstream progress;
-  EXPECT_THROW(run_fuzz(options(d, 1), progress), std::runtime_error);
+  EXPECT_THROW(run_fuzz(options(d, 1)), std::runtime_error);
   EXPECT_TRUE(fs::exists(elsewhere / "precious"));
 }
 

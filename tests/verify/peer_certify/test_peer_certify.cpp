@@ -1,6 +1,6 @@
-// Peers certified side by side (fdh/suite/peers.hpp): on the same cases the project's own
-// k-DOPs show 0 violations and the peers' known failures are found, shrunk and saved.
-#include "fdh/suite/peers.hpp"
+// Peers certified side by side (fdh/peer_certify/peer_certify.hpp): on the same cases the project's
+// own k-DOPs show 0 violations and the peers' known failures are found, shrunk and saved.
+#include "fdh/peer_certify/peer_certify.hpp"
 
 #include <gtest/gtest.h>
 

@@ -12,13 +12,13 @@
 
 #include "fdh/cli/cli.hpp"
 
+#include "fdh/certify/certify.hpp"
 #include "fdh/check/registry.hpp"
-#include "fdh/suite/build_info.hpp"
-#include "fdh/suite/certify.hpp"
-#include "fdh/suite/measurements.hpp"
-#include "fdh/suite/report_document.hpp"
-#include "fdh/suite/scene_report.hpp"
-#include "fdh/suite/table1.hpp"
+#include "fdh/report/measurements.hpp"
+#include "fdh/report/report_document.hpp"
+#include "fdh/run/build_info.hpp"
+#include "fdh/run/scene_report.hpp"
+#include "fdh/table1/table1.hpp"
 #include "temp_dir.hpp"
 
 namespace fdh::verify {

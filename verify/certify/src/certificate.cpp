@@ -5,9 +5,9 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
-#include "fdh/io/atomic_file.hpp"
-#include "fdh/suite/certify.hpp"
-#include "fdh/suite/scene_report.hpp"
+#include "fdh/certify/certify.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/run/json_text.hpp"
 
 namespace fdh::verify {
 namespace {

@@ -1,4 +1,4 @@
-#include "fdh/suite/certify.hpp"
+#include "fdh/certify/certify.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -7,23 +7,23 @@
 #include <sstream>
 
 #include "fdh/bvh.hpp"
+#include "fdh/certify/certify_metamorphic.hpp"
 #include "fdh/check/checker.hpp"
 #include "fdh/check/parallel.hpp"
 #include "fdh/check/registry.hpp"
 #include "fdh/cloth/simulation.hpp"
 #include "fdh/exact/kdop.hpp"
 #include "fdh/exact/versions.hpp"
+#include "fdh/gen/case_seed.hpp"
 #include "fdh/gen/families.hpp"
 #include "fdh/gen/soup.hpp"
-#include "fdh/io/atomic_file.hpp"
 #include "fdh/io/case_files.hpp"
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_file.hpp"
-#include "fdh/suite/build_info.hpp"
-#include "fdh/suite/certify_metamorphic.hpp"
-#include "fdh/suite/fuzz.hpp"
-#include "fdh/suite/scene_report.hpp"
-#include "fdh/suite/scene_run.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/run/build_info.hpp"
+#include "fdh/run/scene_report.hpp"
+#include "fdh/run/scene_run.hpp"
 
 namespace fdh::verify {
 namespace fs = std::filesystem;
@@ -282,13 +282,17 @@ CertifyTally scene_tally(const std::string& file, const CertifyOptions& o, const
   return sum;
 }
 
+void tell(const Certificate& c, const std::string& stage, long done, long total) {
+  report(c.options.progress, {stage, done, total, stage == "generator families" ? "queries" : ""});
+}
+
 // Every shipped scene, each on a core of its own (their cloths are independent; a cloth of
 // 64x64 and more also runs its step on every core), counted in the scenes' order.
 void check_scenes(Certificate& c, Certifier& cert) {
   const fs::path dir = fs::path(c.options.corpus_dir) / "scenes";
   if (!fs::is_directory(dir)) return;
   const std::vector<std::string> files = scene_files(dir.string());
-  if (c.options.progress) c.options.progress("scenes", 0, long(files.size()));
+  tell(c, "scenes", 0, long(files.size()));
   const auto scenes = parts_in_order(files.size(), 1, cert.zero(),
                                      [&](std::size_t i, std::size_t, CertifyTally& t) {
                                        t = scene_tally(files[i], c.options, cert);
@@ -308,10 +312,6 @@ PeerOptions peer_options(const CertifyOptions& o) {
   p.save_dir = (fs::path(o.out_dir) / "peers").string();
   p.replay_dir = (fs::path(o.corpus_dir) / "peers").string();
   return p;
-}
-
-void tell(const Certificate& c, const std::string& stage, long done, long total) {
-  if (c.options.progress) c.options.progress(stage, done, total);
 }
 
 void check_corpus(Certificate& c, Certifier& cert) {

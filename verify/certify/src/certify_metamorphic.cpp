@@ -1,5 +1,5 @@
 // certify's metamorphic checks (certify_metamorphic.hpp).
-#include "fdh/suite/certify_metamorphic.hpp"
+#include "fdh/certify/certify_metamorphic.hpp"
 
 #include <utility>
 

@@ -1,5 +1,5 @@
 // What fdhcert fuzz looks for in a case, and the case file it stores for one. Private to
-// fdh_suite (fuzz.cpp).
+// fdh_fuzz (fuzz.cpp).
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-#include "fdh/io/atomic_file.hpp"
+#include "fdh/os/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <streambuf>
 
@@ -17,9 +18,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string temp_path(const std::string& path) {
+// Beside `path`, or in `temp_dir` when one is given.
+std::string temp_path(const std::string& path, const std::string& temp_dir = "") {
   static std::atomic<unsigned long> serial{0};  // unique per call: threads may write at once
-  return path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(serial++);
+  const std::string unique = std::to_string(::getpid()) + "." + std::to_string(serial++);
+  return temp_dir.empty() ? path + ".tmp." + unique : temp_dir + "/" + unique;
 }
 
 [[noreturn]] void fail(const std::string& path, const std::string& what, int errno_value) {
@@ -71,21 +74,6 @@ void check_creatable(const std::string& dir, const std::string& for_path) {
   check_writable_folder(p.string(), for_path);
 }
 
-// Writes all of [data, data + n) to fd; false with errno set on failure.
-bool write_all(int fd, const char* data, std::size_t n) {
-  while (n > 0) {
-    const ssize_t w = ::write(fd, data, n);
-    if (w < 0 && errno == EINTR) continue;
-    if (w <= 0) {
-      if (w == 0) errno = EIO;
-      return false;
-    }
-    data += w;
-    n -= std::size_t(w);
-  }
-  return true;
-}
-
 int open_temp(const std::string& path, const std::string& tmp) {
   refuse_non_regular(path);
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
@@ -116,15 +104,43 @@ void publish(int fd, const std::string& tmp, const std::string& path, int earlie
 
 }  // namespace
 
+bool write_all(int fd, std::string_view data) {
+  while (!data.empty()) {
+    const ssize_t w = ::write(fd, data.data(), data.size());
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) {
+      if (w == 0) errno = EIO;
+      return false;
+    }
+    data.remove_prefix(std::size_t(w));
+  }
+  return true;
+}
+
 std::string system_reason(int errno_value) {
   return std::strerror(errno_value);
 }
 
 void write_file_atomically(const std::string& path, const std::string& content) {
-  const std::string tmp = temp_path(path);
+  write_file_atomically(path, content, "");
+}
+
+void write_file_atomically(const std::string& path, const std::string& content,
+                           const std::string& temp_dir) {
+  const std::string tmp = temp_path(path, temp_dir);
   const int fd = open_temp(path, tmp);
-  const int err = write_all(fd, content.data(), content.size()) ? 0 : errno;
+  const int err = write_all(fd, content) ? 0 : errno;
   publish(fd, tmp, path, err);
+}
+
+bool file_holds(const std::string& path, const std::string& text) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) ||
+      st.st_size != static_cast<off_t>(text.size()))
+    return false;
+  std::ifstream in(path, std::ios::binary);
+  std::string got(text.size(), '\0');
+  return in.read(got.data(), std::streamsize(got.size())) && got == text;
 }
 
 void check_output_path(const std::string& path, bool folder_made_by_run) {
@@ -173,7 +189,7 @@ class AtomicFile::Buffer : public std::streambuf {
   bool drain() {
     if (error_) return false;
     const std::size_t n = std::size_t(pptr() - pbase());
-    if (n && !write_all(fd_, pbase(), n)) error_ = errno;
+    if (n && !write_all(fd_, std::string_view(pbase(), n))) error_ = errno;
     setp(buf_.data(), buf_.data() + buf_.size());
     return error_ == 0;
   }

@@ -1,17 +1,17 @@
-#include "fdh/suite/peers.hpp"
+#include "fdh/peer_certify/peer_certify.hpp"
 
 #include <algorithm>
 #include <filesystem>
 
 #include "fdh/check/checker.hpp"
 #include "fdh/check/parallel.hpp"
+#include "fdh/gen/case_seed.hpp"
 #include "fdh/gen/point_sets.hpp"
 #include "fdh/gen/shrink_point_sets.hpp"
-#include "fdh/io/atomic_file.hpp"
 #include "fdh/io/peer_case_file.hpp"
+#include "fdh/os/atomic_file.hpp"
 #include "fdh/peers/peers.hpp"
-#include "fdh/suite/build_info.hpp"
-#include "fdh/suite/fuzz.hpp"
+#include "fdh/run/build_info.hpp"
 
 namespace fdh::verify {
 namespace fs = std::filesystem;
@@ -183,6 +183,7 @@ PeersReport certify_peers(const PeerOptions& options) {
   const std::uint64_t stream = r.options.seed * 1000 + 500;
   const long batch = 1000;  // cases drawn, then checked, at a time
   for (long first = 0; first < r.options.cases; first += batch) {
+    report(options.progress, {"peers", first, r.options.cases, "cases"});
     std::vector<Drawn> cases;
     for (long i = first; i < std::min(first + batch, r.options.cases); ++i) {
       const std::string seed =

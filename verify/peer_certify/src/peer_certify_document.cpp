@@ -3,7 +3,7 @@
 
 #include <iterator>
 
-#include "fdh/suite/peers.hpp"
+#include "fdh/peer_certify/peer_certify.hpp"
 
 namespace fdh::verify {
 namespace {

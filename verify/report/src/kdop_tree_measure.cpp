@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "fdh/bvh.hpp"
-#include "fdh/suite/measurements.hpp"
+#include "fdh/report/measurements.hpp"
 
 namespace fdh::verify {
 namespace {

@@ -8,7 +8,7 @@
 #include <set>
 
 #include "fdh/io/charts.hpp"
-#include "fdh/suite/report_document.hpp"
+#include "fdh/report/report_document.hpp"
 
 namespace fdh::verify {
 namespace {

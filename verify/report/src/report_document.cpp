@@ -1,4 +1,4 @@
-#include "fdh/suite/report_document.hpp"
+#include "fdh/report/report_document.hpp"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 #include <iterator>
 #include <map>
 
-#include "fdh/io/atomic_file.hpp"
+#include "fdh/os/atomic_file.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -130,14 +130,8 @@ std::string certificate_section(const Certificate& c) {
   return body == std::string::npos ? md : md.substr(body + 2);
 }
 
-Report make_report(const CertifyOptions& options, const Progress& progress) {
-  const auto step = [&](std::string_view what) {
-    if (progress) progress(what, -1, -1);
-  };
-  const auto tick = [&](std::string_view what) -> Tick {
-    if (!progress) return {};
-    return [&progress, what](long done, long total) { progress(what, done, total); };
-  };
+Report make_report(const CertifyOptions& options, const ProgressSink& progress) {
+  const auto step = [&](const std::string& what) { report(progress, {what, 0, 0, ""}); };
   Report r;
   step("certificate");
   r.certificate = certify(options);
@@ -145,10 +139,10 @@ Report make_report(const CertifyOptions& options, const Progress& progress) {
   m.per_family = options.quick ? 100 : 1000;
   m.per_point = options.quick ? 100 : 400;
   step("speed against accuracy");
-  m.speed = speed_accuracy(m.per_family, options.seed, tick("speed against accuracy"));
+  m.speed = speed_accuracy(m.per_family, options.seed, progress);
   m.pareto = pareto_fronts(m.speed);
   step("stability sweeps");
-  m.stability = stability(m.per_point, options.seed, tick("stability sweeps"));
+  m.stability = stability(m.per_point, options.seed, progress);
   step("FDH k");
   for (const int grid : {30, 50, 100}) {
     const std::vector<KdopTreeRow> rows = kdop_tree(grid);

@@ -6,19 +6,20 @@
 #include <vector>
 
 #include "fdh/check/classify.hpp"
+#include "fdh/gen/case_seed.hpp"
 #include "fdh/gen/families.hpp"
-#include "fdh/suite/fuzz.hpp"
-#include "fdh/suite/measurements.hpp"
+#include "fdh/report/measurements.hpp"
 
 namespace fdh::verify {
 
 std::vector<SpeedAccuracyRow> speed_accuracy(long per_family, std::uint64_t seed,
-                                             const Tick& tick) {
+                                             const ProgressSink& progress) {
   std::vector<SpeedAccuracyRow> rows;
   const std::vector<Method> methods = all_methods();
   std::uint64_t stream = 0;
   for (const Family& f : all_families()) {
-    if (tick) tick(long(stream), long(all_families().size()));
+    report(progress,
+           {"speed against accuracy", long(stream), long(all_families().size()), "families"});
     ++stream;
     std::vector<Query> qs;
     for (long i = 0; i < per_family; ++i) {

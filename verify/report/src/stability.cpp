@@ -11,7 +11,7 @@
 #include "fdh/check/checker.hpp"
 #include "fdh/check/parallel.hpp"
 #include "fdh/check/registry.hpp"
-#include "fdh/suite/measurements.hpp"
+#include "fdh/report/measurements.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -244,7 +244,8 @@ const std::vector<StabilitySweep>& stability_sweeps() {
   return sweeps;
 }
 
-std::vector<StabilityRow> stability(long per_point, std::uint64_t seed, const Tick& tick) {
+std::vector<StabilityRow> stability(long per_point, std::uint64_t seed,
+                                    const ProgressSink& progress) {
   std::vector<Method> methods = all_methods();
   methods.erase(
       std::remove_if(methods.begin(), methods.end(), [](const Method& m) { return m.is_twin; }),
@@ -253,7 +254,7 @@ std::vector<StabilityRow> stability(long per_point, std::uint64_t seed, const Ti
   long done = 0;
   for (const SweepDef& def : sweep_defs()) {
     const StabilitySweep& sw = def.sweep;
-    if (tick) tick(done++, long(sweep_defs().size()));
+    report(progress, {"stability sweeps", done++, long(sweep_defs().size()), "sweeps"});
     const auto failure = sweep_rates(def, methods, per_point, seed);
     for (std::size_t m = 0; m < methods.size(); ++m)
       for (std::size_t p = 0; p < failure[m].size(); ++p)

@@ -1,4 +1,4 @@
-#include "fdh/suite/report.hpp"
+#include "fdh/run/classification_output.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-#include "fdh/suite/classify_files.hpp"
+#include "fdh/run/classify_files.hpp"
 
 #include <optional>
 

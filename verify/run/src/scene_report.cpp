@@ -1,4 +1,4 @@
-#include "fdh/suite/scene_report.hpp"
+#include "fdh/run/scene_report.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -10,36 +10,17 @@
 #include <stdexcept>
 
 #include "fdh/cloth/cloth.hpp"
-#include "fdh/io/atomic_file.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/scene_file.hpp"
 #include "fdh/io/scene_output.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/run/json_text.hpp"
 
 namespace fdh::verify {
-double six_digits(double v) {
-  return std::stod(fmt::format("{:.6g}", v));
-}
-
 namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
-
-// The JSON pointer of the first non-finite number in j, if any.
-std::optional<std::string> non_finite_at(const json& j, const std::string& at) {
-  if (j.is_number_float()) {
-    if (std::isfinite(j.get<double>())) return std::nullopt;
-    return at.empty() ? "/" : at;
-  }
-  if (j.is_object()) {
-    for (const auto& [key, value] : j.items())
-      if (auto p = non_finite_at(value, at + "/" + key)) return p;
-  } else if (j.is_array()) {
-    for (std::size_t i = 0; i < j.size(); ++i)
-      if (auto p = non_finite_at(j[i], at + "/" + std::to_string(i))) return p;
-  }
-  return std::nullopt;
-}
 
 // Times and energies to six significant digits, as simulate has always printed them.
 json times_json(const SceneRun& r) {
@@ -57,15 +38,6 @@ json counted(bool yes, long n) {
 }
 
 }  // namespace
-
-std::string json_text(const json& j, const std::string& what) {
-  if (const std::optional<std::string> at = non_finite_at(j, ""))
-    throw std::runtime_error(what +
-                             ": refusing to write a non-finite number (NaN or infinity) "
-                             "into JSON at " +
-                             *at + "; the run's values left the finite range");
-  return j.dump(2) + "\n";
-}
 
 json scene_run_json(const cloth::Scene& scene, const SceneRunOptions& opt, const SceneRun& r) {
   return {{"scene", scene.name},
@@ -161,7 +133,7 @@ std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
     if (opt.movies) movie.emplace(r.scene, r.scene.frames);
     r.options.on_frame = [&](const cloth::Simulation& sim, int f) {
       if (movie) movie->frame(sim, f);
-      if (opt.frame) opt.frame(r.scene, f);
+      report(opt.progress, {"scenes: " + r.scene.name, f, r.scene.frames, "frames"});
     };
     r.run = run_scene(r.scene, r.options);
     r.options.on_frame = nullptr;

@@ -1,4 +1,4 @@
-#include "fdh/suite/scene_run.hpp"
+#include "fdh/run/scene_run.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "fdh/suite/table1.hpp"
+#include "fdh/table1/table1.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <iterator>
 
-#include "fdh/io/atomic_file.hpp"
 #include "fdh/io/charts.hpp"
-#include "fdh/suite/scene_report.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/run/scene_report.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -118,13 +118,15 @@ double Table1Cell::paper_ms() const {
 }
 
 Table1 measure_table1(const cloth::Scene& scene, const std::string& scene_path, int frames,
-                      const std::function<void(const Table1Cell&)>& before) {
+                      const ProgressSink& progress) {
   Table1 t;
+  long done = 0;
   t.scene = scene_path;
   for (const Row& row : kRows)
     for (const int g : Table1Paper::grids) {
       Table1Cell cell{row.method, row.k, g, {}};
-      if (before) before(cell);
+      report(progress, {"table1", done++, 0, "runs",
+                        fmt::format("now {} k={} {}x{}", cell.method, cell.k, g, g)});
       cloth::Scene s = scene;
       s.cloth.grid = g;
       SceneRunOptions opt;

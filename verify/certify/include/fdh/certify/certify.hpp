@@ -5,12 +5,12 @@
 
 #include <array>
 #include <cstdint>
-#include <functional>
 #include <string>
 #include <vector>
 
 #include "fdh/check/registry.hpp"
-#include "fdh/suite/peers.hpp"
+#include "fdh/os/progress.hpp"
+#include "fdh/peer_certify/peer_certify.hpp"
 
 namespace fdh::verify {
 
@@ -27,9 +27,9 @@ struct CertifyOptions {
   long scene_frames = -1;
   int scene_stride = -1;
   std::vector<std::string> extra_files;
-  // Called as the work goes: the stage ("corpus", "families", "scene table", ...), how much of
-  // it is done and of how much (0: unknown). For a progress line; may be empty.
-  std::function<void(const std::string& stage, long done, long total)> progress;
+  // Hears the work as it goes: the stage ("corpus", "generator families", "scenes", ...), how
+  // much of it is done and of how much (0: unknown). May be empty.
+  ProgressSink progress;
 };
 
 // One method's promise on one decision, checked against the exact twin (check/checker.hpp).

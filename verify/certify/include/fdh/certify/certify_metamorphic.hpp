@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "fdh/certify/certify.hpp"
 #include "fdh/check/registry.hpp"
-#include "fdh/suite/certify.hpp"
 
 namespace fdh::verify {
 

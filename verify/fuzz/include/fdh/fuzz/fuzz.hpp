@@ -8,7 +8,8 @@
 // at any moment and restarted loses no case and repeats at most the unfinished chunks.
 // Workers are processes, not threads: RapidCheck's generators keep global state.
 //
-// What a run keeps in OUT/.fuzz/ (fdhcert's own folder; nothing else in OUT is touched but the
+// What a run keeps in OUT/.fuzz/ (a work folder and run folders of fdh/os/work_folder.hpp and
+// run_folder.hpp; fdhcert's own folder; nothing else in OUT is touched but the
 // case files):
 //   lock            held (flock) for the whole run by the run and its workers: a second run on
 //                   the same OUT waits briefly for a killed run's workers to die, then refuses.
@@ -28,10 +29,11 @@
 #pragma once
 
 #include <cstdint>
-#include <ostream>
 #include <set>
 #include <stdexcept>
 #include <string>
+
+#include "fdh/os/progress.hpp"
 
 namespace fdh::verify {
 
@@ -49,7 +51,7 @@ struct FuzzOptions {
   int threads = 0;  // worker processes; 0: every core
   int chunk = 500;  // cases per checkpoint step
   std::string out_dir;
-  bool progress = false;  // a live progress line on `progress_stream`
+  ProgressSink progress;  // hears the cases done and the disagreements found, as it goes
   // How long to wait for OUT's lock before refusing: a killed run's workers die within
   // moments of it, and hold the lock until they have.
   double lock_wait_seconds = 3;
@@ -71,10 +73,7 @@ struct FuzzRefused : std::runtime_error {
 
 // Throws std::invalid_argument for an unknown method or family or an impossible count or
 // shard, FuzzRefused as above, std::runtime_error for I/O failures (naming the path).
-FuzzSummary run_fuzz(const FuzzOptions& opt, std::ostream& progress_stream);
-
-// The seed of case i of a run: splitmix64 of (seed, i).
-std::uint64_t case_seed(std::uint64_t seed, long i);
+FuzzSummary run_fuzz(const FuzzOptions& opt);
 
 // The first case of shard `shard` (0-based) of `shards` over `count` cases: count·shard/shards,
 // without overflow for any count >= 0 and 0 <= shard <= shards.

@@ -6,6 +6,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fdh::verify {
@@ -13,6 +14,18 @@ namespace fdh::verify {
 // Throws std::runtime_error naming the path and the system's reason when the file cannot be
 // written, or when the path exists and is not a regular file. Leaves no temporary file.
 void write_file_atomically(const std::string& path, const std::string& content);
+// The same with the temporary file made in `temp_dir` (on the same file system as `path`), for
+// a run that clears its own temporaries (fdh/os/work_folder.hpp).
+void write_file_atomically(const std::string& path, const std::string& content,
+                           const std::string& temp_dir);
+
+// Whether `path` is a regular file (not a link) holding exactly `text`: a write that would
+// change nothing.
+bool file_holds(const std::string& path, const std::string& text);
+
+// Writes all of `data` to `fd`, retrying short writes; false with errno set on failure.
+// Async-signal-safe (write(2) only): a forked child may call it.
+bool write_all(int fd, std::string_view data);
 
 // Checks, before a run writes anything, that `path` can take an output file: it is absent or a
 // regular file (a symbolic link is judged by its target), and its folder exists and is

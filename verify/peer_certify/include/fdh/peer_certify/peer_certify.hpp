@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fdh/check/registry.hpp"
+#include "fdh/os/progress.hpp"
 
 namespace fdh::verify {
 
@@ -23,6 +24,7 @@ struct PeerOptions {
   int keep = -1;           // shrunk cases kept per method and property; -1: 1 quick, 3 full
   std::string save_dir;    // shrunk cases go to <save_dir>/<library>/; empty: not saved
   std::string replay_dir;  // stored cases replayed from here (corpus/peers); empty: none
+  ProgressSink progress;   // hears the cases checked per property
 };
 
 struct PeerProperty {

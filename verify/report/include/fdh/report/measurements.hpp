@@ -4,9 +4,10 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <string>
 #include <vector>
+
+#include "fdh/os/progress.hpp"
 
 namespace fdh::verify {
 
@@ -22,10 +23,9 @@ struct SpeedAccuracyRow {
 // Every method of the registry on `per_family` queries of every generator family, static and
 // moving; a method is measured on the queries it applies to, and has no row where it applies
 // to none (the paper's readings have no moving rows).
-// `tick(done, total)` after each family (for a progress line).
-using Tick = std::function<void(long done, long total)>;
+// `progress` hears the families done ("speed against accuracy").
 std::vector<SpeedAccuracyRow> speed_accuracy(long per_family, std::uint64_t seed,
-                                             const Tick& tick = {});
+                                             const ProgressSink& progress = {});
 
 // The lower-left envelope of `rows`: the points no other point beats in both time and error
 // rate, fastest first.
@@ -63,7 +63,8 @@ const std::vector<StabilitySweep>& stability_sweeps();
 //              across the triangle's edge (p = 0..60)
 // Rows run sweep by sweep, and within a sweep method by method, so each curve is contiguous.
 // `tick(done, total)` after each sweep.
-std::vector<StabilityRow> stability(long per_point, std::uint64_t seed, const Tick& tick = {});
+std::vector<StabilityRow> stability(long per_point, std::uint64_t seed,
+                                    const ProgressSink& progress = {});
 
 // The FDH tree of one k on a cloth over a sphere: medians of 20 runs.
 struct KdopTreeRow {

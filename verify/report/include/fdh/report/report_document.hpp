@@ -3,13 +3,12 @@
 // measurements.hpp; nothing is read back from the files written.
 #pragma once
 
-#include <functional>
 #include <string>
-#include <string_view>
 #include <vector>
 
-#include "fdh/suite/certify.hpp"
-#include "fdh/suite/measurements.hpp"
+#include "fdh/certify/certify.hpp"
+#include "fdh/os/progress.hpp"
+#include "fdh/report/measurements.hpp"
 
 namespace fdh::verify {
 
@@ -26,14 +25,11 @@ struct Report {
   Measurements measurements;
 };
 
-// progress(step, -1, -1) as a step starts, then progress(step, done, total) as it goes.
-using Progress = std::function<void(std::string_view step, long done, long total)>;
-
 // Certifies (options as for certify; the first violating case is saved in options.out_dir)
 // and measures: 1000 queries per family and 400 per stability point, or 100 and 100 quick.
-// `progress` hears each step as it starts and goes (certify's own progress is
-// options.progress).
-Report make_report(const CertifyOptions& options, const Progress& progress = {});
+// `progress` hears each step as it starts (done 0 of 0) and as it goes (certify's own progress
+// is options.progress).
+Report make_report(const CertifyOptions& options, const ProgressSink& progress = {});
 
 // Into report.certificate.options.out_dir: certificate.json and .md, data/*.csv, the charts
 // (speed_accuracy, stability, kdop_k as .png and .svg) and report.md. Throws

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "fdh/check/classify.hpp"
-#include "fdh/suite/report.hpp"
+#include "fdh/run/classification_output.hpp"
 
 namespace fdh::verify {
 

@@ -11,7 +11,9 @@
 #include "fdh/cloth/scene.hpp"
 #include "fdh/io/movie.hpp"
 #include "fdh/mesh.hpp"
-#include "fdh/suite/scene_run.hpp"
+#include "fdh/os/progress.hpp"
+#include "fdh/run/json_text.hpp"
+#include "fdh/run/scene_run.hpp"
 
 namespace fdh::verify {
 
@@ -54,9 +56,9 @@ struct SceneFolderRun {
 
 // What run_scene_folder does beyond the runs: movies, and calls after each frame and scene.
 struct SceneFolderOptions {
-  bool movies = false;  // also OUT/<name>-movie.png (SceneMovie)
-  std::function<void(const cloth::Scene&, int frame)> frame;  // after each frame (progress)
-  std::function<void(const SceneFolderRun&)> done;            // after each scene
+  bool movies = false;                              // also OUT/<name>-movie.png (SceneMovie)
+  ProgressSink progress;                            // hears each scene's frames ("scenes: NAME")
+  std::function<void(const SceneFolderRun&)> done;  // after each scene
 };
 
 // Every *.scene in `scene_dir` (sorted by name), run with simulate's defaults; writes
@@ -69,13 +71,5 @@ std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
 // One line for people: the scene, its grid and frames, ms per frame, FP and FN, the exact
 // audit (inside, crossing, self-crossing).
 std::string scene_summary_line(const SceneFolderRun& r);
-
-// j as text (two-space indented, then a newline), the one way every JSON output is written.
-// JSON has no NaN or infinity (nlohmann would write null silently): a non-finite number
-// anywhere in j throws std::runtime_error naming its place (a JSON pointer) and `what`.
-std::string json_text(const nlohmann::ordered_json& j, const std::string& what);
-
-// v to six significant digits: the precision of every time and energy in the JSON outputs.
-double six_digits(double v);
 
 }  // namespace fdh::verify

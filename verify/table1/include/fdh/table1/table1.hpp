@@ -10,7 +10,8 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "fdh/cloth/scene.hpp"
-#include "fdh/suite/scene_run.hpp"
+#include "fdh/os/progress.hpp"
+#include "fdh/run/scene_run.hpp"
 
 namespace fdh::verify {
 
@@ -36,10 +37,10 @@ struct Table1 {
 };
 
 // Runs `scene` at every grid size of the paper with linear-system and paper-intended at
-// k = 18 and robust at k = 6, 14, 18, 26; frames < 0 takes the scene's. `before` is called
-// before each run (for progress).
+// k = 18 and robust at k = 6, 14, 18, 26; frames < 0 takes the scene's. `progress` hears each
+// run as it starts.
 Table1 measure_table1(const cloth::Scene& scene, const std::string& scene_path, int frames,
-                      const std::function<void(const Table1Cell&)>& before = {});
+                      const ProgressSink& progress = {});
 
 // The text `fdhcert table1` prints: ms per frame beside the paper's, then each run's accuracy.
 std::string table1_text(const Table1& t);
