@@ -37,8 +37,8 @@ std::map<std::string, std::vector<Query>> sample_sets() {
     const auto kind = verify::kind_from_folder(f.string());
     if (!kind) continue;
     const std::string set = f.parent_path().parent_path().filename().string();
-    auto q = verify::read_benchmark_csv(f.string(), *kind);
-    sets[set].insert(sets[set].end(), q.begin(), q.end());
+    for (const verify::QueryRecord& r : verify::read_benchmark_csv(f.string(), *kind))
+      sets[set].push_back(r.query);
   }
   return sets;
 }

@@ -10,6 +10,7 @@
 #include "fdh/check/query_times.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
+#include "fdh/io/record_scope.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/run/classification_output.hpp"
 #include "fdh/run/classify_files.hpp"
@@ -64,13 +65,13 @@ struct ClassifyOptions {
   int rounds = 7;
 };
 
-std::string where_and_id(const Query& q) {
+std::string where_and_id(const QueryRecord& q) {
   return where(q) + " (query " + q.id + ")";
 }
 
 // Prints every disagreement the checker finds: the twin against a file's truth, and each method
 // that promises something (registry.hpp) against the twin. Returns how many it found.
-std::size_t report_disagreements(const std::vector<Query>& queries,
+std::size_t report_disagreements(const std::vector<QueryRecord>& queries,
                                  const std::vector<Method>& methods, const Classification& c,
                                  std::ostream& err) {
   std::string twin = "exact";
@@ -78,7 +79,7 @@ std::size_t report_disagreements(const std::vector<Query>& queries,
     if (m.is_twin) twin = m.name;
   std::size_t found = 0;
   for (std::size_t i = 0; i < queries.size(); ++i) {
-    const std::optional<bool> agrees = twin_matches_truth(queries[i], c.exact[i]);
+    const std::optional<bool> agrees = twin_matches_truth(stated(queries[i].truth), c.exact[i]);
     if (!agrees || *agrees) continue;
     ++found;
     err << "fdhcert: " << twin << " disagrees with the file's truth at " << where_and_id(queries[i])
@@ -99,8 +100,11 @@ std::size_t report_disagreements(const std::vector<Query>& queries,
 }
 
 // Each method's time over the base's, query by query: printed, and returned for --json.
-nlohmann::ordered_json print_time_ratios(const ClassifyOptions& o, const std::vector<Query>& qs,
+nlohmann::ordered_json print_time_ratios(const ClassifyOptions& o,
+                                         const std::vector<QueryRecord>& records,
                                          std::vector<Method> methods, std::ostream& out) {
+  const std::vector<Query> qs = queries_of(records);
+  const RecordScope asking(records, qs);  // a plug-in's crash names FILE:LINE
   std::size_t base = methods.size();
   for (std::size_t m = 0; m < methods.size(); ++m)
     if (methods[m].name == o.time_ratio) base = m;
@@ -121,7 +125,7 @@ nlohmann::ordered_json print_time_ratios(const ClassifyOptions& o, const std::ve
   }
   for (const TimeRatio& r : time_ratios(qs, times, methods, base, o.ratio_limit)) {
     if (r.method == o.time_ratio) continue;
-    const std::string worst = where_and_id(qs[r.worst]);
+    const std::string worst = where_and_id(records[r.worst]);
     j["methods"][r.method][to_string(r.decision)] = {{"queries", r.queries},
                                                      {"max", r.max},
                                                      {"median", r.median},

@@ -17,6 +17,7 @@
 #include "fdh/gen/case_seed.hpp"
 #include "fdh/gen/families.hpp"
 #include "fdh/io/case_files.hpp"
+#include "fdh/io/record_scope.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/os/child_process.hpp"
 #include "fdh/os/folders.hpp"
@@ -127,14 +128,19 @@ struct Run {
     }
   }
 
+  bool fails(const Generated& g) const {
+    const QueryRecord r = g.record();
+    const RecordScope asking(r);  // a plug-in's crash names the family
+    return target.fails(g.query);
+  }
+
   // Runs cases [r.begin, r.end), writes their case files, then the marker; its disagreements.
   long run_chunk(IndexRange r) const {
     long disagreements = 0;
     std::vector<std::string> files;
     for (long i = r.begin; i < r.end; ++i) {
-      std::optional<Generated> g =
-          shrunk_failure(generator, case_seed(opt.seed, i),
-                         [this](const Generated& x) { return target.fails(x.query); });
+      std::optional<Generated> g = shrunk_failure(generator, case_seed(opt.seed, i),
+                                                  [this](const Generated& x) { return fails(x); });
       if (!g) continue;
       ++disagreements;
       const std::string name = case_hash(g->query) + ".vf";

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fdh/check/classify.hpp"
+#include "fdh/io/query_record.hpp"
 #include "fdh/run/classification_output.hpp"
 
 namespace fdh::verify {
@@ -14,7 +15,7 @@ namespace fdh::verify {
 struct ClassifiedFiles {
   std::vector<FileClassification> files;  // in the order given, those without queries left out
   Classification total;
-  std::vector<Query> all;  // every query read, in order
+  std::vector<QueryRecord> all;  // every query read, in order
 };
 
 // kind: "vf" or "ee" for CSV files whose path names no vertex-face or edge-edge folder, or ""
