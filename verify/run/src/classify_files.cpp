@@ -1,0 +1,34 @@
+#include "fdh/run/classify_files.hpp"
+
+#include <optional>
+
+#include "fdh/io/input_error.hpp"
+#include "fdh/io/query_io.hpp"
+#include "fdh/io/record_scope.hpp"
+
+namespace fdh::verify {
+
+ClassifiedFiles classify_files(const std::vector<std::string>& files,
+                               const std::vector<Method>& methods, const std::string& kind) {
+  std::optional<QueryKind> k;
+  if (!kind.empty()) k = kind == "ee" ? QueryKind::EdgeEdge : QueryKind::VertexFace;
+  std::vector<std::pair<std::string, std::vector<QueryRecord>>> read;  // every file read first
+  for (const std::string& f : files) {
+    std::vector<QueryRecord> qs = read_query_file(f, k);
+    if (!qs.empty()) read.emplace_back(f, std::move(qs));
+  }
+  if (read.empty()) throw InputError(files.empty() ? "" : files.front(), 0, "no query to classify");
+  ClassifiedFiles out;
+  std::vector<Classification> parts;
+  for (auto& [file, qs] : read) {
+    const std::vector<Query> queries = queries_of(qs);
+    const RecordScope asking(qs, queries);  // a plug-in's crash names FILE:LINE
+    parts.push_back(classify(queries, truths_of(qs), methods));
+    out.files.push_back({file, parts.back()});
+    out.all.insert(out.all.end(), qs.begin(), qs.end());
+  }
+  out.total = join(parts);
+  return out;
+}
+
+}  // namespace fdh::verify
