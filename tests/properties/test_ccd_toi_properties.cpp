@@ -63,7 +63,7 @@ TEST(SampleToi, RobustEnclosesTheExactContactTimeOnEveryQuery) {
   for (const fs::path& file : files) {
     const auto kind = kind_from_folder(file.string());
     if (!kind) continue;
-    const std::vector<Query> qs = read_benchmark_csv(file.string(), *kind);
+    const std::vector<Query> qs = queries_of(read_benchmark_csv(file.string(), *kind));
     for (std::size_t i = 0; i < qs.size(); ++i, ++checked)
       for (const double w : kToiWidths)
         EXPECT_EQ(broken_toi_promise(qs[i], w), "") << file << " query " << i << " w " << w;
