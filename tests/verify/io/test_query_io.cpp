@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "fdh/io/input_error.hpp"
+#include "temp_dir.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -42,7 +43,7 @@ TEST(QueryIo, WriteNativeRoundTripsExactly) {
   for (int i = 0; i < 8; ++i) q.query.x[i] = Vec3{0.1 * i, -1e-300 * i, 3e300 / (i + 1)};
   std::stringstream ss;
   write_native(ss, q);
-  const std::string path = ::testing::TempDir() + "roundtrip.vf";
+  const std::string path = (fresh_temp_dir("roundtrip") / "roundtrip.vf").string();
   FILE* f = fopen(path.c_str(), "w");
   fputs(ss.str().c_str(), f);
   fclose(f);

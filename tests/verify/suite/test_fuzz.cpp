@@ -31,9 +31,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh folder of this process's own: test binaries of other build folders may run at once.
 fs::path fuzz_dir(const std::string& name) {
-  return fresh_temp_dir(name + "_" + std::to_string(::getpid()));
+  return fresh_temp_dir(name);
 }
 
 FuzzOptions options(const fs::path& out, int threads) {
