@@ -21,6 +21,7 @@
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/record_scope.hpp"
 #include "fdh/io/scene_file.hpp"
+#include "fdh/io/scene_schema.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/run/build_info.hpp"
 #include "fdh/run/scene_report.hpp"
@@ -376,7 +377,7 @@ Certificate certify(const CertifyOptions& options) {
   c.options = options;
   if (c.options.per_family < 0) c.options.per_family = options.quick ? 200 : 3000;
   if (c.options.soups < 0) c.options.soups = options.quick ? 30 : 300;
-  if (c.options.scene_frames < 0) c.options.scene_frames = options.quick ? 600 : 100000000;
+  if (c.options.scene_frames < 0) c.options.scene_frames = options.quick ? 600 : kMaxFrames;
   if (c.options.scene_stride < 1) c.options.scene_stride = options.quick ? 50 : 10;
   c.commit = build_commit();
   c.cgal = exact::cgal_library_version();

@@ -83,6 +83,7 @@ CLI::Option* add_number_option(CLI::App& cmd, const std::string& name, T& value,
 // shard arithmetic of fuzz/src/fuzz.cpp) stays below 10^18 < 2^63 - 1.
 constexpr long kMaxFuzzCount = 1'000'000'000'000L;
 constexpr long kMaxFuzzShards = 1'000'000L;
+constexpr long kMaxGeneratedQueries = 100'000'000L;  // generate --count
 static_assert(kMaxFuzzCount <= INT64_MAX / (kMaxFuzzShards + 1), "count * shard overflows");
 
 // `s` for a message: in quotes, at most about 80 characters (then "..." and its length),

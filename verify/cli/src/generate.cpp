@@ -62,7 +62,7 @@ Command add_generate(CLI::App& app) {
       ->check(one_of(families));
   cmd->add_option("--out", o->file, "the file to write")->required()->type_name("FILE");
   add_number_option(*cmd, "--count", o->count, "queries to write (default 10000)", "N", 1L,
-                    100000000L);
+                    kMaxGeneratedQueries);
   add_seed_option(*cmd, o->seed, "the run's seed (default 1)");
   return {cmd, [o](const Io& io) { return run_generate(*o, io); }};
 }

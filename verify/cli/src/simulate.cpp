@@ -10,6 +10,7 @@
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_file.hpp"
 #include "fdh/io/scene_output.hpp"
+#include "fdh/io/scene_schema.hpp"
 #include "fdh/kdop.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/run/scene_report.hpp"
@@ -203,13 +204,17 @@ int run_simulate(SimulateOptions& o, const Io& io) {
   return 0;
 }
 
-// --thickness: a length >= 0 in m, read as query files read numbers.
-CLI::Validator length_validator() {
+// An override of a scene value (--grid, --frames, --thickness): a number, read as query files
+// read numbers, within the value's range in the scene schema (fdh/io/scene_schema.hpp), with
+// the scene reader's words.
+CLI::Validator scene_value_validator(const char* field) {
   return CLI::Validator(
-      [](std::string& s) -> std::string {
+      [field](std::string& s) -> std::string {
+        const SceneValue& f = scene_value(field);
         std::string why;
-        const std::optional<double> t = parse_double(s, why);
-        return t && *t >= 0 ? "" : "takes a length >= 0 in m, not " + quoted_input(s);
+        const std::optional<double> v = parse_double(s, why);
+        if (!v) return why;
+        return f.admits(*v) ? "" : f.refusal(field, quoted_input(s), *v);
       },
       "");
 }
@@ -218,10 +223,10 @@ void add_scene_options(CLI::App& cmd, SimulateOptions& o) {
   cmd.add_option("SCENE", o.scene_path, "a .scene file (corpus/scenes/)")->required();
   cmd.add_option("--grid", o.grid, "particles per side (default: the scene's)")
       ->type_name("N")
-      ->check(CLI::Range(2, 4000));
+      ->check(scene_value_validator("grid"));
   cmd.add_option("--frames", o.run.frames, "frames to run (default: the scene's)")
       ->type_name("F")
-      ->check(CLI::Range(0, 100000000));
+      ->check(scene_value_validator("frames"));
   cmd.add_option("--narrow", o.run.narrow,
                  "robust (default), exact, paper-intended, paper-literal or\nlinear-system")
       ->type_name("METHOD")
@@ -233,7 +238,7 @@ void add_scene_options(CLI::App& cmd, SimulateOptions& o) {
                  "the collision skin in m (default: the scene's; 0 collides\n"
                  "with the obstacles' own surfaces, see docs/cloth.md)")
       ->type_name("T")
-      ->check(length_validator());
+      ->check(scene_value_validator("thickness"));
   cmd.add_option("--self", o.self,
                  "the cloth against itself: moving vertex-face and edge-edge\n"
                  "tests with robust CCD among primitives sharing no particle\n"

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "fdh/io/scene_file.hpp"
+#include "fdh/io/scene_schema.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/table1/table1.hpp"
 #include "progress.hpp"
@@ -66,7 +67,7 @@ Command add_table1(CLI::App& app) {
   cmd->add_option("--scene", o->scene, "the scene (default: corpus/scenes/table.scene)")
       ->type_name("FILE");
   add_number_option(*cmd, "--frames", o->frames, "frames per run (default: the scene's)", "F", 1,
-                    100000000);
+                    int(kMaxFrames));
   cmd->add_flag("--json", o->json, "print one JSON object instead of the text (below)");
   add_quiet_flag(*cmd, o->quiet);
   cmd->add_option("--out", o->out_dir,

@@ -12,6 +12,7 @@
 
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
+#include "fdh/io/scene_schema.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -19,44 +20,17 @@ namespace {
 using cloth::Obstacle;
 using cloth::Scene;
 
-// The ranges of docs/limits.md ("Scene values"): wide enough for any cloth on a human scale,
-// narrow enough that a run stays finite (no inf or nan reaches an output).
-struct Range {
-  double lo, hi;
-  bool open_lo;  // lo itself excluded
-  const char* unit;
-};
-constexpr Range kCoordinate = {-1e3, 1e3, false, "m"};
-constexpr Range kSize = {1e-3, 1e3, false, "m"};
-constexpr Range kRadius = {1e-4, 1e3, false, "m"};
-constexpr Range kMass = {1e-6, 1e6, false, "kg"};
-constexpr Range kStructural = {0, 1e9, true, "N/m"};
-constexpr Range kSpring = {0, 1e9, false, "N/m"};
-constexpr Range kDamping = {0, 1e3, false, "1/s"};
-constexpr Range kGravity = {-1e3, 1e3, false, "m/s^2"};
-constexpr Range kWind = {-1e3, 1e3, false, "m/s"};
-constexpr Range kUnit = {0, 1, false, ""};
-constexpr Range kDt = {1e-9, 1, false, "s"};
-constexpr Range kFriction = {0, 1e3, false, ""};
-constexpr Range kThickness = {0, 1e3, false, "m"};
-constexpr double kMinBoxSide = 1e-4;  // m
-constexpr double kMinStep = 1e-9;     // s, the least step a run takes
-constexpr long kMaxFrames = 100000000;
-constexpr int kMaxSphereLevel = 6;
-
 std::string num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", v);
   return buf;
 }
 
-bool in_range(const Range& r, double v) {
-  return (r.open_lo ? v > r.lo : v >= r.lo) && v <= r.hi;
-}
+const char* const kComponent[3] = {" x", " y", " z"};
 
-std::string range_text(const Range& r) {
-  return (r.open_lo ? "(" : "[") + num(r.lo) + ", " + num(r.hi) + "]" +
-         (*r.unit ? std::string(" ") + r.unit : "");
+// A field's name in messages: a vector's component adds " x", " y" or " z".
+std::string name_of(const SceneValue& f, int component) {
+  return f.components == 3 ? std::string(f.field) + kComponent[component] : f.field;
 }
 
 long sphere_triangles(int level) {
@@ -83,23 +57,23 @@ class Line {
     if (!v) fail(key_ + ": " + why);
     return *v;
   }
-  // Value i, named `field` in a message, within `r`.
-  double ranged(std::size_t i, const std::string& field, const Range& r) const {
+  // Value i, named `name` in a message, within f's range.
+  double ranged(std::size_t i, const std::string& name, const SceneValue& f) const {
     const double v = number(i);
-    if (!in_range(r, v)) fail(field + " must be in " + range_text(r) + ", not " + quote(words_[i]));
+    if (!f.admits(v)) fail(f.refusal(name, quote(words_[i]), v));
     return v;
   }
-  long integer(std::size_t i, long lo, long hi, const std::string& raise = "") const {
+  // Value i, a whole number within f's range (named by the keyword, as the line shows it).
+  long integer(std::size_t i, const SceneValue& f) const {
     const double v = number(i);
-    if (v != std::floor(v) || v < lo || v > hi)
-      fail(key_ + " must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-           "], not " + quote(words_[i]) + (v > hi && !raise.empty() ? "; " + raise : ""));
+    if (!f.admits(v)) fail(f.refusal(key_, quote(words_[i]), v));
     return long(v);
   }
-  Vec3 vec(std::size_t i, const Range& r) const {
-    return {ranged(i, key_ + " x", r), ranged(i + 1, key_ + " y", r),
-            ranged(i + 2, key_ + " z", r)};
+  Vec3 vec(std::size_t i, const SceneValue& f) const {
+    return {ranged(i, name_of(f, 0), f), ranged(i + 1, name_of(f, 1), f),
+            ranged(i + 2, name_of(f, 2), f)};
   }
+  const std::string& key() const { return key_; }
   [[noreturn]] void fail(const std::string& what) const { throw InputError(path_, line_, what); }
 
  private:
@@ -111,99 +85,82 @@ class Line {
 
 using Reader = std::function<void(const Line&, Scene&)>;
 
-// One entry per keyword of the format, with its range: a table, longer than a function should
-// be because it is data (docs/formats.md lists the same keywords, docs/limits.md the ranges).
+// A keyword whose fields the table reads alone: its values in table order, each in range.
+void read_fields(const Line& l, Scene& s) {
+  std::vector<const SceneValue*> fields;
+  std::size_t n = 0;
+  for (const SceneValue& f : scene_values())
+    if (f.set && l.key() == f.keyword) fields.push_back(&f), n += std::size_t(f.components);
+  l.expect(n, n);
+  std::size_t i = 0;
+  for (const SceneValue* f : fields)
+    for (int c = 0; c < f->components; ++c, ++i)
+      f->set(s, c, f->whole ? double(l.integer(i, *f)) : l.ranged(i, name_of(*f, c), *f));
+}
+
+void read_box(const Line& l, Scene& s) {
+  l.expect(6, 6);
+  Obstacle o;
+  o.lo = l.vec(0, scene_value("box")), o.hi = l.vec(3, scene_value("box"));
+  if (!(o.lo.x < o.hi.x && o.lo.y < o.hi.y && o.lo.z < o.hi.z))
+    l.fail("box: the first corner must be below the second on every axis");
+  const Vec3 side = o.hi - o.lo;
+  const double min_side = scene_value("box side").lo;
+  if (side.x < min_side || side.y < min_side || side.z < min_side)
+    l.fail("box: every side must be at least " + num(min_side) + " m");
+  s.obstacles.push_back(o);
+}
+
+void read_sphere(const Line& l, Scene& s) {
+  l.expect(4, 5);
+  Obstacle o;
+  o.kind = Obstacle::Kind::Sphere;
+  o.centre = l.vec(0, scene_value("sphere"));
+  o.r = l.ranged(3, "sphere radius", scene_value("sphere radius"));
+  if (l.size() == 5) o.level = int(l.integer(4, scene_value("sphere level")));
+  s.obstacles.push_back(o);
+}
+
+void read_name(const Line& l, Scene& s) {
+  l.expect(1, 1);
+  for (const char ch : l.word(0))
+    if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f)
+      l.fail("name " + quote(l.word(0)) + " holds a control byte");
+  s.name = l.word(0);
+}
+
+// Every keyword of the format: those of the schema's table (scene_schema.hpp) it reads alone,
+// and those with rules of their own (docs/formats.md lists them all).
 const std::map<std::string, Reader>& readers() {
-  static const std::map<std::string, Reader> r = {
-      {"name",
-       [](const Line& l, Scene& s) {
-         l.expect(1, 1);
-         for (const char ch : l.word(0))
-           if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f)
-             l.fail("name " + quote(l.word(0)) + " holds a control byte");
-         s.name = l.word(0);
-       }},
-      {"grid",
-       [](const Line& l, Scene& s) {
-         l.expect(1, 1);
-         const long max = long(bound_value(kMaxGrid));
-         s.cloth.grid = int(l.integer(0, 2, max, bound_text(kMaxGrid, max)));
-       }},
-      {"size",
-       [](const Line& l, Scene& s) { l.expect(1, 1), s.cloth.size = l.ranged(0, "size", kSize); }},
-      {"centre",
-       [](const Line& l, Scene& s) { l.expect(3, 3), s.cloth.centre = l.vec(0, kCoordinate); }},
-      {"mass",
-       [](const Line& l, Scene& s) { l.expect(1, 1), s.cloth.mass = l.ranged(0, "mass", kMass); }},
-      {"stiffness",
-       [](const Line& l, Scene& s) {
-         l.expect(3, 3);
-         s.cloth.k_structural = l.ranged(0, "stiffness structural", kStructural);
-         s.cloth.k_shear = l.ranged(1, "stiffness shear", kSpring);
-         s.cloth.k_bend = l.ranged(2, "stiffness bend", kSpring);
-       }},
-      {"damping",
-       [](const Line& l, Scene& s) {
-         l.expect(1, 1), s.cloth.damping = l.ranged(0, "damping", kDamping);
-       }},
-      {"gravity",
-       [](const Line& l, Scene& s) { l.expect(3, 3), s.cloth.gravity = l.vec(0, kGravity); }},
-      {"wind", [](const Line& l, Scene& s) { l.expect(3, 3), s.cloth.wind = l.vec(0, kWind); }},
-      {"pin",
-       [](const Line& l, Scene& s) {
-         l.expect(2, 2);
-         s.cloth.pins.push_back({l.ranged(0, "pin u", kUnit), l.ranged(1, "pin v", kUnit)});
-       }},
-      {"box",
-       [](const Line& l, Scene& s) {
-         l.expect(6, 6);
-         Obstacle o;
-         o.lo = l.vec(0, kCoordinate), o.hi = l.vec(3, kCoordinate);
-         if (!(o.lo.x < o.hi.x && o.lo.y < o.hi.y && o.lo.z < o.hi.z))
-           l.fail("box: the first corner must be below the second on every axis");
-         const Vec3 side = o.hi - o.lo;
-         if (side.x < kMinBoxSide || side.y < kMinBoxSide || side.z < kMinBoxSide)
-           l.fail("box: every side must be at least " + num(kMinBoxSide) + " m");
-         s.obstacles.push_back(o);
-       }},
-      {"sphere",
-       [](const Line& l, Scene& s) {
-         l.expect(4, 5);
-         Obstacle o;
-         o.kind = Obstacle::Kind::Sphere;
-         o.centre = l.vec(0, kCoordinate);
-         o.r = l.ranged(3, "sphere radius", kRadius);
-         if (l.size() == 5) o.level = int(l.integer(4, 0, kMaxSphereLevel));
-         s.obstacles.push_back(o);
-       }},
-      {"dt", [](const Line& l, Scene& s) { l.expect(1, 1), s.dt = l.ranged(0, "dt", kDt); }},
-      {"frames", [](const Line& l,
-                    Scene& s) { l.expect(1, 1), s.frames = int(l.integer(0, 0, kMaxFrames)); }},
-      {"restitution",
-       [](const Line& l, Scene& s) {
-         l.expect(1, 1), s.response.restitution = l.ranged(0, "restitution", kUnit);
-       }},
-      {"friction",
-       [](const Line& l, Scene& s) {
-         l.expect(1, 1), s.response.friction = l.ranged(0, "friction", kFriction);
-       }},
-      {"audit_every",
-       [](const Line& l, Scene& s) {
-         l.expect(1, 1), s.audit_every = int(l.integer(0, 1, kMaxFrames));
-       }},
-      {"self_collision",
-       [](const Line& l, Scene& s) {
-         l.expect(1, 1);
-         if (l.word(0) != "on" && l.word(0) != "off")
-           l.fail("self_collision takes on or off, not " + quote(l.word(0)));
-         s.self_collision = l.word(0) == "on";
-       }},
-      {"thickness",
-       [](const Line& l, Scene& s) {
-         l.expect(1, 1);
-         s.thickness = l.word(0) == "auto" ? -1 : l.ranged(0, "thickness", kThickness);
-       }},
-  };
+  static const std::map<std::string, Reader> r = [] {
+    std::map<std::string, Reader> m = {
+        {"name", read_name},
+        {"box", read_box},
+        {"sphere", read_sphere},
+        {"pin",
+         [](const Line& l, Scene& s) {
+           l.expect(2, 2);
+           s.cloth.pins.push_back({l.ranged(0, "pin u", scene_value("pin u")),
+                                   l.ranged(1, "pin v", scene_value("pin v"))});
+         }},
+        {"self_collision",
+         [](const Line& l, Scene& s) {
+           l.expect(1, 1);
+           if (l.word(0) != "on" && l.word(0) != "off")
+             l.fail("self_collision takes on or off, not " + quote(l.word(0)));
+           s.self_collision = l.word(0) == "on";
+         }},
+        {"thickness",
+         [](const Line& l, Scene& s) {
+           l.expect(1, 1);
+           s.thickness =
+               l.word(0) == "auto" ? -1 : l.ranged(0, "thickness", scene_value("thickness"));
+         }},
+    };
+    for (const SceneValue& f : scene_values())
+      if (f.set) m.emplace(f.keyword, read_fields);
+    return m;
+  }();
   return r;
 }
 
@@ -225,64 +182,64 @@ long obstacle_triangles(const Scene& s) {
   return n;
 }
 
-// The whole scene against the ranges, the bounds and the rules that join two fields. `line_of`
-// gives the line that set a keyword (0: a default, or a command-line override).
-void check(const Scene& s, const std::string& path,
-           const std::function<long(const std::string&)>& line_of) {
-  const auto fail = [&](const std::string& key, const std::string& what) {
-    throw InputError(path, line_of(key), what);
+using LineOf = std::function<long(const std::string&)>;
+
+// f's value (component c) within its range, else an InputError at the line that set it.
+void check_value(const SceneValue& f, int c, double v, const std::string& path,
+                 const LineOf& line_of) {
+  if (f.admits(v)) return;
+  const std::string shown = f.whole ? std::to_string((long long)v) : num(v);
+  throw InputError(path, line_of(f.keyword), f.refusal(name_of(f, c), shown, v));
+}
+
+// The obstacles: their fields' ranges, and their triangles within the bound.
+void check_obstacles(const Scene& s, const std::string& path, const LineOf& line_of) {
+  const auto range = [&](const char* field, int c, double v) {
+    check_value(scene_value(field), c, v, path, line_of);
   };
-  const auto range = [&](const std::string& key, const std::string& field, double v,
-                         const Range& r) {
-    if (!in_range(r, v)) fail(key, field + " must be in " + range_text(r) + ", not " + num(v));
+  const auto vec = [&](const char* field, const Vec3& v) {
+    for (int c = 0; c < 3; ++c) range(field, c, v[c]);
   };
-  const auto vec = [&](const std::string& key, const Vec3& v, const Range& r) {
-    range(key, key + " x", v.x, r), range(key, key + " y", v.y, r), range(key, key + " z", v.z, r);
-  };
-  const cloth::ClothSpec& c = s.cloth;
-  const long long max_grid = bound_value(kMaxGrid);
-  if (c.grid < 2 || c.grid > max_grid)
-    fail("grid", "grid must be a whole number in [2, " + std::to_string(max_grid) + "], not " +
-                     std::to_string(c.grid) +
-                     (c.grid > max_grid ? "; " + bound_text(kMaxGrid, max_grid) : ""));
-  range("size", "size", c.size, kSize);
-  vec("centre", c.centre, kCoordinate);
-  range("mass", "mass", c.mass, kMass);
-  range("stiffness", "stiffness structural", c.k_structural, kStructural);
-  range("stiffness", "stiffness shear", c.k_shear, kSpring);
-  range("stiffness", "stiffness bend", c.k_bend, kSpring);
-  range("damping", "damping", c.damping, kDamping);
-  vec("gravity", c.gravity, kGravity);
-  vec("wind", c.wind, kWind);
-  for (const auto& p : c.pins)
-    range("pin", "pin u", p[0], kUnit), range("pin", "pin v", p[1], kUnit);
+  for (const auto& p : s.cloth.pins) range("pin u", 0, p[0]), range("pin v", 0, p[1]);
   for (const Obstacle& o : s.obstacles) {
     if (o.kind == Obstacle::Kind::Sphere) {
-      vec("sphere", o.centre, kCoordinate);
-      range("sphere", "sphere radius", o.r, kRadius);
-      if (o.level < 0 || o.level > kMaxSphereLevel)
-        fail("sphere", "sphere level must be in [0, 6], not " + std::to_string(o.level));
+      vec("sphere", o.centre);
+      range("sphere radius", 0, o.r);
+      if (!scene_value("sphere level").admits(o.level))
+        throw InputError(path, line_of("sphere"),
+                         "sphere level must be in " + scene_value("sphere level").range_text() +
+                             ", not " + std::to_string(o.level));
     } else {
-      vec("box", o.lo, kCoordinate), vec("box", o.hi, kCoordinate);
+      vec("box", o.lo), vec("box", o.hi);
       const Vec3 side = o.hi - o.lo;
-      if (!(side.x >= kMinBoxSide && side.y >= kMinBoxSide && side.z >= kMinBoxSide))
-        fail("box", "box: every side must be at least " + num(kMinBoxSide) + " m");
+      const double min_side = scene_value("box side").lo;
+      if (!(side.x >= min_side && side.y >= min_side && side.z >= min_side))
+        throw InputError(path, line_of("box"),
+                         "box: every side must be at least " + num(min_side) + " m");
     }
   }
   const long long max_tris = bound_value(kMaxObstacleTriangles);
   const long tris = obstacle_triangles(s);
   if (tris > max_tris)
-    fail(s.obstacles.back().kind == Obstacle::Kind::Sphere ? "sphere" : "box",
-         "the obstacles have " + std::to_string(tris) + " triangles, more than " +
-             std::to_string(max_tris) + "; " + bound_text(kMaxObstacleTriangles, max_tris));
-  range("dt", "dt", s.dt, kDt);
-  if (s.frames < 0 || s.frames > kMaxFrames)
-    fail("frames",
-         "frames must be a whole number in [0, 100000000], not " + std::to_string(s.frames));
-  range("restitution", "restitution", s.response.restitution, kUnit);
-  range("friction", "friction", s.response.friction, kFriction);
-  if (s.thickness != -1) range("thickness", "thickness", s.thickness, kThickness);
-  // Two fields together.
+    throw InputError(
+        path, line_of(s.obstacles.back().kind == Obstacle::Kind::Sphere ? "sphere" : "box"),
+        "the obstacles have " + std::to_string(tris) + " triangles, more than " +
+            std::to_string(max_tris) + "; " + bound_text(kMaxObstacleTriangles, max_tris));
+}
+
+// The whole scene against the ranges of the schema's table, the bounds and the rules that join
+// two fields. `line_of` gives the line that set a keyword (0: a default, or a command-line
+// override).
+void check(const Scene& s, const std::string& path, const LineOf& line_of) {
+  for (const SceneValue& f : scene_values())
+    if (f.get)
+      for (int c = 0; c < f.components; ++c) check_value(f, c, f.get(s, c), path, line_of);
+  check_obstacles(s, path, line_of);
+  if (s.thickness != -1) check_value(scene_value("thickness"), 0, s.thickness, path, line_of);
+  const auto fail = [&](const std::string& key, const std::string& what) {
+    throw InputError(path, line_of(key), what);
+  };
+  const cloth::ClothSpec& c = s.cloth;
   if (c.damping * s.dt > 1)
     fail(line_of("damping") > line_of("dt") ? "damping" : "dt",
          "damping " + num(c.damping) + " 1/s times dt " + num(s.dt) +
