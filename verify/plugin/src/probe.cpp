@@ -48,8 +48,10 @@ std::vector<Query> probe_queries() {
 void run_probes(const std::vector<Method>& methods, const std::vector<BoxMethod>& boxes) {
   const std::vector<Query> queries = probe_queries();
   for (const Method& m : methods)
-    for (const Query& q : queries)
+    for (const Query& q : queries) {
       if (m.applies_to(q)) m.hit(q);
+      if (m.gives_toi(q)) m.time_of_impact(q, kDefaultToiWidth);
+    }
   double lo[13], hi[13];
   for (const BoxMethod& b : boxes)
     for (const Query& q : queries)

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,10 @@ struct Classification {
   std::vector<std::size_t> exact_vs_file;  // queries where exact disagrees with the file's truth
   std::size_t static_vf = 0, moving_vf = 0, edge_edge = 0;  // the queries by kind
 };
+
+// The seconds one call of `pass` takes: one call, then, if it took less than about 20 ms, the
+// mean of enough further calls (at most 1000) to fill that.
+double seconds_per_pass(const std::function<void()>& pass);
 
 // Any queries; a method that does not apply to a query (Method::applies_to) gets
 // kNotApplicable there. Each method's time is the mean over enough passes to fill about 20 ms,
