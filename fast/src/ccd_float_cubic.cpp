@@ -1,4 +1,5 @@
 #include "fdh/ccd/float_cubic.hpp"
+#include "fdh/ccd/toi.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -102,21 +103,33 @@ bool touch_at(const Query& q, double t) {
                                          : segments_meet(p0, p1, p2, p3);
 }
 
-}  // namespace
-
-bool float_cubic(const Query& q) {
+// The first root in [0, 1] at which the primitives touch (time order), or none.
+Toi first_touch(const Query& q) {
   const auto& x = q.x;
   // Both kinds: det(x1 - x0, x2 - x0, x3 - x0), i.e. (a-p, b-p, c-p) or (ea1-ea0, eb0-ea0,
   // eb1-ea0).
   const Cubic f =
       coplanarity(x[1] - x[0], x[5] - x[4], x[2] - x[0], x[6] - x[4], x[3] - x[0], x[7] - x[4]);
-  if (f.c[0] == 0 && f.c[1] == 0 && f.c[2] == 0 && f.c[3] == 0)
-    return touch_at(q, 0) || touch_at(q, 1);
+  if (f.c[0] == 0 && f.c[1] == 0 && f.c[2] == 0 && f.c[3] == 0) {
+    for (const double t : {0.0, 1.0})
+      if (touch_at(q, t)) return {true, t, t};
+    return {};
+  }
   double roots[3];
   const int n = roots_in_unit(f, roots);
   for (int i = 0; i < n; ++i)
-    if (touch_at(q, roots[i])) return true;
-  return false;
+    if (touch_at(q, roots[i])) return {true, roots[i], roots[i]};
+  return {};
+}
+
+}  // namespace
+
+bool float_cubic(const Query& q) {
+  return first_touch(q).hit;
+}
+
+Toi float_cubic_toi(const Query& q) {
+  return first_touch(q);
 }
 
 }  // namespace fdh

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "fdh/interval.hpp"
@@ -363,14 +364,15 @@ bool hopeless_at(const Query& q, double t, double w) {
   return unsteady;
 }
 
-// The root of f isolated in `p` (one sign variation, f(lo) f(hi) < 0): narrowed to about 2^-32
+// The root of f isolated in `p` (one sign variation, f(lo) f(hi) < 0), p narrowed in place to
+// where the conditions were evaluated: narrowed to about 2^-32
 // around the rough root, else by halving to 2^-32 wide (or until the halving point's sign is
 // uncertain), then the conditions g_i over the piece, once: certain signs there settle this
 // root wherever it is in the piece. On the
 // benchmark sample, the hard and the generic families, 2^-27 decides as many queries as 2^-40
 // (2^-24 fewer), and deciding at 2^-20 before narrowing further decided no more but cost a
 // second evaluation where it failed.
-Filtered contact_at_root(const Query& q, const Bernstein& f, Piece p, int& evaluations) {
+Filtered contact_at_root(const Query& q, const Bernstein& f, Piece& p, int& evaluations) {
   // A condition about 0 at the root, none clearly < 0: the point slides on an edge, or the
   // edges touch at an end; the intervals would straddle 0. Given up before narrowing.
   const double u = rough_root(p);
@@ -536,10 +538,142 @@ std::optional<Filtered> uncertain_piece(const Query& q, const Piece& p, double e
   return std::nullopt;
 }
 
+// ---- The time of impact: what the search learns of the earliest contact t*.
+
+// A piece's true ends, outward, as doubles: its rounded ends lie within its slack of them
+// (slack >= 2^-51 beyond depth 0, so the subtraction's own rounding stays inside).
+double lo_of(const Piece& p) {
+  return p.depth == 0 ? p.lo : std::max(0.0, p.lo - 2 * p.slack);
+}
+double hi_of(const Piece& p) {
+  return p.depth == 0 ? p.hi : std::min(1.0, p.hi + 2 * p.slack);
+}
+
+// f's Bernstein coefficients again, in extended precision (long double: 64 bits of mantissa on
+// x86; where it is no wider than double, the narrowing below merely gives up sooner), with the
+// same derivation of the error bound (orient3d_filter.hpp) at that precision's unit roundoff.
+using Wide = long double;
+constexpr Wide kWideEps = std::numeric_limits<Wide>::epsilon() / 2;
+
+struct WideBernstein {
+  Wide b[4];
+  Wide err;  // bounds |de Casteljau's value - f(t)| at any double t in [0, 1] (see sign())
+  // f's sign at the double t, where certain: de Casteljau's three levels of (1 - t) x + t y,
+  // 1 - t rounded at most once, are off by < 16 u times the largest |coefficient| (split()).
+  int sign(double t) const {
+    const Wide v = value(t);
+    return v > err ? 1 : (-v > err ? -1 : 0);
+  }
+  Wide value(double t, Wide* slope = nullptr) const {
+    const Wide s = t, r = 1 - s;
+    const Wide a0 = r * b[0] + s * b[1], a1 = r * b[1] + s * b[2], a2 = r * b[2] + s * b[3];
+    const Wide c0 = r * a0 + s * a1, c1 = r * a1 + s * a2;
+    if (slope) *slope = 3 * (c1 - c0);
+    return r * c0 + s * c1;
+  }
+};
+
+V3<Wide> wide(const Vec3& a, const Vec3& b) {  // b - a, in extended precision
+  return {Wide(b.x) - a.x, Wide(b.y) - a.y, Wide(b.z) - a.z};
+}
+
+// As bernstein(): the coefficients off by kOrient3dMeanOfThreeErrBound's 72 u P, evaluation
+// by 16 u (6 P + that) more.
+WideBernstein wide_bernstein(const Query& q) {
+  const auto& x = q.x;
+  const V3<Wide> u[2] = {wide(x[0], x[1]), wide(x[4], x[5])},
+                 v[2] = {wide(x[0], x[2]), wide(x[4], x[6])},
+                 w[2] = {wide(x[0], x[3]), wide(x[4], x[7])};
+  Wide mx = 0, my = 0, mz = 0;
+  for (const V3<Wide>* s : {u, v, w})
+    for (int i = 0; i < 2; ++i)
+      mx = std::max(mx, std::fabs(s[i].x)), my = std::max(my, std::fabs(s[i].y)),
+      mz = std::max(mz, std::fabs(s[i].z));
+  const auto det = [](const V3<Wide>& a, const V3<Wide>& b, const V3<Wide>& c) {
+    return dot(a, cross(b, c));
+  };
+  WideBernstein r{};
+  r.b[0] = det(u[0], v[0], w[0]);
+  r.b[1] = (det(u[1], v[0], w[0]) + det(u[0], v[1], w[0]) + det(u[0], v[0], w[1])) / 3;
+  r.b[2] = (det(u[1], v[1], w[0]) + det(u[1], v[0], w[1]) + det(u[0], v[1], w[1])) / 3;
+  r.b[3] = det(u[1], v[1], w[1]);
+  const Wide p = mx * my * mz, coefficients = 72 * kWideEps * p;
+  r.err = coefficients + 16 * kWideEps * (6 * p + coefficients);
+  return r;
+}
+
+// Narrows [a, b], which holds f's root r isolated in p (f's sign at p's true lower end is
+// s_lo), to `width` with a > 0 (t_lo = 0 only when t* = 0): a certain sign of f at a double m
+// inside p's true ends puts m on one side of r. Newton steps in extended precision guess r; two
+// probes a quarter of the width either side bracket it, else the middle halves [a, b]. False where
+// no sign is certain any more.
+bool narrow_root(const Query& q, const Piece& p, int s_lo, double width, double& a, double& b) {
+  if constexpr (std::numeric_limits<Wide>::digits <= 53) return false;  // no wider than f
+  // Coordinates within 2^100 (robust_ccd_toi_filter) and x87's exponent range: no overflow,
+  // and products of doubles' differences (>= 2^-3300) never underflow.
+  const WideBernstein f = wide_bernstein(q);
+  // (0 and 1 are exact ends: a piece's ends are rounded only where a split cut it.)
+  const double in_lo = p.lo == 0 ? 0 : p.lo + 2 * p.slack,
+               in_hi = p.hi == 1 ? 1 : p.hi - 2 * p.slack;
+  double guess = p.lo + rough_root(p) * (p.hi - p.lo);
+  for (int i = 0; i < 3; ++i) {
+    Wide slope;
+    const Wide v = f.value(guess, &slope), next = guess - v / slope;
+    if (!(next > a && next < b)) break;
+    guess = double(next);
+  }
+  // f(0) != 0 here (a root isolated at 0 has no certain sign there), so t* > 0 and so is a.
+  for (int step = 0; step < 64 && (b - a > width || a == 0); ++step) {
+    const double h = width / 4;
+    const bool near = guess - h > a && guess + h < b;
+    const double probe[2] = {near ? guess - h : a + (b - a) / 2, guess + h};
+    bool moved = false;
+    for (int i = 0; i < (near ? 2 : 1); ++i) {
+      const double m = probe[i];
+      if (!(m > a && m < b && m >= in_lo && m <= in_hi)) continue;
+      const int s = f.sign(m);
+      if (s != 0) (s == s_lo ? a : b) = m, moved = true;
+    }
+    if (!moved) return false;
+  }
+  return b - a <= width && a > 0;
+}
+
+// What subdivide() learns of t* on its way, for robust_ccd_toi_filter.
+struct ToiTrack {
+  double width;
+  double open = 2;  // the earliest true end of a piece left open (2: none), outward
+  FilteredToi out;
+
+  void open_piece(const Piece& p) { open = std::min(open, lo_of(p)); }
+
+  // The search ends on p with `verdict`; with a contact at t = `end` (0 or 1) if end >= 0.
+  void settled(Filtered verdict, const Piece& p, int end) {
+    open_piece(p);
+    out = verdict == Filtered::Yes && end == 0 ? FilteredToi{verdict, 0, 0, true}  // t* = 0
+                                               : FilteredToi{verdict, open, 1, false};
+  }
+
+  // A contact at f's root r isolated in p (f's sign s_lo at p's lower end): where no piece
+  // before p was left open, t* = r.
+  void contact_at_root(const Query& q, const Piece& p, int s_lo) {
+    out.t1 = hi_of(p);
+    if (open < 2) {
+      out.t0 = open;
+      return;
+    }
+    out.t0 = lo_of(p);
+    out.enclosed =
+        (out.t1 - out.t0 <= width && out.t0 > 0) || narrow_root(q, p, s_lo, width, out.t0, out.t1);
+  }
+};
+
 // Stage 2: isolate the roots of f in [0, 1] by Bernstein subdivision (a piece whose
 // coefficients are certain and of one sign holds no root; one sign variation with
 // f(lo) f(hi) < 0 holds exactly one simple root), then decide the contact at each root.
-Filtered subdivide(const Query& q, const Bernstein& f) {
+// Pieces are taken in time order (left before right), so with `toi`, every piece before the
+// current one has been excluded or recorded as open (ToiTrack).
+Filtered subdivide(const Query& q, const Bernstein& f, ToiTrack* toi = nullptr) {
   constexpr int kMaxPieces = 12;
   Stack stack;
   int pieces = 0, evaluations = 0;
@@ -553,15 +687,24 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
     if (v < 0) {           // f's sign uncertain somewhere in p
       const std::optional<Filtered> r = uncertain_piece(q, p, err, stack, evaluations);
       if (r == Filtered::No) continue;  // nothing in p
-      if (r) return *r;
+      if (r) {
+        if (toi) toi->settled(*r, p, open_end(p, err));
+        return *r;
+      }
     }
     if (v == 1 && sign_beyond(p.b[0], err) != sign_beyond(p.b[3], err)) {
-      const Filtered r = contact_at_root(q, f, p, evaluations);
-      if (r == Filtered::Yes) return r;
+      Piece root = p;
+      const Filtered r = contact_at_root(q, f, root, evaluations);
+      if (r == Filtered::Yes) {
+        if (toi) toi->contact_at_root(q, root, sign_beyond(p.b[0], err));
+        return r;
+      }
+      if (r == Filtered::Uncertain && toi) toi->open_piece(p);
       uncertain |= r == Filtered::Uncertain;
       continue;
     }
     if (p.depth == Stack::kMaxDepth || ++pieces > kMaxPieces) {
+      if (toi) toi->open_piece(p);
       uncertain = true;
       continue;
     }
@@ -578,18 +721,28 @@ Filtered subdivide(const Query& q, const Bernstein& f) {
 }  // namespace
 
 Filtered robust_ccd_filter(const Query& q) {
+  return robust_ccd_toi_filter(q, 0).verdict;
+}
+
+FilteredToi robust_ccd_toi_filter(const Query& q, double width) {
   // Interval bounds never overflow below 2^100: the conditions have degree 4 in coordinates.
   for (const Vec3& v : q.x)
     if (!(std::fabs(v.x) <= 0x1p100 && std::fabs(v.y) <= 0x1p100 && std::fabs(v.z) <= 0x1p100))
-      return Filtered::Uncertain;
+      return {};
   // Both kinds: f = det(x1 - x0, x2 - x0, x3 - x0), at t = 0 and t = 1.
   const auto& x = q.x;
   const Vec3 u[2] = {x[1] - x[0], x[5] - x[4]}, v[2] = {x[2] - x[0], x[6] - x[4]},
              w[2] = {x[3] - x[0], x[7] - x[4]};
   const Bernstein f = bernstein(u, v, w);
-  if (!f.valid) return Filtered::Uncertain;
-  if (bernstein_sign(f) != 0) return Filtered::No;
-  return subdivide(q, f);
+  if (!f.valid) return {};
+  if (bernstein_sign(f) != 0) return {Filtered::No, 1, 1, false};
+  if (width <= 0) return {subdivide(q, f), 0, 1, false};
+  ToiTrack toi{width, 2, {}};
+  const Filtered verdict = subdivide(q, f, &toi);
+  if (verdict == Filtered::No) return {Filtered::No, 1, 1, false};
+  toi.out.verdict = verdict;
+  if (verdict == Filtered::Uncertain) toi.out.t0 = std::min(toi.open, 1.0), toi.out.t1 = 1;
+  return toi.out;
 }
 
 }  // namespace fdh

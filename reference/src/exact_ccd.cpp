@@ -148,8 +148,18 @@ class Search {
   void vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec& c);
   void edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVec& b1);
 
-  // The earliest contact found, refined to width < 2^-bits (bits = 0: as found).
+  // The earliest contact found, refined to width < 2^-bits (bits = 0: as found). May be called
+  // again with more bits: the candidates' intervals are refined in place.
   CcdContact result(unsigned long bits);
+
+  // Where the window's end t1 lies against the earliest contact t* found in [t0, t1] (there must
+  // be one): 0 if t* = t1, +1 if t* < t1. A candidate is exact at t1 or lies in an open interval
+  // (lo, hi) with hi <= t1 (polynomial.hpp's Root), so no refinement is needed.
+  int end_against_contact() const {
+    for (const Root& r : found_)
+      if (!r.exact() || r.lo().value() != t1_.value()) return 1;
+    return 0;
+  }
 
  private:
   // Records the first of `roots` (increasing) where `ok` holds.
@@ -309,16 +319,27 @@ CcdContact Search::result(unsigned long bits) {
   return out;
 }
 
-CcdContact run(const Query& q, const CcdOptions& o, bool want_time) {
+// Searches [o.t0, o.t1] for every candidate of the earliest contact.
+void search(const Query& q, const CcdOptions& o, Search& search) {
   if (!(0 <= o.t0 && o.t0 <= o.t1 && o.t1 <= 1))
     throw std::invalid_argument("ccd: the time window must satisfy 0 <= t0 <= t1 <= 1");
-  Search search(o, want_time);
   const std::array<PVec, 4> v = integer_paths(q);
   if (q.kind == QueryKind::VertexFace)
     search.vertex_face(v[0], v[1], v[2], v[3]);
   else
     search.edge_edge(v[0], v[1], v[2], v[3]);
-  return search.result(unsigned(std::max(o.time_bits, 0)));
+}
+
+CcdContact run(const Query& q, const CcdOptions& o, bool want_time) {
+  Search s(o, want_time);
+  search(q, o, s);
+  return s.result(unsigned(std::max(o.time_bits, 0)));
+}
+
+// The bits that make an exact interval narrower than `width`, with two more for the outward
+// rounding to doubles (each end moves by less than 2^-53 in [0, 1]).
+unsigned long bits_for(double width) {
+  return unsigned(std::max(0, -std::ilogb(width))) + 2;
 }
 
 }  // namespace
@@ -329,6 +350,41 @@ CcdContact ccd(const Query& q, const CcdOptions& options) {
 
 bool ccd_hit(const Query& q) {
   return run(q, CcdOptions{}, false).hit;
+}
+
+Toi ccd_toi(const Query& q, double t0, double t1, double width) {
+  if (!(width >= kMinToiWidth && width <= 1))
+    throw std::invalid_argument("ccd_toi: the width must lie in [2^-52, 1]");
+  const CcdOptions o{t0, t1, 0};
+  Search s(o, true);
+  search(q, o, s);
+  // Refined until the doubles are `width` apart: an end that is not a double rounds outward by
+  // up to one of its ulps, so a time such as 1/3 needs its two neighbouring doubles; an exact
+  // time that is a double (a bisection point may land on it) needs none.
+  // And t_lo > 0 unless t* = 0: a contact just after 0 needs as many bits as it is close to 0
+  // (one below 2^-1074, the smallest double, would keep t_lo = 0: no double lies below it).
+  for (unsigned long bits = bits_for(width);; bits += 8) {
+    const CcdContact c = s.result(bits);
+    if (!c.hit) return Toi{};
+    const bool narrow = c.time_hi_up - c.time_lo_down <= width;
+    if (narrow && (c.time_lo_down > 0 || c.time_hi_up == 0 || bits > 1100))
+      return {true, c.time_lo_down, c.time_hi_up};
+    if (bits > 1100)  // the interval holds two doubles apart by > 2^-52 only if wider than that
+      throw std::logic_error("ccd_toi: the contact time did not narrow");
+  }
+}
+
+int compare_with_toi(const Query& q, double t) {
+  if (!(t >= 0 && t <= 1)) return t < 0 ? -1 : 1;  // outside the step (NaN counts as late)
+  // A contact in [0, t] exactly when t* <= t; then t* = t exactly when every candidate for the
+  // earliest contact in [0, t] is t itself (Search::end_against_contact).
+  const CcdOptions before{0, t, 0};
+  Search s(before, true);
+  search(q, before, s);
+  if (s.result(0).hit) return s.end_against_contact();
+  if (!run(q, CcdOptions{t, 1, 0}, false).hit)
+    throw std::invalid_argument("compare_with_toi: the query has no contact");
+  return -1;
 }
 
 }  // namespace fdh::exact

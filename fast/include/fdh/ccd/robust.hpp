@@ -26,6 +26,17 @@ namespace fdh {
 
 Filtered robust_ccd_filter(const Query& q);
 
+// The filter with what it learns of the earliest contact t* on the way (fdh/ccd/toi.hpp): no
+// contact in [0, t0); with Yes, t* <= t1 as well; `enclosed`: t0 <= t* <= t1 certified, with
+// t1 - t0 <= width (its own isolated root narrowed, extended precision where doubles cannot
+// show f's sign that close to it). The verdict is robust_ccd_filter's.
+struct FilteredToi {
+  Filtered verdict = Filtered::Uncertain;
+  double t0 = 0, t1 = 1;
+  bool enclosed = false;
+};
+FilteredToi robust_ccd_toi_filter(const Query& q, double width);
+
 using CcdTest = bool (*)(const Query& q);
 
 inline bool robust_ccd(const Query& q, CcdTest exact_fallback) {

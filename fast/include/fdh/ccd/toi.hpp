@@ -17,6 +17,10 @@ struct Toi {
 // The default width of `robust`'s enclosure: 2^-30 of the step.
 inline constexpr double kDefaultToiWidth = 0x1p-30;
 
+// The narrowest width asked for: the doubles around t* in [1/2, 1] are 2^-53 apart, so an
+// irrational t* next to a double needs the two doubles on either side of that one.
+inline constexpr double kMinToiWidth = 0x1p-52;
+
 // The exact fallback of `robust_ccd_toi`: the exact verdict and an enclosure of t* no wider
 // than `width`, searched in the window [t0, t1] of the step that the filter has already narrowed
 // (the caller guarantees no contact lies in [0, t0), and that a contact, if any, lies in
@@ -24,8 +28,9 @@ inline constexpr double kDefaultToiWidth = 0x1p-30;
 using ExactToi = Toi (*)(const Query& q, double t0, double t1, double width);
 
 // `robust`'s certified TOI: the exact verdict, and t_lo <= t* <= t_hi with t_hi - t_lo <= width
-// (0 < width <= 1). The floating-point filter narrows its own isolated root where it can; the
-// rest goes to exact_fallback with the window it has narrowed.
+// (kMinToiWidth <= width <= 1; std::invalid_argument otherwise). The floating-point filter narrows
+// its own isolated root where it can; the rest goes to exact_fallback with the window it has
+// narrowed.
 Toi robust_ccd_toi(const Query& q, double width, ExactToi exact_fallback);
 
 // `float-cubic`'s TOI: its first root in [0, 1] at which its own contact test passes, as
