@@ -1,4 +1,4 @@
-// CCD on the benchmark sample (../shared/ccd-sample, skipped when absent): for each set (a
+// CCD on the benchmark sample (FDH_CCD_SAMPLE, skipped without one): for each set (a
 // folder: erleben-sliding-spike, unit-tests, ...) and each method that decides moving queries,
 // the mean, median and maximum time per query. Each query is timed on its own, as the mean of
 // `reps` back-to-back calls (reps chosen so that one timing lasts about 2 µs or more: the
@@ -27,7 +27,7 @@ using Clock = std::chrono::steady_clock;
 // Queries of each set: <set>/<vertex-face|edge-edge>/*.csv.
 std::map<std::string, std::vector<Query>> sample_sets() {
   std::map<std::string, std::vector<Query>> sets;
-  const fs::path root = fs::path(FDH_SHARED_DIR) / "ccd-sample";
+  const fs::path root = FDH_CCD_SAMPLE;  // the build's FDH_CCD_SAMPLE, empty for none
   if (!fs::is_directory(root)) return sets;
   std::vector<fs::path> files;
   for (const auto& e : fs::recursive_directory_iterator(root))
@@ -37,8 +37,8 @@ std::map<std::string, std::vector<Query>> sample_sets() {
     const auto kind = verify::kind_from_folder(f.string());
     if (!kind) continue;
     const std::string set = f.parent_path().parent_path().filename().string();
-    auto q = verify::read_benchmark_csv(f.string(), *kind);
-    sets[set].insert(sets[set].end(), q.begin(), q.end());
+    for (const verify::QueryRecord& r : verify::read_benchmark_csv(f.string(), *kind))
+      sets[set].push_back(r.query);
   }
   return sets;
 }

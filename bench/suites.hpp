@@ -8,7 +8,7 @@ namespace fdh::bench {
 void register_narrow_phase();
 
 // ccd_sample/<method>/<set>: mean, median and maximum time per query of each set of
-// ../shared/ccd-sample (none when it is absent).
+// the build's FDH_CCD_SAMPLE, by default ../shared/ccd-sample (none when there is none).
 void register_ccd_sample();
 
 // frame/grid:<n>/self:<0|1>: the table scene's first frames, per grid, without and with the

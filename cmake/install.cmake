@@ -13,23 +13,28 @@ include(CMakePackageConfigHelpers)
 set(FDH_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/fdhcert)
 set_target_properties(fdh_fast PROPERTIES EXPORT_NAME fast)
 set_target_properties(fdh_cloth PROPERTIES EXPORT_NAME cloth)
-set_target_properties(fdh_reference PROPERTIES EXPORT_NAME reference)
 
 install(TARGETS fdh_fast fdh_cloth EXPORT fdhcertFast
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(TARGETS fdh_reference EXPORT fdhcertReference
-        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(TARGETS fdhcert RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# The plug-in ABI (docs/plugins.md): plain C, for users' shared libraries.
-install(FILES ${PROJECT_SOURCE_DIR}/verify/plugin/include/fdh/plugin.h
-        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/fdh)
-foreach(dir fast cloth reference)
+foreach(dir fast cloth)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
 install(EXPORT fdhcertFast NAMESPACE fdhcert:: FILE fdhcertFastTargets.cmake
         DESTINATION ${FDH_CMAKE_DIR})
-install(EXPORT fdhcertReference NAMESPACE fdhcert:: FILE fdhcertReferenceTargets.cmake
-        DESTINATION ${FDH_CMAKE_DIR})
+# reference and the fdhcert program come with the verification suite (FDH_BUILD_VERIFY).
+if(FDH_BUILD_VERIFY)
+  set_target_properties(fdh_reference PROPERTIES EXPORT_NAME reference)
+  install(TARGETS fdh_reference EXPORT fdhcertReference
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/reference/include/
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(EXPORT fdhcertReference NAMESPACE fdhcert:: FILE fdhcertReferenceTargets.cmake
+          DESTINATION ${FDH_CMAKE_DIR})
+  install(TARGETS fdhcert RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  # The plug-in ABI (docs/plugins.md): plain C, for users' shared libraries.
+  install(FILES ${PROJECT_SOURCE_DIR}/verify/plugin/include/fdh/plugin.h
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/fdh)
+endif()
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/fdhcertConfig.cmake.in
   ${PROJECT_BINARY_DIR}/fdhcertConfig.cmake INSTALL_DESTINATION ${FDH_CMAKE_DIR})

@@ -1,18 +1,14 @@
-// A fresh, empty folder for one test, under GoogleTest's temporary directory.
+// A test's own folder for files: unique (mkdtemp) under GoogleTest's temporary directory
+// ($TEST_TMPDIR, else $TMPDIR, else /tmp), named fdh_<name>.XXXXXX, and removed when the test
+// that made it ends, passed or failed (or at exit, for one made outside a test). With
+// FDH_KEEP_TEST_FILES=1 in the environment it is kept, and its path printed.
 #pragma once
-
-#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
 
 namespace fdh {
 
-inline std::filesystem::path fresh_temp_dir(const std::string& name) {
-  const std::filesystem::path d = std::filesystem::path(::testing::TempDir()) / ("fdh_" + name);
-  std::filesystem::remove_all(d);
-  std::filesystem::create_directories(d);
-  return d;
-}
+std::filesystem::path fresh_temp_dir(const std::string& name);
 
 }  // namespace fdh

@@ -60,7 +60,8 @@ double seconds_since(Clock::time_point& t) {
 
 }  // namespace
 
-Simulation::Simulation(const Scene& scene, NarrowPhase narrow, int k, double dt, CcdTest self_exact)
+Simulation::Simulation(const Scene& scene, PointTriangleTest narrow, int k, double dt,
+                       CcdTest self_exact)
     : scene_(scene), cloth_(scene.cloth), narrow_(narrow), dt_(dt > 0 ? dt : scene.dt) {
   if (!narrow_) throw std::invalid_argument("no narrow-phase test");
   for (const Obstacle& o : scene.obstacles) mesh_.append(obstacle_mesh(o, scene.skin()));

@@ -7,8 +7,8 @@
 #include "fdh/exact/ccd.hpp"
 
 int main() {
-  fdh::Query q;  // vertex-face: p a b c at t = 0, then at t = 1
-  q.x = {fdh::Vec3{0.25, 0.25, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+  fdh::Query q;  // vertex-face: v f0 f1 f2 at t = 0, then at t = 1 (fdh/query.hpp)
+  q.x = {fdh::Vec3{0.25, 0.25, 1},  {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
          fdh::Vec3{0.25, 0.25, -1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   const bool hit = fdh::robust_ccd(q, fdh::exact::ccd_hit) && fdh::exact::ccd_hit(q);
   std::printf("falling through: hit at t = %s\n", fdh::exact::ccd(q).time_lo.c_str());

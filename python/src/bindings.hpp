@@ -29,8 +29,8 @@ void add_classify(py::module_& m);
 void add_scene(py::module_& m);
 void add_toi(py::module_& m);
 
-// An N×8×3 array as N queries of `kind` (the order of fdh::Query: vertex-face p a b c at t = 0,
-// then at t = 1; edge-edge a0 a1 b0 b1, then at t = 1). ValueError for another shape or a
+// An N×8×3 array as N queries of `kind` (the order of fdh::Query: vertex-face v f0 f1 f2 at t = 0,
+// then at t = 1; edge-edge ea0 ea1 eb0 eb1, then at t = 1). ValueError for another shape or a
 // non-finite coordinate, naming the query.
 std::vector<Query> queries_of(const Points& a, QueryKind kind);
 

@@ -2,6 +2,8 @@
 // arrays through the same classification and the same JSON, so the tallies are the CLI's.
 #include <nlohmann/json.hpp>
 
+#include <optional>
+
 #include "bindings.hpp"
 #include "fdh/check/classify.hpp"
 #include "fdh/suite/classify_files.hpp"
@@ -35,24 +37,25 @@ py::object classify_files(const std::vector<std::string>& files,
 // The same tallies for queries held in an array: one "file" named "<array>".
 py::object classify_arrays(const Points& a, const std::string& kind, py::object truth,
                            const std::vector<std::string>& methods) {
-  std::vector<Query> qs = queries_of(a, kind_named(kind));
+  const std::vector<Query> qs = queries_of(a, kind_named(kind));
+  std::vector<std::optional<bool>> truths;
   if (!truth.is_none()) {
     const auto t = truth.cast<py::array_t<int, py::array::c_style | py::array::forcecast>>();
     if (t.ndim() != 1 || std::size_t(t.shape(0)) != qs.size())
       throw py::value_error("truth must hold one 0 or 1 per query");
     for (std::size_t i = 0; i < qs.size(); ++i) {
       const int v = t.at(py::ssize_t(i));
-      if (v != 0 && v != 1) throw py::value_error("truth of query " + qs[i].id + " is not 0 or 1");
-      qs[i].truth = v;
+      if (v != 0 && v != 1)
+        throw py::value_error("truth of query " + std::to_string(i) + " is not 0 or 1");
+      truths.push_back(v == 1);
     }
   }
-  for (Query& q : qs) q.file = "<array>";
   const std::vector<verify::Method> ms =
       methods.empty() ? verify::all_methods() : verify::select_methods(methods);
   verify::Classification c;
   {
     py::gil_scoped_release release;
-    c = verify::classify(qs, ms);
+    c = verify::classify(qs, truths, ms);
   }
   const auto j = verify::classification_json({{"<array>", c}}, c, {});
   return to_python(j.dump());

@@ -24,7 +24,6 @@ std::vector<Query> queries_of(const Points& a, QueryKind kind) {
   for (py::ssize_t i = 0; i < a.shape(0); ++i) {
     Query& q = qs[std::size_t(i)];
     q.kind = kind;
-    q.id = std::to_string(i);
     for (py::ssize_t j = 0; j < 8; ++j) {
       q.x[std::size_t(j)] = {v(i, j, 0), v(i, j, 1), v(i, j, 2)};
       if (!std::isfinite(v(i, j, 0)) || !std::isfinite(v(i, j, 1)) || !std::isfinite(v(i, j, 2)))
@@ -44,9 +43,10 @@ py::array_t<bool> decide(const Points& a, const std::string& method, verify::Dec
   const auto& test = m.test[std::size_t(d)];
   if (!test) throw py::value_error(method + " does not decide " + verify::to_string(d));
   if (d == verify::Decision::PointTriangle)
-    for (const Query& q : qs)
-      if (!q.is_static_vf())
-        throw py::value_error("query " + q.id + ": the triangle moves; use vertex_face_ccd");
+    for (std::size_t i = 0; i < qs.size(); ++i)
+      if (!qs[i].is_static_vf())
+        throw py::value_error("query " + std::to_string(i) +
+                              ": the triangle moves; use vertex_face_ccd");
   py::array_t<bool> out(py::ssize_t(qs.size()));
   auto r = out.mutable_unchecked<1>();
   py::gil_scoped_release release;

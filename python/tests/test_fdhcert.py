@@ -2,7 +2,9 @@
 import csv
 import json
 import os
+import shutil
 import subprocess
+import tempfile
 from fractions import Fraction
 from pathlib import Path
 
@@ -14,7 +16,21 @@ import fdhcert
 FDHCERT = os.environ["FDHCERT_BIN"]
 SOURCE = Path(os.environ["FDH_SOURCE_DIR"])
 DATA = SOURCE / "tests" / "data"
-SAMPLE = SOURCE.parent / "shared" / "ccd-sample"
+SAMPLE = os.environ.get("FDH_CCD_SAMPLE", "")  # the build's benchmark sample, empty for none
+
+
+@pytest.fixture
+def scratch():
+    """A folder of this test's own (mkdtemp, named fdh_pytest.*), removed when it ends, passed or
+    failed; kept, and its path printed, with FDH_KEEP_TEST_FILES=1 (as the C++ tests do)."""
+    folder = Path(tempfile.mkdtemp(prefix="fdh_pytest."))
+    try:
+        yield folder
+    finally:
+        if os.environ.get("FDH_KEEP_TEST_FILES") == "1":
+            print(f"FDH_KEEP_TEST_FILES: kept {folder}")
+        else:
+            shutil.rmtree(folder, ignore_errors=True)
 
 
 def program(*args):
@@ -43,14 +59,12 @@ def read_vf(path):
     return kinds, np.array(points).reshape(-1, 8, 3), truths
 
 
-def per_query(path):
-    """The program's per-query verdicts: {method: [0/1/None per query]}."""
-    out = Path(os.environ.get("TMPDIR", "/tmp")) / f"fdhcert-pytest-{os.getpid()}.csv"
-    try:
-        assert program("classify", path, "--per-query", out).returncode == 0
-        rows = list(csv.DictReader(out.open()))
-    finally:
-        out.unlink(missing_ok=True)
+def per_query(path, folder):
+    """The program's per-query verdicts: {method: [0/1/None per query]}, through FOLDER."""
+    out = folder / "per_query.csv"
+    assert program("classify", path, "--per-query", out).returncode == 0
+    with out.open() as f:
+        rows = list(csv.DictReader(f))
     return {m: [None if r[m] == "n/a" else int(r[m]) for r in rows] for m in fdhcert.methods()}
 
 
@@ -65,27 +79,24 @@ def test_classify_of_files_gives_the_programs_tallies(name):
     assert without_times(fdhcert.classify([str(DATA / name)])) == without_times(cli)
 
 
-def test_classify_of_arrays_gives_the_programs_tallies():
+def test_classify_of_arrays_gives_the_programs_tallies(scratch):
     kinds, points, truths = read_vf(DATA / "static.vf")
     keep = [i for i, t in enumerate(truths) if t >= 0]
     mine = fdhcert.classify_arrays(points[keep], truth=np.array(truths)[keep])
     text = "".join(l for l in (DATA / "static.vf").read_text().splitlines(True)
                    if l.startswith("#") or len(l.split()) > 26 or not l.split())
-    path = Path("/tmp") / f"fdhcert-pytest-{os.getpid()}.vf"
+    path = scratch / "labelled.vf"
     path.write_text(text)
-    try:
-        cli = json.loads(program("classify", path, "--json").stdout)
-    finally:
-        path.unlink()
+    cli = json.loads(program("classify", path, "--json").stdout)
     for name, tally in cli["methods"].items():
         for count in ("tp", "tn", "fp", "fn", "na"):
             assert mine["methods"][name][count] == tally[count], (name, count)
 
 
 @pytest.mark.parametrize("name", ["static.vf", "moving.vf"])
-def test_batched_verdicts_match_the_programs_per_query_verdicts(name):
+def test_batched_verdicts_match_the_programs_per_query_verdicts(name, scratch):
     kinds, points, _ = read_vf(DATA / name)
-    expected = per_query(DATA / name)
+    expected = per_query(DATA / name, scratch)
     for method in ("exact", "robust", "float-cubic"):
         for i, kind in enumerate(kinds):
             one = points[i:i + 1]
@@ -98,9 +109,9 @@ def test_batched_verdicts_match_the_programs_per_query_verdicts(name):
             assert int(got[0]) == expected[method][i], (method, i)
 
 
-@pytest.mark.skipif(not SAMPLE.is_dir(), reason="no ../shared/ccd-sample")
+@pytest.mark.skipif(not SAMPLE or not Path(SAMPLE).is_dir(), reason="no CCD benchmark sample (FDH_CCD_SAMPLE)")
 def test_robust_equals_exact_on_the_ccd_sample_in_batches():
-    for path in sorted(SAMPLE.glob("*/*/*.csv"))[::4]:
+    for path in sorted(Path(SAMPLE).glob("*/*/*.csv"))[::4]:
         # 8 rows per query: x_num,x_den,y_num,y_den,z_num,z_den,truth (exact doubles)
         rows = [line.split(",") for line in path.read_text().split()]
         coords = [[float(Fraction(int(r[i]), int(r[i + 1]))) for i in (0, 2, 4)] for r in rows]
@@ -204,8 +215,8 @@ def test_a_scene_runs_into_arrays():
     assert run["summary"]["frames"] == 20 and run["summary"]["particles"] == 100
 
 
-def test_bad_input_raises_the_programs_message(tmp_path):
-    bad = tmp_path / "bad.vf"
+def test_bad_input_raises_the_programs_message(scratch):
+    bad = scratch / "bad.vf"
     bad.write_text("vf 1\n0 0 0\n")
     cli = program("classify", bad)
     assert cli.returncode == 2

@@ -466,8 +466,8 @@ TEST(BadInputCatalogueSpecial, DivergingRunStopsWithAnError) {
   cloth::Scene s;
   s.cloth.grid = 5;
   s.cloth.pins = {{0, 0}};  // springs stretch, and a step of 1 s is far above the stable one
-  const cloth::NarrowPhase never = [](const Vec3&, const Vec3&, const Vec3&, const Vec3&,
-                                      const Vec3&) { return false; };
+  const PointTriangleTest never = [](const Vec3&, const Vec3&, const Vec3&, const Vec3&,
+                                     const Vec3&) { return false; };
   cloth::Simulation sim(s, never, 18, /*dt=*/1.0);
   try {
     for (int f = 0; f < 10000; ++f) sim.step();

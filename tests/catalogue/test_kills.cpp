@@ -37,9 +37,8 @@ namespace {
 namespace fs = std::filesystem;
 using KillClock = std::chrono::steady_clock;
 
-// A fresh folder of this process's own: test binaries of other build folders may run at once.
 fs::path kill_dir(const std::string& name) {
-  return fresh_temp_dir(name + "_" + std::to_string(::getpid()));
+  return fresh_temp_dir(name);
 }
 
 std::string kill_slurp(const fs::path& p) {

@@ -58,11 +58,7 @@ std::string out_fault_read(const fs::path& p) {
 
 // fdhcert ARGS in CWD, its stderr captured; no shell anywhere.
 OutFaultRun out_fault_run(const OutFaultChild& c) {
-  // Its own folder per process and call: ctest runs the rows in parallel processes.
-  static int calls = 0;
-  const fs::path err_file = fresh_temp_dir("out_fault_stderr_" + std::to_string(::getpid()) + "_" +
-                                           std::to_string(calls++)) /
-                            "err.txt";
+  const fs::path err_file = fresh_temp_dir("out_fault_stderr") / "err.txt";
   std::vector<std::string> args = c.args;
   args.insert(args.begin(), FDHCERT_BIN);
   std::vector<char*> argv;
@@ -393,8 +389,7 @@ class OutputFaultsChartFolder : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(OutputFaultsChartFolder, RunsNothingAndDrawsTheChart) {
   if (!out_fault_have_gnuplot()) GTEST_SKIP() << "gnuplot is not installed";
-  const fs::path dir =
-      fresh_temp_dir("out_fault_chart_" + std::to_string(std::hash<std::string>{}(GetParam())));
+  const fs::path dir = fresh_temp_dir("out_fault_chart");
   const OutFaultRun r = out_fault_run(out_fault_cmd(
       dir, {"table1", "--scene", kOutFaultScene, "--frames", "1", "--out", GetParam()}));
   EXPECT_EQ(r.status, 0) << r.err;

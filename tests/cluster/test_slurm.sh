@@ -19,7 +19,7 @@ for tool in munged slurmctld slurmd sbatch squeue sinfo scontrol; do
   command -v "$tool" >/dev/null || skip "no $tool: install slurm-wlm and munge (./run does, as root)"
 done
 
-work=$(mktemp -d /tmp/fdh-slurm.XXXXXX)
+work=$(mktemp -d "${TMPDIR:-/tmp}/fdh-slurm.XXXXXX")
 export SLURM_CONF=$work/slurm.conf
 cleanup() {
   scontrol shutdown >/dev/null 2>&1 || true
@@ -27,7 +27,7 @@ cleanup() {
     [ -f "$pidfile" ] && kill "$(cat "$pidfile")" 2>/dev/null || true
   done
   sleep 1
-  rm -rf "$work"
+  if [ "${FDH_KEEP_TEST_FILES:-}" = 1 ]; then echo "FDH_KEEP_TEST_FILES: kept $work"; else rm -rf "$work"; fi
 }
 trap cleanup EXIT
 fail() {

@@ -1,5 +1,5 @@
 // robust's time of impact against its exact twin, over the moving generator families and the
-// CCD benchmark sample (skipped when ../shared is absent), at w = 2^-30 and 2^-50: the verdict
+// CCD benchmark sample (skipped without one, FDH_CCD_SAMPLE), at w = 2^-30 and 2^-50: the verdict
 // is exact's; with a contact, t_lo <= t* <= t_hi, decided exactly by compare_with_toi; the
 // width is at most w; and t_lo = 0 only when t* = 0.
 #include <gtest/gtest.h>
@@ -53,8 +53,8 @@ INSTANTIATE_TEST_SUITE_P(All, MovingFamilyToi, ::testing::ValuesIn(family_names(
 
 TEST(SampleToi, RobustEnclosesTheExactContactTimeOnEveryQuery) {
   namespace fs = std::filesystem;
-  const fs::path root = FDH_SHARED_DIR "/ccd-sample";
-  if (!fs::is_directory(root)) GTEST_SKIP() << "no ../shared/ccd-sample here";
+  const fs::path root = FDH_CCD_SAMPLE;  // the build's FDH_CCD_SAMPLE, empty for none
+  if (!fs::is_directory(root)) GTEST_SKIP() << "no CCD benchmark sample (FDH_CCD_SAMPLE)";
   std::vector<fs::path> files;
   for (const auto& e : fs::recursive_directory_iterator(root))
     if (e.path().extension() == ".csv") files.push_back(e.path());
@@ -63,10 +63,10 @@ TEST(SampleToi, RobustEnclosesTheExactContactTimeOnEveryQuery) {
   for (const fs::path& file : files) {
     const auto kind = kind_from_folder(file.string());
     if (!kind) continue;
-    const std::vector<Query> qs = read_benchmark_csv(file.string(), *kind);
+    const std::vector<QueryRecord> qs = read_benchmark_csv(file.string(), *kind);
     for (std::size_t i = 0; i < qs.size(); ++i, ++checked)
       for (const double w : kToiWidths)
-        EXPECT_EQ(broken_toi_promise(qs[i], w), "") << file << " query " << i << " w " << w;
+        EXPECT_EQ(broken_toi_promise(qs[i].query, w), "") << file << " query " << i << " w " << w;
   }
   EXPECT_GT(checked, 2800u);
 }

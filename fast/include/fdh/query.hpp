@@ -1,8 +1,9 @@
-// One collision query in plain doubles, as read from a file or recorded by a simulation.
+// One collision query: the geometry alone, 8 points in plain doubles. Where a query came from
+// (a file's line, an id) and what a file says of it (its truth) is a record of verify/io
+// (fdh/io/query_record.hpp), not part of the query.
 #pragma once
 
 #include <array>
-#include <string>
 
 #include "fdh/vec3.hpp"
 
@@ -12,25 +13,44 @@ enum class QueryKind { VertexFace, EdgeEdge };
 
 struct Query {
   QueryKind kind = QueryKind::VertexFace;
-  std::string id;
-  // vf: p0 a0 b0 c0 p1 a1 b1 c1 (point and triangle at t = 0, then at t = 1).
-  // ee: ea0 ea1 eb0 eb1 at t = 0, then at t = 1.
+  // The points at t = 0 (x[0..3]), then the same points at t = 1 (x[4..7]), named as in the
+  // CCD benchmark (Wang et al. 2021):
+  //   vertex-face: v, f0, f1, f2 (the vertex, then the triangle's corners);
+  //   edge-edge:   ea0, ea1, eb0, eb1 (edge a's ends, then edge b's).
   std::array<Vec3, 8> x{};
-  int truth = -1;  // 0 or 1 when the file gives it, else -1
-  std::string file;
-  int line = 0;  // first line of the query in `file`
 
-  bool has_truth() const { return truth >= 0; }
+  // Vertex-face.
+  const Vec3& v_t0() const { return x[0]; }
+  const Vec3& f0_t0() const { return x[1]; }
+  const Vec3& f1_t0() const { return x[2]; }
+  const Vec3& f2_t0() const { return x[3]; }
+  const Vec3& v_t1() const { return x[4]; }
+  const Vec3& f0_t1() const { return x[5]; }
+  const Vec3& f1_t1() const { return x[6]; }
+  const Vec3& f2_t1() const { return x[7]; }
+
+  // Edge-edge.
+  const Vec3& ea0_t0() const { return x[0]; }
+  const Vec3& ea1_t0() const { return x[1]; }
+  const Vec3& eb0_t0() const { return x[2]; }
+  const Vec3& eb1_t0() const { return x[3]; }
+  const Vec3& ea0_t1() const { return x[4]; }
+  const Vec3& ea1_t1() const { return x[5]; }
+  const Vec3& eb0_t1() const { return x[6]; }
+  const Vec3& eb1_t1() const { return x[7]; }
+
   // A vertex-face query whose triangle stands still: the paper's setting.
   bool is_static_vf() const {
-    return kind == QueryKind::VertexFace && x[5] == x[1] && x[6] == x[2] && x[7] == x[3];
+    return kind == QueryKind::VertexFace && f0_t1() == f0_t0() && f1_t1() == f1_t0() &&
+           f2_t1() == f2_t0();
   }
-  // The paper's names for a static vf query: B, B', D, E, F.
-  const Vec3& b0() const { return x[0]; }
-  const Vec3& b1() const { return x[4]; }
-  const Vec3& d() const { return x[1]; }
-  const Vec3& e() const { return x[2]; }
-  const Vec3& f() const { return x[3]; }
+  // The paper's names for a static vertex-face query: the point moves from B to B' past the
+  // still triangle DEF.
+  const Vec3& b0() const { return v_t0(); }
+  const Vec3& b1() const { return v_t1(); }
+  const Vec3& d() const { return f0_t0(); }
+  const Vec3& e() const { return f1_t0(); }
+  const Vec3& f() const { return f2_t0(); }
 };
 
 }  // namespace fdh

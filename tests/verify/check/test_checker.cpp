@@ -76,10 +76,10 @@ TEST(Checker, CheckAllCountsAndKeepsTheFirstBroken) {
 }
 
 TEST(Checker, TwinAgainstAStoredTruth) {
-  Query q = crossing();
-  EXPECT_FALSE(twin_matches_truth(q, true).has_value());
-  q.truth = 0;
-  EXPECT_EQ(twin_matches_truth(q, twin_hit(q)), false);
+  const Query q = crossing();
+  EXPECT_FALSE(twin_matches_truth(std::nullopt, true).has_value());
+  EXPECT_EQ(twin_matches_truth(false, twin_hit(q)), false);
+  EXPECT_EQ(twin_matches_truth(true, twin_hit(q)), true);
 }
 
 TEST(Checker, BoxesOfTheRegistryContainTheExactFdh) {

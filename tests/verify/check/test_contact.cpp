@@ -12,23 +12,23 @@ namespace fdh::verify {
 namespace {
 
 TEST(Contact, StaticQueriesHaveAKindAndARationalTime) {
-  for (const Query& q : read_native(kData + "static.vf")) {
-    const TwinContact c = twin_contact(q);
-    EXPECT_EQ(c.hit, twin_hit(q)) << q.id;
-    EXPECT_FALSE(c.kind.empty()) << q.id;
-    EXPECT_EQ(c.time_lo, c.time_hi) << q.id;
+  for (const QueryRecord& r : read_native(kData + "static.vf")) {
+    const TwinContact c = twin_contact(r.query);
+    EXPECT_EQ(c.hit, twin_hit(r.query)) << r.id;
+    EXPECT_FALSE(c.kind.empty()) << r.id;
+    EXPECT_EQ(c.time_lo, c.time_hi) << r.id;
   }
-  const TwinContact face = twin_contact(read_native(kData + "static.vf").front());
+  const TwinContact face = twin_contact(read_native(kData + "static.vf").front().query);
   EXPECT_EQ(contact_words(face), "hit (face at t = 1/2)");
-  EXPECT_EQ(contact_words(twin_contact(read_native(kData + "static.vf")[1])), "no");
+  EXPECT_EQ(contact_words(twin_contact(read_native(kData + "static.vf")[1].query)), "no");
 }
 
 TEST(Contact, MovingQueriesHaveATimeOrABracket) {
   std::vector<std::string> words;
-  for (const Query& q : read_native(kData + "moving_times.vf")) {
-    const TwinContact c = twin_contact(q);
-    EXPECT_EQ(c.hit, twin_hit(q)) << q.id;
-    EXPECT_TRUE(c.kind.empty()) << q.id;
+  for (const QueryRecord& r : read_native(kData + "moving_times.vf")) {
+    const TwinContact c = twin_contact(r.query);
+    EXPECT_EQ(c.hit, twin_hit(r.query)) << r.id;
+    EXPECT_TRUE(c.kind.empty()) << r.id;
     words.push_back(contact_words(c));
   }
   ASSERT_GE(words.size(), 4u);

@@ -192,8 +192,7 @@ TEST(Cli, ClassifyTimeRatio) {
 }
 
 TEST(Cli, PerQueryCsv) {
-  const std::string out = ::testing::TempDir() + "per_query.csv";
-  std::remove(out.c_str());
+  const std::string out = (fresh_temp_dir("cli_per_query") / "per_query.csv").string();
   const CliRun r = fdhcert(
       {"classify", kData + "static.vf", "--per-query", out, "--methods", "exact,paper-literal"});
   ASSERT_EQ(r.status, 0) << r.err;
@@ -207,8 +206,7 @@ TEST(Cli, PerQueryCsv) {
 // earliest time, a rational or two rationals around an irrational one; a static-only method
 // is n/a there.
 TEST(Cli, PerQueryCsvMovingVertexFaceAndEdgeEdge) {
-  const std::string out = ::testing::TempDir() + "per_query_moving.csv";
-  std::remove(out.c_str());
+  const std::string out = (fresh_temp_dir("cli_per_query_moving") / "per_query.csv").string();
   const CliRun r = fdhcert({"classify", kData + "moving.vf", "--per-query", out, "--methods",
                             "exact,robust,paper-literal", "--check"});
   ASSERT_EQ(r.status, 0) << r.err;
@@ -240,8 +238,7 @@ TEST(Cli, GateRejectsBadK) {
 }
 
 TEST(Cli, BadInputExitsTwoNamingFileAndLineAndWritesNothing) {
-  const std::string out = ::testing::TempDir() + "never.csv";
-  std::remove(out.c_str());
+  const std::string out = (fresh_temp_dir("cli_bad_input") / "never.csv").string();
   const CliRun r =
       fdhcert({"classify", kData + "static.vf", kData + "bad_number.vf", "--per-query", out});
   EXPECT_EQ(r.status, 2);
@@ -270,7 +267,8 @@ TEST(Cli, CheckFailsWhereTheTwinDisagreesWithTheFile) {
 
 // generate writes the same file for the same seed, and classify checks robust = exact on it.
 TEST(Cli, GenerateIsDeterministicAndClassifiable) {
-  const std::string a = ::testing::TempDir() + "gen_a.vf", b = ::testing::TempDir() + "gen_b.vf";
+  const std::filesystem::path dir = fresh_temp_dir("cli_generate");
+  const std::string a = (dir / "gen_a.vf").string(), b = (dir / "gen_b.vf").string();
   for (const std::string& f : {a, b})
     ASSERT_EQ(
         fdhcert({"generate", "generic-moving", "--count", "300", "--seed", "7", "--out", f}).status,

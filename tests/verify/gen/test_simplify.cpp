@@ -79,7 +79,7 @@ TEST(Simplify, ShrunkFailureOfAMovingFamily) {
     EXPECT_EQ(g->query.kind, QueryKind::EdgeEdge);
     EXPECT_EQ(simplicity_of(g->query).moving, 0);
     EXPECT_EQ(simplicity_of(g->query).length, 2);  // x[0] = x[4], one coordinate +-1 (or 1/2)
-    EXPECT_EQ(g->query.truth, -1);
+    EXPECT_EQ(g->truth, Truth::Unknown);
   }
   EXPECT_GT(shrunk, 0);
 }

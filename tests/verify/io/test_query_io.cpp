@@ -8,19 +8,22 @@
 #include <sstream>
 
 #include "fdh/io/input_error.hpp"
+#include "temp_dir.hpp"
 
 namespace fdh::verify {
 namespace {
 
 TEST(QueryIo, ReadsNativeWithCommentsHexFloatsAndOptionalTruth) {
-  const std::vector<Query> qs = read_native(kData + "static.vf");
+  const std::vector<QueryRecord> qs = read_native(kData + "static.vf");
   ASSERT_EQ(qs.size(), 4u);
   EXPECT_EQ(qs[0].id, "through-face");
+  EXPECT_EQ(qs[0].file, kData + "static.vf");
   EXPECT_EQ(qs[0].line, 2);
-  EXPECT_EQ(qs[0].truth, 1);
-  EXPECT_EQ(qs[2].x[0], qs[0].x[0]);  // 0x1p-2 == 0.25
-  EXPECT_EQ(qs[3].truth, -1);
-  EXPECT_TRUE(qs[0].is_static_vf());
+  EXPECT_EQ(qs[0].truth, Truth::Yes);
+  EXPECT_EQ(qs[2].query.x[0], qs[0].query.x[0]);  // 0x1p-2 == 0.25
+  EXPECT_EQ(qs[3].truth, Truth::Unknown);
+  EXPECT_FALSE(qs[3].has_truth());
+  EXPECT_TRUE(qs[0].query.is_static_vf());
 }
 
 TEST(QueryIo, DecimalsAreCorrectlyRounded) {
@@ -34,27 +37,29 @@ TEST(QueryIo, DecimalsAreCorrectlyRounded) {
 }
 
 TEST(QueryIo, WriteNativeRoundTripsExactly) {
-  Query q;
+  QueryRecord q;
   q.id = "r";
-  q.truth = 0;
-  for (int i = 0; i < 8; ++i) q.x[i] = Vec3{0.1 * i, -1e-300 * i, 3e300 / (i + 1)};
+  q.truth = Truth::No;
+  for (int i = 0; i < 8; ++i) q.query.x[i] = Vec3{0.1 * i, -1e-300 * i, 3e300 / (i + 1)};
   std::stringstream ss;
   write_native(ss, q);
-  const std::string path = ::testing::TempDir() + "roundtrip.vf";
+  const std::string path = (fresh_temp_dir("roundtrip") / "roundtrip.vf").string();
   FILE* f = fopen(path.c_str(), "w");
   fputs(ss.str().c_str(), f);
   fclose(f);
-  const Query back = read_native(path).at(0);
-  EXPECT_EQ(back.x, q.x);
-  EXPECT_EQ(back.truth, 0);
+  const QueryRecord back = read_native(path).at(0);
+  EXPECT_EQ(back.query.x, q.query.x);
+  EXPECT_EQ(back.id, "r");
+  EXPECT_EQ(back.truth, Truth::No);
 }
 
 TEST(QueryIo, ReadsBenchmarkCsvWithKindFromFolder) {
-  const std::vector<Query> qs = read_query_file(kData + "vertex-face/good.csv");
+  const std::vector<QueryRecord> qs = read_query_file(kData + "vertex-face/good.csv");
   ASSERT_EQ(qs.size(), 1u);
-  EXPECT_EQ(qs[0].kind, QueryKind::VertexFace);
-  EXPECT_EQ(qs[0].x[0].x, 0.25);
-  EXPECT_EQ(qs[0].truth, 1);
+  EXPECT_EQ(qs[0].query.kind, QueryKind::VertexFace);
+  EXPECT_EQ(qs[0].query.x[0].x, 0.25);
+  EXPECT_EQ(qs[0].truth, Truth::Yes);
+  EXPECT_EQ(qs[0].id, "0");
 }
 
 struct BadFile {

@@ -179,7 +179,7 @@ TEST(Plugin, AGeneratedQueryIsNamedByAQueryLineThatReadsBackExactly) {
   ASSERT_EQ(r.err.rfind(head, 0), 0u) << r.err;
   const fs::path file = fresh_temp_dir("plugin_line") / "asked.vf";
   std::ofstream(file) << r.err.substr(head.size());
-  const std::vector<Query> qs = read_native(file.string());
+  const std::vector<QueryRecord> qs = read_native(file.string());
   ASSERT_EQ(qs.size(), 1u);
   EXPECT_EQ(qs[0].id, "probe/extreme-coordinates");
   const std::array<Vec3, 8> x = {{{1e30, 0.1, -0.0},
@@ -190,8 +190,8 @@ TEST(Plugin, AGeneratedQueryIsNamedByAQueryLineThatReadsBackExactly) {
                                   {0, 0, 0},
                                   {1, 0, 0},
                                   {0, 1, 0}}};
-  EXPECT_EQ(qs[0].x, x);
-  EXPECT_TRUE(std::signbit(qs[0].x[0].z));
+  EXPECT_EQ(qs[0].query.x, x);
+  EXPECT_TRUE(std::signbit(qs[0].query.x[0].z));
 }
 
 TEST(Plugin, GarbageOnAQueryNamesItsFileAndLine) {

@@ -31,9 +31,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh folder of this process's own: test binaries of other build folders may run at once.
 fs::path fuzz_dir(const std::string& name) {
-  return fresh_temp_dir(name + "_" + std::to_string(::getpid()));
+  return fresh_temp_dir(name);
 }
 
 FuzzOptions options(const fs::path& out, int threads) {
@@ -132,9 +131,9 @@ TEST(Fuzz, FindsShrinksAndStoresCasesThatReplayAsFailures) {
   ASSERT_FALSE(s.distinct.empty());
   EXPECT_LT(s.distinct.size(), std::size_t(s.disagreements));  // shrinking merges cases
   for (const std::string& f : s.distinct) {
-    const Query q = read_native(f).at(0);
+    const QueryRecord q = read_native(f).at(0);
     EXPECT_TRUE(q.has_truth());
-    EXPECT_TRUE(q.is_static_vf());
+    EXPECT_TRUE(q.query.is_static_vf());
   }
 }
 
@@ -186,7 +185,7 @@ TEST(Fuzz, MovingRunKilledWithSigkillAndRestartedLosesNothing) {
   const FuzzSummary expected = run_fuzz(o, progress);
   ASSERT_FALSE(expected.distinct.empty());
   for (const std::string& f : expected.distinct)
-    EXPECT_EQ(read_native(f).at(0).kind, QueryKind::EdgeEdge) << f;
+    EXPECT_EQ(read_native(f).at(0).query.kind, QueryKind::EdgeEdge) << f;
 
   expect_kill_loses_nothing(o, whole, killed, 4);
 }
@@ -218,12 +217,13 @@ TEST(Fuzz, MovingCasesCarryTheExactContactTime) {
   ASSERT_FALSE(found.empty());
   for (const std::string& f : found) {
     const std::string first = first_line(f);
-    const Query q = read_native(f).at(0);
+    const QueryRecord q = read_native(f).at(0);
     ASSERT_TRUE(q.has_truth());
+    const bool hit = q.truth == Truth::Yes;
     EXPECT_EQ(first.rfind("# float-cubic says ", 0), 0u) << first;
-    EXPECT_NE(first.find(q.truth ? ", exact says hit (" : ", exact says no."), std::string::npos)
+    EXPECT_NE(first.find(hit ? ", exact says hit (" : ", exact says no."), std::string::npos)
         << first;
-    if (q.truth) {
+    if (hit) {
       EXPECT_NE(first.find("at t "), std::string::npos) << first;
     }
   }
@@ -251,9 +251,9 @@ TEST(Fuzz, MetamorphicRunStoresVerdictChangesApart) {
     const std::string first = first_line(f);
     EXPECT_NE(first.find("linear-system says "), std::string::npos) << first;
     EXPECT_NE(first.find(" after "), std::string::npos) << first;
-    const Query q = read_native(f).at(0);
-    EXPECT_EQ(q.truth, int(twin_hit(q)));
-    EXPECT_TRUE(metamorphic_failure(m, q)) << f;
+    const QueryRecord r = read_native(f).at(0);
+    EXPECT_EQ(r.truth, truth_of(twin_hit(r.query)));
+    EXPECT_TRUE(metamorphic_failure(m, r.query)) << f;
   }
   // A case is OUT/metamorphic/linear-system/parallel-land/<hash>.vf; the run is OUT/.fuzz/RUN.
   const fs::path folder = fs::path(*found.begin()).parent_path().parent_path().parent_path();

@@ -50,9 +50,9 @@ Verdicts check_given(const Method& m, const Query& q, bool said) {
   return v;
 }
 
-std::optional<bool> twin_matches_truth(const Query& q, bool twin) {
-  if (!q.has_truth()) return std::nullopt;
-  return twin == bool(q.truth);
+std::optional<bool> twin_matches_truth(std::optional<bool> truth, bool twin) {
+  if (!truth) return std::nullopt;
+  return twin == *truth;
 }
 
 void CheckTally::add(bool kept, std::size_t index, std::size_t keep) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include "fdh/check/checker.hpp"
 #include "fdh/check/parallel.hpp"
@@ -45,7 +46,23 @@ double seconds_per_pass(const std::function<void()>& pass) {
   return elapsed / double(passes);
 }
 
-Classification classify(const std::vector<Query>& queries, const std::vector<Method>& methods) {
+const char* truth_source_name(TruthSource s) {
+  switch (s) {
+    case TruthSource::File:
+      return "file";
+    case TruthSource::Exact:
+      return "exact";
+    case TruthSource::Mixed:
+      return "mixed";
+  }
+  return "mixed";
+}
+
+Classification classify(const std::vector<Query>& queries,
+                        const std::vector<std::optional<bool>>& truth,
+                        const std::vector<Method>& methods) {
+  if (!truth.empty() && truth.size() != queries.size())
+    throw std::invalid_argument("classify: one truth per query, or none");
   Classification c;
   c.queries = queries.size();
 
@@ -61,16 +78,18 @@ Classification classify(const std::vector<Query>& queries, const std::vector<Met
   std::size_t with_truth = 0;
   c.reference.resize(queries.size());
   for (std::size_t i = 0; i < queries.size(); ++i) {
-    const Query& q = queries[i];
-    if (const std::optional<bool> agrees = twin_matches_truth(q, c.exact[i])) {
+    const std::optional<bool> given = truth.empty() ? std::nullopt : truth[i];
+    if (const std::optional<bool> agrees = twin_matches_truth(given, c.exact[i])) {
       ++with_truth;
-      c.reference[i] = char(q.truth);
+      c.reference[i] = char(*given);
       if (!*agrees) c.exact_vs_file.push_back(i);
     } else {
       c.reference[i] = c.exact[i];
     }
   }
-  c.truth = with_truth == queries.size() ? "file" : (with_truth == 0 ? "exact" : "mixed");
+  c.truth = with_truth == queries.size() ? TruthSource::File
+            : with_truth == 0            ? TruthSource::Exact
+                                         : TruthSource::Mixed;
 
   for (const Method& m : methods) {
     MethodResult r;
@@ -96,7 +115,7 @@ Classification join(const std::vector<Classification>& parts) {
     const std::size_t offset = all.queries;
     all.queries += c.queries;
     all.static_vf += c.static_vf, all.moving_vf += c.moving_vf, all.edge_edge += c.edge_edge;
-    all.truth = !truth_set || all.truth == c.truth ? c.truth : "mixed";
+    all.truth = !truth_set || all.truth == c.truth ? c.truth : TruthSource::Mixed;
     truth_set = true;
     all.reference.insert(all.reference.end(), c.reference.begin(), c.reference.end());
     all.exact.insert(all.exact.end(), c.exact.begin(), c.exact.end());

@@ -11,6 +11,7 @@
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
+#include "fdh/io/record_scope.hpp"
 #include "fdh/suite/classify_files.hpp"
 #include "fdh/suite/report.hpp"
 #include "fdh/suite/toi_report.hpp"
@@ -76,13 +77,13 @@ struct ClassifyOptions {
   double width = kDefaultToiWidth;
 };
 
-std::string where_and_id(const Query& q) {
+std::string where_and_id(const QueryRecord& q) {
   return where(q) + " (query " + q.id + ")";
 }
 
 // Prints every disagreement the checker finds: the twin against a file's truth, and each method
 // that promises something (registry.hpp) against the twin. Returns how many it found.
-std::size_t report_disagreements(const std::vector<Query>& queries,
+std::size_t report_disagreements(const std::vector<QueryRecord>& queries,
                                  const std::vector<Method>& methods, const Classification& c,
                                  std::ostream& err) {
   std::string twin = "exact";
@@ -90,7 +91,7 @@ std::size_t report_disagreements(const std::vector<Query>& queries,
     if (m.is_twin) twin = m.name;
   std::size_t found = 0;
   for (std::size_t i = 0; i < queries.size(); ++i) {
-    const std::optional<bool> agrees = twin_matches_truth(queries[i], c.exact[i]);
+    const std::optional<bool> agrees = twin_matches_truth(stated(queries[i].truth), c.exact[i]);
     if (!agrees || *agrees) continue;
     ++found;
     err << "fdhcert: " << twin << " disagrees with the file's truth at " << where_and_id(queries[i])
@@ -112,7 +113,7 @@ std::size_t report_disagreements(const std::vector<Query>& queries,
 
 // Prints every time of impact that breaks its method's TimePromise (checker.hpp), with the
 // checker's words. Returns how many.
-std::size_t report_broken_times(const std::vector<Query>& queries,
+std::size_t report_broken_times(const std::vector<QueryRecord>& queries,
                                 const std::vector<Method>& methods, const ToiClassification& toi,
                                 std::ostream& err) {
   std::size_t found = 0;
@@ -124,15 +125,19 @@ std::size_t report_broken_times(const std::vector<Query>& queries,
         for (const std::size_t i : r.tally.first_broken)
           err << "fdhcert: " << r.name << " breaks its " << to_string(r.promise) << " time at "
               << where_and_id(queries[i]) << ": "
-              << describe(m, check_time_given(m, queries[i], toi.width, r.said[i], toi.twin[i]))
+              << describe(m, check_time_given(m, queries[i].query, toi.width, r.said[i],
+                                              toi.twin[i]))
               << "\n";
   }
   return found;
 }
 
 // Each method's time over the base's, query by query: printed, and returned for --json.
-nlohmann::ordered_json print_time_ratios(const ClassifyOptions& o, const std::vector<Query>& qs,
+nlohmann::ordered_json print_time_ratios(const ClassifyOptions& o,
+                                         const std::vector<QueryRecord>& records,
                                          std::vector<Method> methods, std::ostream& out) {
+  const std::vector<Query> qs = queries_of(records);
+  const RecordScope asking(records, qs);  // a plug-in's crash names FILE:LINE
   std::size_t base = methods.size();
   for (std::size_t m = 0; m < methods.size(); ++m)
     if (methods[m].name == o.time_ratio) base = m;
@@ -153,7 +158,7 @@ nlohmann::ordered_json print_time_ratios(const ClassifyOptions& o, const std::ve
   }
   for (const TimeRatio& r : time_ratios(qs, times, methods, base, o.ratio_limit)) {
     if (r.method == o.time_ratio) continue;
-    const std::string worst = where_and_id(qs[r.worst]);
+    const std::string worst = where_and_id(records[r.worst]);
     j["methods"][r.method][to_string(r.decision)] = {{"queries", r.queries},
                                                      {"max", r.max},
                                                      {"median", r.median},

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "fdh/check/registry.hpp"
+#include "fdh/io/query_record.hpp"
 
 namespace fdh::verify {
 
@@ -94,8 +95,8 @@ CLI::Option* add_seed_option(CLI::App& cmd, std::uint64_t& seed, const std::stri
 // The named methods (all of them for an empty list); an unknown name or gate is a UsageError.
 std::vector<Method> methods_named(const std::vector<std::string>& names, int gate_k = 0);
 
-// A query's FILE:LINE, for messages.
-inline std::string where(const Query& q) {
+// A record's FILE:LINE, for messages.
+inline std::string where(const QueryRecord& q) {
   return q.file + ":" + std::to_string(q.line);
 }
 

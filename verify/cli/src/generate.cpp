@@ -41,9 +41,9 @@ int run_generate(const GenerateOptions& o, const Io& io) {
   std::ostream& os = file.stream();
   os << "# fdhcert generate " << o.family << " --count " << o.count << " --seed " << o.seed << "\n";
   for (long i = 0; i < o.count; ++i) {
-    Query q = generate(*family, case_seed(o.seed, i)).query;
-    q.id = o.family + "/" + std::to_string(i);
-    write_native(os, q);
+    QueryRecord r = generate(*family, case_seed(o.seed, i)).record();
+    r.id = o.family + "/" + std::to_string(i);
+    write_native(os, r);
   }
   file.commit();
   io.out << "wrote " << o.count << " " << o.family << " queries to " << o.file << "\n";

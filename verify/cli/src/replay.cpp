@@ -10,6 +10,7 @@
 #include "fdh/io/case_files.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
+#include "fdh/io/record_scope.hpp"
 #include "plugin_option.hpp"
 
 namespace fdh::verify {
@@ -44,11 +45,11 @@ struct ReplayOptions {
 };
 
 // The stored cases under the paths, of every kind: static and moving vertex-face, edge-edge.
-std::vector<Query> read_cases(const std::vector<std::string>& paths) {
-  std::vector<Query> cases;
+std::vector<QueryRecord> read_cases(const std::vector<std::string>& paths) {
+  std::vector<QueryRecord> cases;
   for (const std::string& p : paths)
     for (const std::string& f : list_query_files(p))
-      for (Query& q : read_native(f)) {
+      for (QueryRecord& q : read_native(f)) {
         if (!q.has_truth()) throw InputError(q.file, q.line, "a stored case needs a truth");
         cases.push_back(std::move(q));
       }
@@ -69,16 +70,16 @@ struct Replay {
 };
 
 // The cases where each method's time is late, 0 too early, or breaks its promise (checker.hpp).
-void replay_times(const std::vector<Query>& cases, const std::vector<Method>& methods, double width,
-                  Replay& r) {
-  const ToiClassification toi = classify_toi(cases, methods, width);
+void replay_times(const std::vector<QueryRecord>& cases, const std::vector<Query>& queries,
+                  const std::vector<Method>& methods, double width, Replay& r) {
+  const ToiClassification toi = classify_toi(queries, methods, width);
   for (const ToiResult& m : toi.methods) {
     Replay::Times t{m.name, {}, {}, {}};
     const Method& method = *std::find_if(methods.begin(), methods.end(),
                                          [&](const Method& x) { return x.name == m.name; });
     for (std::size_t i = 0; i < cases.size(); ++i) {
       if (!m.applies[i]) continue;
-      const TimeCheck c = check_time_given(method, cases[i], width, m.said[i], toi.twin[i]);
+      const TimeCheck c = check_time_given(method, queries[i], width, m.said[i], toi.twin[i]);
       if (c.late) t.late.push_back(where(cases[i]));
       if (c.zero) t.zero.push_back(where(cases[i]));
       if (!c.kept) t.broken.push_back(where(cases[i]));
@@ -87,10 +88,10 @@ void replay_times(const std::vector<Query>& cases, const std::vector<Method>& me
   }
 }
 
-Replay replay(const std::vector<Query>& cases, const Classification& c) {
+Replay replay(const std::vector<QueryRecord>& cases, const Classification& c) {
   Replay r;
   for (std::size_t i = 0; i < cases.size(); ++i)
-    if (twin_matches_truth(cases[i], c.exact[i]) == std::optional<bool>(false))
+    if (twin_matches_truth(stated(cases[i].truth), c.exact[i]) == std::optional<bool>(false))
       r.twin_mismatches.push_back(where(cases[i]));
   for (const MethodResult& m : c.methods) {
     std::vector<std::string> list;
@@ -132,9 +133,11 @@ void print_replay(const Replay& r, std::size_t cases, bool json, std::ostream& o
 
 int run_replay(const ReplayOptions& o, const Io& io) {
   const std::vector<Method> methods = methods_named(o.methods);
-  const std::vector<Query> cases = read_cases(o.paths);
-  Replay r = replay(cases, classify(cases, methods));
-  if (o.toi) replay_times(cases, methods, o.width, r);
+  const std::vector<QueryRecord> cases = read_cases(o.paths);
+  const std::vector<Query> queries = queries_of(cases);
+  const RecordScope asking(cases, queries);  // a plug-in's crash names FILE:LINE
+  Replay r = replay(cases, classify(queries, truths_of(cases), methods));
+  if (o.toi) replay_times(cases, queries, methods, o.width, r);
   print_replay(r, cases.size(), o.json, io.out);
   for (const std::string& w : r.twin_mismatches)
     io.err << "fdhcert: exact no longer gives the stored truth at " << w << "\n";

@@ -95,7 +95,8 @@ class Outputs {
                  {"obstacles", &obstacles_.x, &obstacles_.tris, kObstacleColour}});
     if (!recording_) return;
     for (const auto& q : sim.queries()) {
-      Query r = sim.query(q);
+      QueryRecord r;
+      r.query = sim.query(q);
       r.id = fmt::format("f{}p{}t{}", frame, q.particle, q.triangle);
       write_native(recording_->stream(), r);
     }

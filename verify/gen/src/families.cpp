@@ -40,7 +40,6 @@ rc::Gen<Generated> gen_family(const Family& f) {
   return rc::gen::resize(rc::kNominalSize, rc::gen::exec([name = f.name, construct = f.construct] {
                            Generated g = construct();
                            g.family = name;
-                           g.query.id = name;
                            return g;
                          }));
 }
@@ -61,13 +60,14 @@ std::optional<Generated> shrunk_failure(const Family& f, std::uint64_t seed,
     return fails(h);
   });
   // A changed query is no longer the construction's: what it guaranteed no longer holds.
-  if (!(g.query.x == shrunk.x)) g.query.truth = -1, g.kind.clear(), g.time.clear();
+  if (!(g.query.x == shrunk.x)) g.truth = Truth::Unknown, g.kind.clear(), g.time.clear();
   return g;
 }
 
 void showValue(const Generated& g, std::ostream& os) {
-  os << g.family << " (truth " << g.query.truth << ")\n";
-  write_native(os, g.query);
+  os << g.family << " (truth " << (g.truth == Truth::Unknown ? -1 : int(g.truth == Truth::Yes))
+     << ")\n";
+  write_native(os, g.record());
 }
 
 }  // namespace fdh::verify

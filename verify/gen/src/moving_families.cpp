@@ -21,12 +21,12 @@ Vec3 point(int r) {
   return Vec3{double(in(-r, r)), double(in(-r, r)), double(in(-r, r))};
 }
 
-Generated make(QueryKind kind, const std::array<Vec3, 8>& x, int truth, std::string time = "") {
+Generated make(QueryKind kind, const std::array<Vec3, 8>& x, Truth truth, std::string time = "") {
   Generated g;
   g.query.kind = kind;
   g.query.x = x;
-  g.query.truth = truth;
-  g.time = truth == 1 ? std::move(time) : "";
+  g.truth = truth;
+  g.time = truth == Truth::Yes ? std::move(time) : "";
   return g;
 }
 
@@ -51,7 +51,7 @@ void reframe(std::array<Vec3, 8>& x) {
 Generated random_linear() {
   std::array<Vec3, 8> x;
   for (Vec3& v : x) v = point(8);
-  return make(any_kind(), x, -1);
+  return make(any_kind(), x, Truth::Unknown);
 }
 
 // Every coordinate a random multiple of 2^-52 in [-1, 1], each vertex moving by up to 1/2 per
@@ -65,7 +65,7 @@ Generated generic_moving() {
     x[i] = {r(), r(), r()};
     x[i + 4] = x[i] + 0.5 * Vec3{r(), r(), r()};
   }
-  return make(any_kind(), x, -1);
+  return make(any_kind(), x, Truth::Unknown);
 }
 
 // Turn by the angle with cos 3/5, sin 4/5 about z, then round to multiples of 2^-6.
@@ -77,7 +77,7 @@ Generated rotating() {
     x[i + 4] = {std::round(r.x * 64) / 64, std::round(r.y * 64) / 64, r.z};
   }
   if (*rc::gen::arbitrary<bool>()) x[4] = x[0] + Vec3{dy(-64, 64, 4), dy(-64, 64, 4), 0};
-  return make(any_kind(), x, -1);
+  return make(any_kind(), x, Truth::Unknown);
 }
 
 // Corners q + u, q + v, q - u - v (centroid q) move straight to their mirror images through q:
@@ -89,8 +89,8 @@ Generated hourglass() {
   const Vec3 n = cross(v - u, w - u);
   const bool hit = n == Vec3{} || *rc::gen::arbitrary<bool>();
   const Vec3 p = hit ? q : q + dy(1, 16, 4) * n;
-  return make(QueryKind::VertexFace, {p, q + u, q + v, q + w, p, q - u, q - v, q - w}, hit ? 1 : 0,
-              "0");
+  return make(QueryKind::VertexFace, {p, q + u, q + v, q + w, p, q - u, q - v, q - w},
+              truth_of(hit), "0");
 }
 
 // Hinge a = (-4,0,0), b = (4,0,0); c = (0,4,z) with z from -4 to 4; the point (px, y, w) with y
@@ -105,14 +105,14 @@ Generated two_crossings() {
                            Vec3{px, -4 * s, -s}, {-4, 0, 0}, {4, 0, 0}, {0, 4, 4}};
   const bool hit = std::fabs(px) <= 2;
   reframe(x);
-  return make(QueryKind::VertexFace, x, hit ? 1 : 0, late ? "3/4" : "1/4");
+  return make(QueryKind::VertexFace, x, truth_of(hit), late ? "3/4" : "1/4");
 }
 
 Generated coplanar() {
   std::array<Vec3, 8> x;
   for (Vec3& v : x) v = Vec3{double(in(-8, 8)), double(in(-8, 8)), 0};
   reframe(x);
-  return make(any_kind(), x, -1);
+  return make(any_kind(), x, Truth::Unknown);
 }
 
 // A rigid translation of the triangle by d; the point at a + s e with s from s0 to s1, on the
@@ -122,7 +122,8 @@ Generated sliding_on_edge() {
   const Vec3 a = point(8), b = point(8), c = point(8), d = point(4), e = b - a;
   const double s0 = dy(-32, 48, 4), s1 = dy(-32, 48, 4);
   const bool flat = cross(e, c - a) == Vec3{};
-  const int truth = flat ? -1 : (std::fmax(s0, s1) >= 0 && std::fmin(s0, s1) <= 1);
+  const Truth truth =
+      flat ? Truth::Unknown : truth_of(std::fmax(s0, s1) >= 0 && std::fmin(s0, s1) <= 1);
   const bool at_start = s0 >= 0 && s0 <= 1;
   return make(QueryKind::VertexFace, {a + s0 * e, a, b, c, a + d + s1 * e, a + d, b + d, c + d},
               truth, at_start ? "0" : "");
@@ -148,13 +149,13 @@ Generated parallel_edges() {
   const double a0 = xa + va / 2, a1 = a0 + la, b0 = xb + vb / 2, b1 = b0 + lb;
   const bool hit = !miss && a0 <= b1 && b0 <= a1;
   reframe(x);
-  return make(QueryKind::EdgeEdge, x, hit ? 1 : 0, "1/2");
+  return make(QueryKind::EdgeEdge, x, truth_of(hit), "1/2");
 }
 
 Generated degenerate_edge() {
   const Vec3 m = point(8), e = point(8), b0 = point(8), b1 = point(8), d = point(4);
   std::array<Vec3, 8> x = {m + e, m - e, b0, b1, m + d - e, m + d + e, b0 + d, b1 + point(4)};
-  return make(QueryKind::EdgeEdge, x, -1);
+  return make(QueryKind::EdgeEdge, x, Truth::Unknown);
 }
 
 }  // namespace

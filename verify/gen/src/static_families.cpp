@@ -48,10 +48,10 @@ double height() {
   return dyadic(1, 64, 6);
 }
 
-Generated make(const Triangle& t, const Vec3& b0, const Vec3& b1, int truth) {
+Generated make(const Triangle& t, const Vec3& b0, const Vec3& b1, Truth truth) {
   Generated g;
   g.query.x = {b0, t.d, t.e, t.f, b1, t.d, t.e, t.f};
-  g.query.truth = truth;
+  g.truth = truth;
   return g;
 }
 
@@ -63,57 +63,57 @@ std::string ratio(long p, long q) {
 
 // A path through X: B above the plane off to the side, B' = X - mu (B - X). It meets the
 // plane only at X, at t = 1 / (1 + mu).
-Generated through(const Triangle& t, const Vec3& x, int truth, const std::string& kind) {
+Generated through(const Triangle& t, const Vec3& x, Truth truth, const std::string& kind) {
   const Vec3 side = dyadic(-64, 64, 6) * (t.e - t.d) + dyadic(-64, 64, 6) * (t.f - t.d);
   const Vec3 b0 = x + dyadic(1, 64, 6) * t.n + side;
   const int mu = pick(1, 128);  // mu = mu/64
   Generated g = make(t, b0, x - std::ldexp(double(mu), -6) * (b0 - x), truth);
-  if (truth == 1) g.kind = kind, g.time = ratio(64, 64 + mu);
+  if (truth == Truth::Yes) g.kind = kind, g.time = ratio(64, 64 + mu);
   return g;
 }
 
 Generated parallel_cross() {
   const Triangle t = gen_triangle();
   const InPlanePoint p = gen_in_plane(t);
-  return make(t, p.x + height() * t.n, p.x - height() * t.n, p.inside);
+  return make(t, p.x + height() * t.n, p.x - height() * t.n, truth_of(p.inside));
 }
 
 Generated parallel_short() {
   const Triangle t = gen_triangle();
   const InPlanePoint p = gen_in_plane(t);
   const double h0 = dyadic(2, 64, 6), h1 = dyadic(1, 63, 6) * h0;
-  return make(t, p.x + h0 * t.n, p.x + h1 * t.n, 0);
+  return make(t, p.x + h0 * t.n, p.x + h1 * t.n, Truth::No);
 }
 
 Generated parallel_land() {
   const Triangle t = gen_triangle();
   const InPlanePoint p = gen_in_plane(t);
-  return make(t, p.x + height() * t.n, p.x, p.inside);
+  return make(t, p.x + height() * t.n, p.x, truth_of(p.inside));
 }
 
 Generated parallel_start() {
   const Triangle t = gen_triangle();
   const InPlanePoint p = gen_in_plane(t);
   const double s = *rc::gen::element(-1.0, 1.0);
-  return make(t, p.x, p.x + s * height() * t.n, p.inside);
+  return make(t, p.x, p.x + s * height() * t.n, truth_of(p.inside));
 }
 
 Generated angled() {
   const Triangle t = gen_triangle();
   const InPlanePoint p0 = gen_in_plane(t), p1 = gen_in_plane(t);
-  return make(t, p0.x + height() * t.n, p1.x + dyadic(-64, 64, 6) * t.n, -1);
+  return make(t, p0.x + height() * t.n, p1.x + dyadic(-64, 64, 6) * t.n, Truth::Unknown);
 }
 
 Generated through_edge() {
   const Triangle t = gen_triangle();
   const int i = pick(0, 2);
   const Vec3 a = t.vertex(i), b = t.vertex((i + 1) % 3);
-  return through(t, a + dyadic(1, 255, 8) * (b - a), 1, "edge");
+  return through(t, a + dyadic(1, 255, 8) * (b - a), Truth::Yes, "edge");
 }
 
 Generated through_vertex() {
   const Triangle t = gen_triangle();
-  return through(t, t.vertex(pick(0, 2)), 1, "vertex");
+  return through(t, t.vertex(pick(0, 2)), Truth::Yes, "vertex");
 }
 
 Generated hair_outside_edge() {
@@ -122,15 +122,15 @@ Generated hair_outside_edge() {
   const int i = pick(0, 2);
   const Vec3 a = t.vertex(i), b = t.vertex((i + 1) % 3);
   const Vec3 out = cross(b - a, t.n);
-  return through(t, a + dyadic(0, 256, 8) * (b - a) + 0x1p-30 * out, 0, "");
+  return through(t, a + dyadic(0, 256, 8) * (b - a) + 0x1p-30 * out, Truth::No, "");
 }
 
 Generated in_plane() {
   const Triangle t = gen_triangle();
   const InPlanePoint p0 = gen_in_plane(t), p1 = gen_in_plane(t);
-  const int truth = (p0.inside || p1.inside) ? 1 : -1;
+  const Truth truth = (p0.inside || p1.inside) ? Truth::Yes : Truth::Unknown;
   Generated g = make(t, p0.x, p1.x, truth);
-  if (truth == 1) g.kind = "in-plane";
+  if (truth == Truth::Yes) g.kind = "in-plane";
   return g;
 }
 
@@ -139,7 +139,7 @@ Generated zero_motion() {
   const InPlanePoint p = gen_in_plane(t);
   const bool on_plane = *rc::gen::arbitrary<bool>();
   const Vec3 b = on_plane ? p.x : p.x + dyadic(-64, 64, 6) * t.n;
-  return make(t, b, b, (b == p.x) ? p.inside : 0);
+  return make(t, b, b, truth_of(b == p.x && p.inside));
 }
 
 Generated grazing() {
@@ -147,7 +147,7 @@ Generated grazing() {
   const InPlanePoint p0 = gen_in_plane(t), p1 = gen_in_plane(t);
   const double s = *rc::gen::element(-1.0, 1.0);
   const double h = s * std::ldexp(1.0, -pick(20, 45));
-  return make(t, p0.x + height() * t.n, p1.x + h * t.n, s > 0 ? 0 : -1);
+  return make(t, p0.x + height() * t.n, p1.x + h * t.n, s > 0 ? Truth::No : Truth::Unknown);
 }
 
 Generated sliver() {
@@ -158,7 +158,7 @@ Generated sliver() {
   s.n = cross(s.e - s.d, s.f - s.d);
   const Vec3 up = s.n == Vec3{} ? off : s.n;  // n may round to 0 for a thin enough sliver
   const InPlanePoint p0 = gen_in_plane(s), p1 = gen_in_plane(s);
-  return make(s, p0.x + height() * up, p1.x - height() * up, -1);
+  return make(s, p0.x + height() * up, p1.x - height() * up, Truth::Unknown);
 }
 
 // F on line DE, or all three corners at D. Half the paths go exactly through a point of the
@@ -169,14 +169,14 @@ Generated degenerate() {
   if (point) s.e = s.d;
   s.f = s.d + dyadic(-128, 384, 8) * (s.e - s.d);
   s.n = Vec3{};
-  if (*rc::gen::arbitrary<bool>()) return make(s, small_point(16), small_point(16), -1);
+  if (*rc::gen::arbitrary<bool>()) return make(s, small_point(16), small_point(16), Truth::Unknown);
   // [D, E] lies in the hull. The path meets it only at t = 1 / (1 + mu), unless it runs
   // along the hull's line: then it enters earlier, and only the hit is certain.
   const Vec3 x = s.d + dyadic(0, 256, 8) * (s.e - s.d);
   Vec3 w = small_point(4);
   if (w == Vec3{}) w = Vec3{0, 0, 1};
   const int mu = pick(1, 128);
-  Generated g = make(s, x + w, x - std::ldexp(double(mu), -6) * w, 1);
+  Generated g = make(s, x + w, x - std::ldexp(double(mu), -6) * w, Truth::Yes);
   if (s.e == s.d || cross(w, s.e - s.d) != Vec3{}) g.time = ratio(64, 64 + mu);
   return g;
 }
@@ -200,7 +200,7 @@ Generated far_from_origin() {
              add_exactly(p.z, shift.z, s.z);
     p = s;
   }
-  if (!exact) g.query.truth = -1, g.kind.clear(), g.time.clear();
+  if (!exact) g.truth = Truth::Unknown, g.kind.clear(), g.time.clear();
   return g;
 }
 

@@ -20,10 +20,10 @@ std::string case_hash(const Query& q) {
   return h.hex();
 }
 
-std::string case_file_text(const Query& q, const std::vector<std::string>& comments) {
+std::string case_file_text(const QueryRecord& r, const std::vector<std::string>& comments) {
   std::ostringstream os;
   for (const std::string& c : comments) os << "# " << c << '\n';
-  write_native(os, q);
+  write_native(os, r);
   return os.str();
 }
 

@@ -24,37 +24,37 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A script file that removes itself: mkstemp in the temporary folder, written whole.
+// A script file with no name: mkstemp in the temporary folder, unlinked at once (so that a
+// killed fdhcert leaves nothing there), written whole, and read by gnuplot, which inherits the
+// descriptor, as /dev/fd/N.
 class ScriptFile {
  public:
   explicit ScriptFile(const std::string& text) {
     std::string pattern = (fs::temp_directory_path() / "fdhcert-chart-XXXXXX").string();
-    const int fd = ::mkstemp(pattern.data());
-    if (fd < 0) throw std::runtime_error("cannot create a gnuplot script: " + errno_text());
-    path_ = pattern;
+    fd_ = ::mkstemp(pattern.data());
+    if (fd_ < 0) throw std::runtime_error("cannot create a gnuplot script: " + errno_text());
+    ::unlink(pattern.c_str());
+    path_ = "/dev/fd/" + std::to_string(fd_);
     std::size_t done = 0;
     while (done < text.size()) {
-      const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+      const ssize_t n = ::write(fd_, text.data() + done, text.size() - done);
       if (n < 0 && errno == EINTR) continue;
       if (n < 0) {
         const std::string why = errno_text();
-        ::close(fd);
-        throw std::runtime_error("cannot write the gnuplot script " + path_ + ": " + why);
+        ::close(fd_);
+        throw std::runtime_error("cannot write the gnuplot script " + pattern + ": " + why);
       }
       done += std::size_t(n);
     }
-    ::close(fd);
   }
-  ~ScriptFile() {
-    std::error_code ec;
-    fs::remove(path_, ec);
-  }
+  ~ScriptFile() { ::close(fd_); }
   ScriptFile(const ScriptFile&) = delete;
   ScriptFile& operator=(const ScriptFile&) = delete;
   const std::string& path() const { return path_; }
 
  private:
   static std::string errno_text() { return std::strerror(errno); }
+  int fd_;
   std::string path_;
 };
 
@@ -70,7 +70,7 @@ std::pair<std::string, std::string> split_stem(const std::string& stem) {
 // shell) and is killed when fdhcert dies (PR_SET_PDEATHSIG). Throws unless it exits with 0.
 void run_gnuplot(const std::string& script, const std::string& dir, const std::string& what) {
   const ScriptFile file(script);
-  std::string prog = "gnuplot", arg = fs::absolute(file.path()).string();
+  std::string prog = "gnuplot", arg = file.path();
   char* argv[] = {prog.data(), arg.data(), nullptr};
   int report[2];  // the child's errno if it cannot start gnuplot; closed by a successful exec
   if (::pipe2(report, O_CLOEXEC) != 0)

@@ -31,9 +31,9 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return parts;
 }
 
-int parse_truth(const std::string& tok, const std::string& path, long line) {
-  if (tok == "0") return 0;
-  if (tok == "1") return 1;
+Truth parse_truth(const std::string& tok, const std::string& path, long line) {
+  if (tok == "0") return Truth::No;
+  if (tok == "1") return Truth::Yes;
   throw InputError(path, line, "truth must be 0 or 1, not " + quote(tok));
 }
 
@@ -156,10 +156,10 @@ std::optional<double> parse_double(const std::string& token, std::string& why) {
   return v;
 }
 
-std::vector<Query> read_native(const std::string& path) {
+std::vector<QueryRecord> read_native(const std::string& path) {
   InputFile in(path);
   const long long max_queries = bound_value(kMaxQueries);
-  std::vector<Query> out;
+  std::vector<QueryRecord> out;
   std::string line;
   try {
     while (in.next(line)) {
@@ -168,7 +168,8 @@ std::vector<Query> read_native(const std::string& path) {
       if (hash != std::string::npos) line.resize(hash);
       const std::vector<std::string> tok = split(line, ' ');
       if (tok.empty()) continue;
-      Query q;
+      QueryRecord r;
+      Query& q = r.query;
       if (tok[0] == "vf") {
         q.kind = QueryKind::VertexFace;
       } else if (tok[0] == "ee") {
@@ -185,7 +186,7 @@ std::vector<Query> read_native(const std::string& path) {
       if (has_control_byte(tok[1]))
         throw InputError(path, lineno, "the id " + quote(tok[1]) + " holds a control byte");
       check_query_count(out.size(), max_queries, in);
-      q.id = tok[1];
+      r.id = tok[1];
       for (int i = 0; i < 24; ++i) {
         std::string why;
         const auto v = parse_double(tok[2 + i], why);
@@ -193,10 +194,10 @@ std::vector<Query> read_native(const std::string& path) {
         double* xyz[3] = {&q.x[i / 3].x, &q.x[i / 3].y, &q.x[i / 3].z};
         *xyz[i % 3] = *v;
       }
-      if (tok.size() == 27) q.truth = parse_truth(tok[26], path, lineno);
-      q.file = path;
-      q.line = static_cast<int>(lineno);
-      out.push_back(std::move(q));
+      if (tok.size() == 27) r.truth = parse_truth(tok[26], path, lineno);
+      r.file = path;
+      r.line = static_cast<int>(lineno);
+      out.push_back(std::move(r));
     }
   } catch (const std::bad_alloc&) {
     out_of_memory(in, out.size());
@@ -204,12 +205,12 @@ std::vector<Query> read_native(const std::string& path) {
   return out;
 }
 
-std::vector<Query> read_benchmark_csv(const std::string& path, QueryKind kind) {
+std::vector<QueryRecord> read_benchmark_csv(const std::string& path, QueryKind kind) {
   InputFile in(path);
   const long long max_queries = bound_value(kMaxQueries);
-  std::vector<Query> out;
+  std::vector<QueryRecord> out;
   std::string line;
-  Query q;
+  QueryRecord r;
   int row = 0;
   try {
     while (in.next(line)) {
@@ -222,11 +223,11 @@ std::vector<Query> read_benchmark_csv(const std::string& path, QueryKind kind) {
             "expected 7 comma-separated integers, found " + std::to_string(col.size()));
       if (row == 0) {
         check_query_count(out.size(), max_queries, in);
-        q = Query{};
-        q.kind = kind;
-        q.file = path;
-        q.line = static_cast<int>(lineno);
-        q.id = std::to_string(out.size());
+        r = QueryRecord{};
+        r.query.kind = kind;
+        r.file = path;
+        r.line = static_cast<int>(lineno);
+        r.id = std::to_string(out.size());
       }
       double xyz[3];
       for (int c = 0; c < 3; ++c) {
@@ -246,13 +247,13 @@ std::vector<Query> read_benchmark_csv(const std::string& path, QueryKind kind) {
                                " is not exactly a double");
         xyz[c] = d;
       }
-      q.x[row] = Vec3{xyz[0], xyz[1], xyz[2]};
-      const int truth = parse_truth(trimmed(col[6]), path, lineno);
-      if (row > 0 && truth != q.truth)
+      r.query.x[row] = Vec3{xyz[0], xyz[1], xyz[2]};
+      const Truth truth = parse_truth(trimmed(col[6]), path, lineno);
+      if (row > 0 && truth != r.truth)
         throw InputError(path, lineno, "the truth column differs within one query");
-      q.truth = truth;
+      r.truth = truth;
       if (++row == 8) {
-        out.push_back(q);
+        out.push_back(r);
         row = 0;
       }
     }
@@ -276,7 +277,7 @@ std::optional<QueryKind> kind_from_folder(const std::string& path) {
   return std::nullopt;
 }
 
-std::vector<Query> read_query_file(const std::string& path, std::optional<QueryKind> kind) {
+std::vector<QueryRecord> read_query_file(const std::string& path, std::optional<QueryKind> kind) {
   const bool csv = path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
   if (!csv) return read_native(path);
   const std::optional<QueryKind> folder = kind_from_folder(path);
@@ -293,15 +294,15 @@ std::vector<Query> read_query_file(const std::string& path, std::optional<QueryK
   return read_benchmark_csv(path, *kind);
 }
 
-void write_native(std::ostream& os, const Query& q) {
-  os << (q.kind == QueryKind::VertexFace ? "vf " : "ee ") << q.id;
+void write_native(std::ostream& os, const QueryRecord& r) {
+  os << (r.query.kind == QueryKind::VertexFace ? "vf " : "ee ") << r.id;
   char buf[64];
-  for (const Vec3& p : q.x)
+  for (const Vec3& p : r.query.x)
     for (int c = 0; c < 3; ++c) {
       std::snprintf(buf, sizeof buf, " %a", p[c]);
       os << buf;
     }
-  if (q.has_truth()) os << ' ' << q.truth;
+  if (r.has_truth()) os << ' ' << (r.truth == Truth::Yes ? 1 : 0);
   os << '\n';
 }
 

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <string>
 
+#include "fdh/io/record_scope.hpp"
 #include "fdh/plugin/loader.hpp"
 
 namespace fdh::verify::plugin {
@@ -87,14 +88,17 @@ class SignalText {
   std::size_t n_ = 0;
 };
 
-// where()'s words, without allocating: the handler says them too.
+// where()'s words, without allocating: the handler says them too. The query is named after the
+// record it was asked for (fdh/io/record_scope.hpp).
 void add_where(SignalText& t, const CallSite& s) {
   t << "in " << s.function;
-  if (s.query && !s.query->file.empty())
-    t << " on query " << s.query->file.c_str() << ":" << (unsigned long)(s.query->line);
+  const QueryRecord* r = s.query ? record_of(*s.query) : nullptr;
+  if (r && !r->file.empty())
+    t << " on query " << r->file.c_str() << ":" << (unsigned long)(r->line);
   else if (s.query) {  // a generated query: the line of a query file that asks it again
     const char* kind = s.query->kind == QueryKind::EdgeEdge ? "ee " : "vf ";
-    t << " on query '" << s.query->id.c_str() << "': " << kind << s.query->id.c_str();
+    const char* id = r && !r->id.empty() ? r->id.c_str() : "unnamed";
+    t << " on query '" << id << "': " << kind << id;
     for (const Vec3& p : s.query->x) {
       t << " ";
       t.hex(p.x) << " ";

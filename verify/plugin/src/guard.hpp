@@ -16,7 +16,8 @@ namespace fdh::verify::plugin {
 struct CallSite {
   const char* plugin = "";       // the plug-in's name
   const char* function = "";     // "point_triangle", "vertex_face_ccd", ..., "kdop"
-  const Query* query = nullptr;  // the query asked, for the query functions
+  const Query* query = nullptr;  // the query asked, for the query functions (its record:
+                                 // fdh/io/record_scope.hpp)
   int k = 0;                     // the k-DOP's k and
   std::size_t points = 0;        // its number of points, for kdop
 };

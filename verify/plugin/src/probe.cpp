@@ -12,22 +12,23 @@
 #include <stdexcept>
 #include <string>
 
+#include "fdh/io/record_scope.hpp"
 #include "fdh/plugin/loader.hpp"
 #include "guard.hpp"
 
 namespace fdh::verify::plugin {
 namespace {
 
-Query probe_query(QueryKind kind, const char* id, std::array<Vec3, 8> x) {
-  Query q;
-  q.kind = kind;
-  q.id = std::string("probe/") + id;
-  q.x = x;
-  return q;
+QueryRecord probe_query(QueryKind kind, const char* id, std::array<Vec3, 8> x) {
+  QueryRecord r;
+  r.query.kind = kind;
+  r.query.x = x;
+  r.id = std::string("probe/") + id;
+  return r;
 }
 
 // Ordinary inputs of every decision: a hit, a miss, a degenerate one, extreme coordinates.
-std::vector<Query> probe_queries() {
+std::vector<QueryRecord> probe_queries() {
   const Vec3 d{0, 0, 0}, e{1, 0, 0}, f{0, 1, 0};
   const QueryKind vf = QueryKind::VertexFace, ee = QueryKind::EdgeEdge;
   return {
@@ -46,17 +47,18 @@ std::vector<Query> probe_queries() {
 }
 
 void run_probes(const std::vector<Method>& methods, const std::vector<BoxMethod>& boxes) {
-  const std::vector<Query> queries = probe_queries();
+  const std::vector<QueryRecord> probes = probe_queries();
   for (const Method& m : methods)
-    for (const Query& q : queries) {
-      if (m.applies_to(q)) m.hit(q);
-      if (m.gives_toi(q)) m.time_of_impact(q, kDefaultToiWidth);
+    for (const QueryRecord& r : probes) {
+      const RecordScope asking(r);  // a crash names the probe
+      if (m.applies_to(r.query)) m.hit(r.query);
+      if (m.gives_toi(r.query)) m.time_of_impact(r.query, kDefaultToiWidth);
     }
   double lo[13], hi[13];
   for (const BoxMethod& b : boxes)
-    for (const Query& q : queries)
+    for (const QueryRecord& r : probes)
       for (std::size_t n : {std::size_t(1), std::size_t(3), std::size_t(8)})
-        b.build(q.x.data(), n, lo, hi);
+        b.build(r.query.x.data(), n, lo, hi);
 }
 
 // The child: probes, then says "ok" on `fd` (a plug-in that calls exit() never says it).

@@ -18,6 +18,7 @@
 #include "fdh/io/atomic_file.hpp"
 #include "fdh/io/case_files.hpp"
 #include "fdh/io/query_io.hpp"
+#include "fdh/io/record_scope.hpp"
 #include "fdh/io/scene_file.hpp"
 #include "fdh/suite/build_info.hpp"
 #include "fdh/suite/certify_metamorphic.hpp"
@@ -93,11 +94,11 @@ class Certifier {
   }
 
   // Every query of qs, on every core; the certificate then counts them in order.
-  void check_queries(const std::vector<Query>& qs) { record(tally(qs)); }
+  void check_queries(const std::vector<QueryRecord>& qs) { record(tally(qs)); }
 
   // What qs adds to the certificate: checked on every core, merged in order. Safe to call from
   // several threads at once.
-  CertifyTally tally(const std::vector<Query>& qs) const {
+  CertifyTally tally(const std::vector<QueryRecord>& qs) const {
     const auto check_chunk = [&](std::size_t begin, std::size_t end, CertifyTally& t) {
       for (std::size_t i = begin; i < end; ++i) check_query(qs[i], t);
     };
@@ -135,16 +136,18 @@ class Certifier {
     c_.truths = total_.truths, c_.truth_violations = total_.truth_violations;
   }
 
-  void check_query(const Query& q, CertifyTally& t) const {
-    check_boxes(q, std::vector<Vec3>(q.x.begin(), q.x.end()), t);
+  void check_query(const QueryRecord& r, CertifyTally& t) const {
+    const RecordScope asking(r);  // a plug-in's crash names r
+    const Query& q = r.query;
+    check_boxes(r, std::vector<Vec3>(q.x.begin(), q.x.end()), t);
     if (q.is_static_vf()) {
-      check_boxes(q, {q.b0(), q.b1()}, t);
-      check_boxes(q, {q.d(), q.e(), q.f()}, t);
+      check_boxes(r, {q.b0(), q.b1()}, t);
+      check_boxes(r, {q.d(), q.e(), q.f()}, t);
     }
     const bool twin = twin_hit(q);
-    check_truth(q, twin, t);
+    check_truth(r, twin, t);
     if (const std::optional<std::string> broken = metamorphic_.check(q, twin, t.metamorphic))
-      violation(with_truth(q, twin), *broken, t);
+      violation(with_truth(r, twin), *broken, t);
     const Decision d = decision_of(q);
     for (std::size_t i = 0; i < t.promises.size(); ++i) {
       PromiseCheck& p = t.promises[i];
@@ -156,14 +159,15 @@ class Certifier {
       const Verdicts v = check(m, q, twin);
       if (v.kept) continue;
       ++p.violations;
-      violation(with_truth(q, twin), describe(m, v) + " (" + to_string(d) + ")", t);
+      violation(with_truth(r, twin), describe(m, v) + " (" + to_string(d) + ")", t);
     }
-    check_times(q, twin, t);
+    check_times(r, twin, t);
   }
 
   // Each time-promised method's time of impact against the exact earliest contact.
-  void check_times(const Query& q, bool twin, CertifyTally& t) const {
+  void check_times(const QueryRecord& r, bool twin, CertifyTally& t) const {
     if (t.times.empty()) return;
+    const Query& q = r.query;
     const Decision d = toi_decision_of(q);
     const TimeTwin exact = time_twin(q);
     for (TimePromiseCheck& row : t.times) {
@@ -171,24 +175,24 @@ class Certifier {
       const Method& m = named(timed_, row.method);
       const TimeCheck c = check_time(m, q, c_.options.toi_width, exact);
       row.tally.add(c, 0, 0);
-      if (!c.kept) violation(with_truth(q, twin), describe(m, c) + " (" + to_string(d) + ")", t);
+      if (!c.kept) violation(with_truth(r, twin), describe(m, c) + " (" + to_string(d) + ")", t);
     }
   }
 
-  static Query with_truth(Query q, bool twin) {
-    q.truth = twin;
-    return q;
+  static QueryRecord with_truth(QueryRecord r, bool twin) {
+    r.truth = truth_of(twin);
+    return r;
   }
 
-  void check_truth(const Query& q, bool twin, CertifyTally& t) const {
-    const std::optional<bool> agrees = twin_matches_truth(q, twin);
+  void check_truth(const QueryRecord& q, bool twin, CertifyTally& t) const {
+    const std::optional<bool> agrees = twin_matches_truth(stated(q.truth), twin);
     if (!agrees) return;
     ++t.truths;
     if (*agrees) return;
     ++t.truth_violations;
     violation(q,
               "exact says " + std::string(twin ? "hit" : "no") + ", the stored truth says " +
-                  (q.truth ? "hit" : "no"),
+                  (q.truth == Truth::Yes ? "hit" : "no"),
               t);
   }
 
@@ -218,7 +222,7 @@ class Certifier {
   }
   const Method& method(const std::string& name) const { return named(methods_, name); }
 
-  void check_boxes(const Query& q, const std::vector<Vec3>& pts, CertifyTally& t) const {
+  void check_boxes(const QueryRecord& q, const std::vector<Vec3>& pts, CertifyTally& t) const {
     for (std::size_t i = 0; i < boxes_.size(); ++i) {
       BoxCheck& box = t.boxes[i];
       ++box.boxes;
@@ -233,12 +237,12 @@ class Certifier {
     }
   }
 
-  static void violation(const Query& q, const std::string& what, CertifyTally& t) {
+  static void violation(const QueryRecord& q, const std::string& what, CertifyTally& t) {
     if (t.first) return;
     t.first = CertifyTally::Found{
         what + " (query " + q.id + " from " +
             (q.file.empty() ? "a generator" : q.file + ":" + std::to_string(q.line)) + ")",
-        "violation-" + case_hash(q) + ".vf", case_file_text(q, {"certify: " + what + "."})};
+        "violation-" + case_hash(q.query) + ".vf", case_file_text(q, {"certify: " + what + "."})};
   }
 
   // A missed pair is saved as an OBJ: A at t = 0, A at t = 1 (its swept leaves), and B.
@@ -290,9 +294,10 @@ CertifyTally scene_tally(const std::string& file, const CertifyOptions& o, const
   CertifyTally sum = cert.zero();
   opt.on_frame = [&](const cloth::Simulation& sim, int f) {
     if (f % o.scene_stride) return;
-    std::vector<Query> qs;
+    std::vector<QueryRecord> qs;
     for (const auto& nq : sim.queries()) {
-      Query q = sim.query(nq);
+      QueryRecord q;
+      q.query = sim.query(nq);
       q.id = scene.name + "/f" + std::to_string(f) + "p" + std::to_string(nq.particle) + "t" +
              std::to_string(nq.triangle);
       q.file = file;
@@ -340,7 +345,7 @@ void check_corpus(Certificate& c, Certifier& cert) {
   const std::vector<std::string> files = list_query_files(c.options.corpus_dir);
   for (const std::string& f : files) {
     tell(c, "corpus", c.corpus_files++, long(files.size()));
-    const std::vector<Query> qs = read_native(f);
+    const std::vector<QueryRecord> qs = read_native(f);
     c.corpus_queries += long(qs.size());
     cert.check_queries(qs);
   }
@@ -356,9 +361,9 @@ void check_families(Certificate& c, Certifier& cert) {
     ++stream;
     for (long i = 0; i < c.options.per_family; i += batch) {
       tell(c, "generator families", c.fuzzed_queries, total);
-      std::vector<Query> qs;
+      std::vector<QueryRecord> qs;
       for (long j = i; j < std::min(i + batch, c.options.per_family); ++j)
-        qs.push_back(generate(f, case_seed(c.options.seed * 1000 + stream, j)).query);
+        qs.push_back(generate(f, case_seed(c.options.seed * 1000 + stream, j)).record());
       c.fuzzed_queries += long(qs.size());
       cert.check_queries(qs);
     }
@@ -381,7 +386,7 @@ void check_extra_files(Certificate& c, Certifier& cert) {
   long done = 0;
   for (const std::string& f : c.options.extra_files) {
     tell(c, "extra files", done++, long(c.options.extra_files.size()));
-    const std::vector<Query> qs = read_query_file(f);
+    const std::vector<QueryRecord> qs = read_query_file(f);
     c.extra_queries += long(qs.size());
     cert.check_queries(qs);
   }

@@ -25,6 +25,7 @@
 #include "fdh/check/checker.hpp"
 #include "fdh/gen/families.hpp"
 #include "fdh/io/case_files.hpp"
+#include "fdh/io/record_scope.hpp"
 #include "fuzz_target.hpp"
 
 namespace fdh::verify {
@@ -387,7 +388,11 @@ struct Run {
     }
   }
 
-  bool fails(const Generated& g) const { return target.fails(g.query); }
+  bool fails(const Generated& g) const {
+    const QueryRecord r = g.record();
+    const RecordScope asking(r);  // a plug-in's crash names the family
+    return target.fails(g.query);
+  }
 
   // Runs cases [r.begin, r.end), writes their case files, then the marker; its disagreements.
   long run_chunk(Range r) const {

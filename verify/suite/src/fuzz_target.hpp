@@ -26,7 +26,7 @@ struct FuzzTarget {
   // for a static query, the earliest CCD contact time for a moving one); a metamorphic case also
   // names the transform and the method's verdicts before and after it. It depends on the query
   // alone, so that any number of workers and shards write identical files.
-  std::string case_text(Query q, const std::string& family) const;
+  std::string case_text(const Query& q, const std::string& family) const;
 };
 
 }  // namespace fdh::verify

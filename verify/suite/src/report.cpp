@@ -27,10 +27,16 @@ std::string kinds(const Classification& c) {
   return out.empty() ? "no queries" : out;
 }
 
-const char* truth_words(const std::string& truth) {
-  return truth == "file"    ? "the file's truth"
-         : truth == "exact" ? "exact"
-                            : "the file's truth where given, else exact";
+const char* truth_words(TruthSource truth) {
+  switch (truth) {
+    case TruthSource::File:
+      return "the file's truth";
+    case TruthSource::Exact:
+      return "exact";
+    case TruthSource::Mixed:
+      break;
+  }
+  return "the file's truth where given, else exact";
 }
 
 void print_block(std::ostream& os, const std::string& title, const Classification& c,
@@ -62,8 +68,12 @@ Json tally_json(const Tally& t) {
 Json counts_json(const Classification& c) {
   Json methods = Json::object();
   for (const MethodResult& m : c.methods) methods[m.name] = tally_json(m.tally);
-  return {{"queries", c.queries},     {"static_vf", c.static_vf}, {"moving_vf", c.moving_vf},
-          {"edge_edge", c.edge_edge}, {"truth", c.truth},         {"methods", methods}};
+  return {{"queries", c.queries},
+          {"static_vf", c.static_vf},
+          {"moving_vf", c.moving_vf},
+          {"edge_edge", c.edge_edge},
+          {"truth", truth_source_name(c.truth)},
+          {"methods", methods}};
 }
 
 std::string csv_field(const std::string& s) {
@@ -107,20 +117,20 @@ Json classification_json(const std::vector<FileClassification>& files, const Cla
   return j;
 }
 
-std::string per_query_csv(const std::vector<Query>& queries, const Classification& c,
+std::string per_query_csv(const std::vector<QueryRecord>& queries, const Classification& c,
                           const ToiClassification* toi) {
   std::set<std::string> files;
-  for (const Query& q : queries) files.insert(q.file);
+  for (const QueryRecord& q : queries) files.insert(q.file);
   const bool prefix = files.size() > 1;
   std::ostringstream os;
   os << "id,truth";
   for (const MethodResult& m : c.methods) os << ',' << m.name;
   os << ",contact,time" << (toi ? toi_csv_header(*toi) : "") << "\n";
   for (std::size_t i = 0; i < queries.size(); ++i) {
-    const Query& q = queries[i];
+    const QueryRecord& q = queries[i];
     os << csv_field(prefix ? q.file + ":" + q.id : q.id) << ',' << int(c.reference[i]);
     for (const MethodResult& m : c.methods) os << ',' << verdict_field(m.verdict[i]);
-    const auto [contact, time] = contact_columns(q);
+    const auto [contact, time] = contact_columns(q.query);
     os << ',' << contact << ',' << time << (toi ? toi_csv_fields(*toi, i) : "") << '\n';
   }
   return os.str();

@@ -21,12 +21,9 @@ std::vector<SpeedAccuracyRow> speed_accuracy(long per_family, std::uint64_t seed
     if (tick) tick(long(stream), long(all_families().size()));
     ++stream;
     std::vector<Query> qs;
-    for (long i = 0; i < per_family; ++i) {
-      Query q = generate(f, case_seed(seed * 1000 + stream, i)).query;
-      q.truth = -1;  // count against the twin
-      qs.push_back(q);
-    }
-    const Classification c = classify(qs, methods);
+    for (long i = 0; i < per_family; ++i)
+      qs.push_back(generate(f, case_seed(seed * 1000 + stream, i)).query);
+    const Classification c = classify(qs, {}, methods);  // counted against the twin
     for (const MethodResult& m : c.methods) {
       const long n = m.tally.decided();  // the queries it applies to
       if (n == 0) continue;

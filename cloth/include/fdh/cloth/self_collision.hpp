@@ -52,7 +52,7 @@ class SelfCollision {
   // Makes the step from x0 to x free of self-contact, changing x and v where needed.
   Result resolve(const std::vector<Vec3>& x0, std::vector<Vec3>& x, std::vector<Vec3>& v);
 
-  // One test of a candidate: its kind and its four particles (vf: p a b c; ee: a0 a1 b0 b1).
+  // One test of a candidate: its kind and its four particles (vf: v f0 f1 f2; ee: ea0 ea1 eb0 eb1).
   struct Candidate {
     QueryKind kind;
     std::array<int, 4> ids;

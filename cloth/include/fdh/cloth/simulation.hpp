@@ -16,14 +16,11 @@
 #include "fdh/cloth/cloth.hpp"
 #include "fdh/cloth/scene.hpp"
 #include "fdh/cloth/self_collision.hpp"
+#include "fdh/point_triangle/robust.hpp"
 #include "fdh/query.hpp"
 #include "fdh/vec3.hpp"
 
 namespace fdh::cloth {
-
-// A point–triangle test: does the particle moving from b0 to b1 touch the still triangle def?
-using NarrowPhase = bool (*)(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
-                             const Vec3& f);
 
 // How far outside the crossed plane a particle is put back: 2^-30 m, far above the rounding of
 // the projection (a few ulps of the coordinates) for scenes within 1 km of the origin.
@@ -45,7 +42,7 @@ class Simulation {
  public:
   // k: the FDH's k (6, 14, 18 or 26). dt <= 0 takes the scene's. self_exact: the exact CCD
   // behind the self-collision pass's robust test; required if the scene asks for the pass.
-  Simulation(const Scene& scene, NarrowPhase narrow, int k = 18, double dt = 0,
+  Simulation(const Scene& scene, PointTriangleTest narrow, int k = 18, double dt = 0,
              CcdTest self_exact = nullptr);
   ~Simulation();
 
@@ -77,7 +74,7 @@ class Simulation {
 
   Scene scene_;
   Cloth cloth_;
-  NarrowPhase narrow_;
+  PointTriangleTest narrow_;
   double dt_;
   TriMesh mesh_;
   std::vector<Vec3> normals_;

@@ -122,6 +122,8 @@ inline Filtered robust_point_triangle_filter(const Vec3& b0, const Vec3& b1, con
   return code == 2 ? robust_point_triangle_tight(b0, b1, d, e, f) : Filtered::Uncertain;
 }
 
+// A point–triangle test: does the point moving from b0 to b1 touch the still triangle def? The
+// narrow phase of the cloth's simulation takes one.
 using PointTriangleTest = bool (*)(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec3& e,
                                    const Vec3& f);
 

@@ -33,9 +33,9 @@ enum fdh_promise {
 };
 
 /* A query: 8 points, x[i] = {x, y, z}, in the order of fdh::Query (fast/include/fdh/query.hpp):
- *   vertex-face: p0 a0 b0 c0 p1 a1 b1 c1, the point p and the triangle abc at t = 0, then at
- *                t = 1, each vertex moving linearly;
- *   edge-edge:   e0 e1 f0 f1 at t = 0, then at t = 1 (the edges e0e1 and f0f1).
+ *   vertex-face: v f0 f1 f2, the vertex v and the triangle f0f1f2 at t = 0, then at t = 1,
+ *                each vertex moving linearly;
+ *   edge-edge:   ea0 ea1 eb0 eb1 at t = 0, then at t = 1 (the edges ea0ea1 and eb0eb1).
  * Return 1 for contact (closed sets: touching counts), 0 for none. Any other value is reported
  * as garbage and ends the run. */
 typedef int (*fdh_query_fn)(const double x[8][3]);

@@ -34,8 +34,9 @@ Verdicts check(const Method& m, const Query& q, Decision d);
 // A verdict the method already gave elsewhere (the simulator's narrow phase) against the twin.
 Verdicts check_given(const Method& m, const Query& q, bool said);
 
-// The twin against a stored truth: nullopt when the query has none, else whether they agree.
-std::optional<bool> twin_matches_truth(const Query& q, bool twin);
+// The twin against a file's truth (a verdict, or nullopt where the file gives none): nullopt
+// without a truth, else whether they agree.
+std::optional<bool> twin_matches_truth(std::optional<bool> truth, bool twin);
 
 // A count of checks and of broken promises, with the first few broken cases kept.
 struct CheckTally {

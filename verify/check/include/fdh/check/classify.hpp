@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,9 +28,16 @@ struct MethodResult {
   std::vector<char> verdict;  // per query: 1 = hit, 0 = no hit, kNotApplicable
 };
 
+// What the tallies count against: the file's truth (every query has one), exact (none has), or
+// the file's truth where given, else exact.
+enum class TruthSource { File, Exact, Mixed };
+
+// "file", "exact" or "mixed", as in classify's JSON.
+const char* truth_source_name(TruthSource s);
+
 struct Classification {
   std::size_t queries = 0;
-  std::string truth;            // "file" (every query has one), "exact" (none has), or "mixed"
+  TruthSource truth = TruthSource::Exact;
   std::vector<char> reference;  // per query: the file's truth where given, else exact's verdict
   std::vector<char> exact;      // per query: the exact twin's verdict (registry.hpp)
   std::vector<MethodResult> methods;
@@ -41,10 +49,13 @@ struct Classification {
 // mean of enough further calls (at most 1000) to fill that.
 double seconds_per_pass(const std::function<void()>& pass);
 
-// Any queries; a method that does not apply to a query (Method::applies_to) gets
-// kNotApplicable there. Each method's time is the mean over enough passes to fill about 20 ms,
-// so that short files still give a stable ns per query.
-Classification classify(const std::vector<Query>& queries, const std::vector<Method>& methods);
+// Any queries, with the file's truth per query (truth[i] for queries[i], nullopt where the file
+// gives none; an empty vector: none at all); a method that does not apply to a query
+// (Method::applies_to) gets kNotApplicable there. Each method's time is the mean over enough
+// passes to fill about 20 ms, so that short files still give a stable ns per query.
+Classification classify(const std::vector<Query>& queries,
+                        const std::vector<std::optional<bool>>& truth,
+                        const std::vector<Method>& methods);
 
 // The classifications of consecutive groups (files) joined into one: counts add up, times are
 // weighted by the queries each method applied to.

@@ -14,16 +14,21 @@
 #include <string>
 #include <vector>
 
+#include "fdh/io/query_record.hpp"
 #include "fdh/query.hpp"
 
 namespace fdh::verify {
 
-// One case of a family.
+// One case of a family. Its record (record()) is named by the family.
 struct Generated {
   std::string family;  // the family's name
-  Query query;         // query.truth: 0 or 1 where the construction decides it, else -1
-  std::string kind;    // the contact kind the construction guarantees ("edge", ...), or ""
-  std::string time;    // the exact earliest contact time it guarantees ("p/q"), or ""
+  Query query;
+  Truth truth = Truth::Unknown;  // where the construction decides it
+  std::string kind;  // the contact kind the construction guarantees ("edge", ...), or ""
+  std::string time;  // the exact earliest contact time it guarantees ("p/q"), or ""
+
+  // As a record without a file: the family's name as its id, the construction's truth.
+  QueryRecord record() const { return {query, family, truth, "", 0}; }
 };
 
 struct Family {
@@ -32,7 +37,7 @@ struct Family {
   std::string summary;  // what the construction draws, in one line
   // The construction. It draws through RapidCheck, so it runs only inside a generator: call
   // it through generate(), shrunk_failure() or gen_family() (fdh/gen/rapidcheck.hpp), which
-  // also set the case's family and query id to `name`.
+  // also set the case's family to `name`.
   Generated (*construct)() = nullptr;
 };
 

@@ -5,15 +5,15 @@
 #include <string>
 #include <vector>
 
-#include "fdh/query.hpp"
+#include "fdh/io/query_record.hpp"
 
 namespace fdh::verify {
 
 // 16 hex digits (FNV-1a over the 24 coordinates' bits and the kind).
 std::string case_hash(const Query& q);
 
-// `# comment` lines, then the query as a native line (hex-float, truth included).
-std::string case_file_text(const Query& q, const std::vector<std::string>& comments);
+// `# comment` lines, then the record as a native line (hex-float, truth included).
+std::string case_file_text(const QueryRecord& r, const std::vector<std::string>& comments);
 
 // The query files under `path`: the file itself, or every *.vf below a folder, sorted.
 // Anything else (a FIFO, a device) is returned as given, for the reader to take or refuse.

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "fdh/query.hpp"
+#include "fdh/io/query_record.hpp"
 
 namespace fdh::verify {
 
@@ -37,11 +37,11 @@ class InputFile {
 };
 
 // Native: `vf|ee <id> <24 numbers> [truth]` per line, `#` comments. Throws InputError.
-std::vector<Query> read_native(const std::string& path);
+std::vector<QueryRecord> read_native(const std::string& path);
 
 // Benchmark CSV: 8 rows per query of `xn,xd,yn,yd,zn,zd,truth`. Every rational must be exactly a
 // double. Throws InputError.
-std::vector<Query> read_benchmark_csv(const std::string& path, QueryKind kind);
+std::vector<QueryRecord> read_benchmark_csv(const std::string& path, QueryKind kind);
 
 // The kind a CSV's folder gives it: its parent folder named exactly `vertex-face` or
 // `edge-edge`, else none.
@@ -50,11 +50,11 @@ std::optional<QueryKind> kind_from_folder(const std::string& path);
 // By extension: .csv is the benchmark format, anything else native. A CSV's kind comes from its
 // folder (kind_from_folder), else from `kind`; a folder and a `kind` that disagree, or neither,
 // is an InputError.
-std::vector<Query> read_query_file(const std::string& path,
-                                   std::optional<QueryKind> kind = std::nullopt);
+std::vector<QueryRecord> read_query_file(const std::string& path,
+                                         std::optional<QueryKind> kind = std::nullopt);
 
 // One native line, coordinates in hex-float so that reading it back gives the same doubles.
-void write_native(std::ostream& os, const Query& q);
+void write_native(std::ostream& os, const QueryRecord& r);
 
 // Parses one number of the native format: decimal (correctly rounded) or hex-float, finite.
 // Returns nullopt and sets `why` (the token quoted, see quote()) when it is not one.

@@ -8,6 +8,7 @@
 
 #include "fdh/check/classify.hpp"
 #include "fdh/check/classify_toi.hpp"
+#include "fdh/io/query_record.hpp"
 #include "fdh/suite/report.hpp"
 
 namespace fdh::verify {
@@ -15,7 +16,7 @@ namespace fdh::verify {
 struct ClassifiedFiles {
   std::vector<FileClassification> files;  // in the order given, those without queries left out
   Classification total;
-  std::vector<Query> all;  // every query read, in order
+  std::vector<QueryRecord> all;  // every query read, in order
 };
 
 // kind: "vf" or "ee" for CSV files whose path names no vertex-face or edge-edge folder, or ""

@@ -8,7 +8,7 @@
 
 #include "fdh/check/classify.hpp"
 #include "fdh/check/classify_toi.hpp"
-#include "fdh/query.hpp"
+#include "fdh/io/query_record.hpp"
 
 namespace fdh::verify {
 
@@ -42,7 +42,7 @@ nlohmann::ordered_json classification_json(const std::vector<FileClassification>
 // exact CCD, a rational or "lo..hi" around an irrational one. No contact: "none" and "".
 // With queries from several files the id is "<file>:<id>".
 // With `toi` (classify --toi), each row also has the TOI columns of toi_report.hpp after time.
-std::string per_query_csv(const std::vector<Query>& queries, const Classification& c,
+std::string per_query_csv(const std::vector<QueryRecord>& queries, const Classification& c,
                           const ToiClassification* toi = nullptr);
 
 }  // namespace fdh::verify
