@@ -141,8 +141,8 @@ def sample_queries(path):
 
 def toi_files():
     files = [DATA / "moving.vf", DATA / "moving_times.vf"]
-    if SAMPLE.is_dir():
-        files += sorted(SAMPLE.glob("*/*/*.csv"))[::6]
+    if SAMPLE and Path(SAMPLE).is_dir():
+        files += sorted(Path(SAMPLE).glob("*/*/*.csv"))[::6]
     return files
 
 

@@ -125,8 +125,8 @@ std::size_t report_broken_times(const std::vector<QueryRecord>& queries,
         for (const std::size_t i : r.tally.first_broken)
           err << "fdhcert: " << r.name << " breaks its " << to_string(r.promise) << " time at "
               << where_and_id(queries[i]) << ": "
-              << describe(m, check_time_given(m, queries[i].query, toi.width, r.said[i],
-                                              toi.twin[i]))
+              << describe(m,
+                          check_time_given(m, queries[i].query, toi.width, r.said[i], toi.twin[i]))
               << "\n";
   }
   return found;
