@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -16,32 +15,13 @@
 
 #include "fdh/check/registry.hpp"
 #include "fdh/io/query_io.hpp"
+#include "sample_sets.hpp"
 #include "suites.hpp"
 
 namespace fdh::bench {
 namespace {
 
-namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-// Queries of each set: <set>/<vertex-face|edge-edge>/*.csv.
-std::map<std::string, std::vector<Query>> sample_sets() {
-  std::map<std::string, std::vector<Query>> sets;
-  const fs::path root = FDH_CCD_SAMPLE;  // the build's FDH_CCD_SAMPLE, empty for none
-  if (!fs::is_directory(root)) return sets;
-  std::vector<fs::path> files;
-  for (const auto& e : fs::recursive_directory_iterator(root))
-    if (e.path().extension() == ".csv") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  for (const fs::path& f : files) {
-    const auto kind = verify::kind_from_folder(f.string());
-    if (!kind) continue;
-    const std::string set = f.parent_path().parent_path().filename().string();
-    for (const verify::QueryRecord& r : verify::read_benchmark_csv(f.string(), *kind))
-      sets[set].push_back(r.query);
-  }
-  return sets;
-}
 
 double seconds_per_call(const verify::Method& m, const Query& q) {
   int reps = 1;

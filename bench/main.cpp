@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   fdh::bench::register_narrow_phase();
   fdh::bench::register_ccd_sample();
+  fdh::bench::register_ccd_toi();
   fdh::bench::register_frames();
   KeepTimes console;
   benchmark::RunSpecifiedBenchmarks(&console);

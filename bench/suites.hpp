@@ -11,6 +11,10 @@ void register_narrow_phase();
 // the build's FDH_CCD_SAMPLE, by default ../shared/ccd-sample (none when there is none).
 void register_ccd_sample();
 
+// toi/sample/<set>, toi/sample/all, toi/family/<family>, toi/family/hard: robust's time of
+// impact at w = 2^-30 and 2^-50 beside its verdict alone, ns per query and their ratios.
+void register_ccd_toi();
+
 // frame/grid:<n>/self:<0|1>: the table scene's first frames, per grid, without and with the
 // self-collision pass (fewer frames at large grids: a benchmark's iteration count is fixed
 // at registration).

@@ -13,10 +13,11 @@ include(CMakePackageConfigHelpers)
 set(FDH_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/fdhcert)
 set_target_properties(fdh_fast PROPERTIES EXPORT_NAME fast)
 set_target_properties(fdh_cloth PROPERTIES EXPORT_NAME cloth)
+set_target_properties(fdh_parallel PROPERTIES EXPORT_NAME parallel)
 
-install(TARGETS fdh_fast fdh_cloth EXPORT fdhcertFast
+install(TARGETS fdh_fast fdh_parallel fdh_cloth EXPORT fdhcertFast
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(dir fast cloth)
+foreach(dir fast parallel cloth)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
 install(EXPORT fdhcertFast NAMESPACE fdhcert:: FILE fdhcertFastTargets.cmake

@@ -166,9 +166,11 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
   }
 };
 
-SelfCollision::SelfCollision(const Cloth& cloth, int k, CcdTest exact, int rounds)
-    : exact_(exact), rounds_(rounds) {
-  if (!exact_) throw std::invalid_argument("self-collision needs an exact CCD fallback");
+SelfCollision::SelfCollision(const Cloth& cloth, int k, CcdTest exact, ExactToi exact_toi,
+                             int rounds)
+    : exact_(exact), exact_toi_(exact_toi), rounds_(rounds) {
+  if (!exact_ || !exact_toi_)
+    throw std::invalid_argument("self-collision needs an exact CCD fallback");
   trees_ = with_k(k, [&](auto kc) -> std::unique_ptr<Trees> {
     return std::make_unique<TreesK<decltype(kc)::value>>(cloth);
   });
@@ -198,6 +200,31 @@ void SelfCollision::contacts(const std::vector<Vec3>& x0, const std::vector<Vec3
   r.hits += long(touching_.size());
 }
 
+void SelfCollision::stop_at_impact(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
+                                   std::vector<Vec3>& v) {
+  toi_.assign(touching_.size(), 1);
+  for_chunks(int(touching_.size()), 64, [&](int begin, int end) {
+    for (int c = begin; c < end; ++c) {
+      Query q;
+      q.kind = touching_[c].kind;
+      for (int i = 0; i < 4; ++i) {
+        q.x[i] = x0[touching_[c].ids[i]];
+        q.x[i + 4] = x[touching_[c].ids[i]];
+      }
+      toi_[c] = robust_ccd_toi(q, kDefaultToiWidth, exact_toi_).t_lo;
+    }
+  });
+  stop_.assign(x.size(), 2);  // 2: not in a touching pair
+  for (std::size_t c = 0; c < touching_.size(); ++c)
+    for (const int i : touching_[c].ids) stop_[i] = std::min(stop_[i], toi_[c]);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (stop_[i] > 1) continue;
+    // t_lo = 0 puts it back at the start exactly (0 only when the pair touches there).
+    x[i] = stop_[i] == 0 ? x0[i] : x0[i] + stop_[i] * (x[i] - x0[i]);
+    v[i] = Vec3{};
+  }
+}
+
 namespace {
 
 // Union–find over the particles, for the impact zones.
@@ -215,6 +242,16 @@ struct Zones {
 
 SelfCollision::Result SelfCollision::resolve(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
                                              std::vector<Vec3>& v) {
+  const std::vector<Vec3> x_in = x;
+  Result r = stages(x0, x, v);
+  if (r.hits == 0) return r;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (!(x[i] == x_in[i])) r.motion += norm(x_in[i] - x0[i]), r.kept += norm(x[i] - x0[i]);
+  return r;
+}
+
+SelfCollision::Result SelfCollision::stages(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
+                                            std::vector<Vec3>& v) {
   Result r;
   std::vector<Vec3> v_in;  // the velocities before any response, for the zones' means
   for (int round = 0; round < rounds_; ++round) {  // stage 1
@@ -222,8 +259,7 @@ SelfCollision::Result SelfCollision::resolve(const std::vector<Vec3>& x0, std::v
     if (touching_.empty()) return r;
     if (v_in.empty()) v_in = v;
     ++r.rounds;
-    for (const Candidate& c : touching_)
-      for (const int i : c.ids) x[i] = x0[i], v[i] = Vec3{};
+    stop_at_impact(x0, x, v);
   }
   contacts(x0, x, r);
   if (touching_.empty()) return r;

@@ -61,7 +61,7 @@ double seconds_since(Clock::time_point& t) {
 }  // namespace
 
 Simulation::Simulation(const Scene& scene, PointTriangleTest narrow, int k, double dt,
-                       CcdTest self_exact)
+                       CcdTest self_exact, ExactToi self_toi)
     : scene_(scene), cloth_(scene.cloth), narrow_(narrow), dt_(dt > 0 ? dt : scene.dt) {
   if (!narrow_) throw std::invalid_argument("no narrow-phase test");
   for (const Obstacle& o : scene.obstacles) mesh_.append(obstacle_mesh(o, scene.skin()));
@@ -69,7 +69,8 @@ Simulation::Simulation(const Scene& scene, PointTriangleTest narrow, int k, doub
   broad_ = with_k(k, [&](auto kc) -> std::unique_ptr<BroadPhase> {
     return std::make_unique<BroadPhaseK<decltype(kc)::value>>(cloth_.x(), mesh_);
   });
-  if (scene.self_collision) self_pass_ = std::make_unique<SelfCollision>(cloth_, k, self_exact);
+  if (scene.self_collision)
+    self_pass_ = std::make_unique<SelfCollision>(cloth_, k, self_exact, self_toi);
 }
 
 Simulation::~Simulation() = default;

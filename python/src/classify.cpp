@@ -6,8 +6,8 @@
 
 #include "bindings.hpp"
 #include "fdh/check/classify.hpp"
-#include "fdh/suite/classify_files.hpp"
-#include "fdh/suite/report.hpp"
+#include "fdh/run/classification_output.hpp"
+#include "fdh/run/classify_files.hpp"
 
 namespace fdh::python {
 namespace {
@@ -17,7 +17,7 @@ py::object to_python(const std::string& json_text) {
 }
 
 // `fdhcert classify --json` on the files, read and classified as the program does
-// (suite/classify_files.hpp); bad input raises InputError with the program's message.
+// (run/classify_files.hpp); bad input raises InputError with the program's message.
 py::object classify_files(const std::vector<std::string>& files,
                           const std::vector<std::string>& methods, const std::string& kind,
                           int gate) {

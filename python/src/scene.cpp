@@ -1,7 +1,7 @@
 // A scene run from Python: the frames as arrays, with the run's summary.
 #include "bindings.hpp"
 #include "fdh/io/scene_file.hpp"
-#include "fdh/suite/scene_run.hpp"
+#include "fdh/run/scene_run.hpp"
 
 namespace fdh::python {
 namespace {

@@ -152,6 +152,10 @@ class Search {
   // again with more bits: the candidates' intervals are refined in place.
   CcdContact result(unsigned long bits);
 
+  // The earliest contact found as doubles, outward, refined until they are at most `width`
+  // apart and t_lo > 0 unless t* = 0 (see ccd_toi). No strings, no rationals: dyadics only.
+  Toi toi(double width);
+
   // Where the window's end t1 lies against the earliest contact t* found in [t0, t1] (there must
   // be one): 0 if t* = t1, +1 if t* < t1. A candidate is exact at t1 or lies in an open interval
   // (lo, hi) with hi <= t1 (polynomial.hpp's Root), so no refinement is needed.
@@ -194,9 +198,9 @@ class Search {
   }
   // The roots in [t0, t1] common to `zeros` (not all zero), increasing.
   algebra::Roots common_roots(std::initializer_list<const Poly*> zeros) {
-    // One of them without roots there: the common case, decided cheaply (roots_in's own
-    // Bernstein test decides it for one polynomial).
-    if (zeros.size() > 1 && algebra::is_unit_window(t0_, t1_))
+    // One of them without roots in [0, 1], which holds the window: the common case, decided
+    // cheaply (roots_in's own Bernstein test decides it for one polynomial).
+    if (zeros.size() > 1)
       for (const Poly* z : zeros)
         if (algebra::no_root_in_unit(*z)) return {};
     // The gcd from the lowest degree up, zeros skipped (gcd(g, 0) = g): the fewest remainders.
@@ -220,15 +224,18 @@ class Search {
   }
   bool found_at_start() {
     found_.push_back(Root::at(t0_));
+    at_start_ = true;
     return true;
   }
-  bool done() const { return !want_time_ && !found_.empty(); }
+  // Any contact answers the verdict; one at the window's start is the earliest possible.
+  bool done() const { return (!want_time_ && !found_.empty()) || at_start_; }
 
   bool point_point(const PVec& p, const PVec& a);
   bool point_edge(const PVec& p, const PVec& a, const PVec& b);
 
   algebra::Dyadic t0_, t1_;
   bool want_time_;
+  bool at_start_ = false;  // a contact found at t0
   // The squarefree polynomials that the roots point into: one for f, else at most two per
   // vertex-edge pair (point_edge), four pairs for edge-edge.
   algebra::InlineVector<Poly, 8> keep_;
@@ -299,6 +306,47 @@ double up(const mpq_class& q) {
   return mpq_class(d) < q ? std::nextafter(d, 2.0) : d;
 }
 
+// The bits that make an exact interval narrower than `width`, with two more for the outward
+// rounding to doubles (each end moves by less than 2^-53 in [0, 1]).
+unsigned long bits_for(double width) {
+  return unsigned(std::max(0, -std::ilogb(width))) + 2;
+}
+
+// A dyadic rounded to a double downward or upward: to nearest by its leading bits, then one
+// step where that went the wrong way.
+double rounded(const algebra::Dyadic& x, bool upward) {
+  long e = 0;
+  const double m = x.a.frexp(&e);
+  double d = std::ldexp(m, int(e - long(x.k)));
+  const int c = algebra::compare(algebra::Dyadic::of(d), x);
+  if (upward ? c < 0 : c > 0) d = std::nextafter(d, upward ? 2.0 : -1.0);
+  return d;
+}
+
+Toi Search::toi(double width) {
+  if (found_.empty()) return Toi{};
+  // Each candidate's interval holds its time; the earliest lies in [min lo, min hi].
+  for (unsigned long bits = bits_for(width);; bits += 8) {
+    const algebra::Dyadic* lo = nullptr;
+    const algebra::Dyadic* hi = nullptr;
+    algebra::Dyadic los[10], his[10];
+    for (std::size_t i = 0; i < found_.size(); ++i) {
+      Root& r = found_[i];
+      algebra::narrow_to_doubles(r);  // mostly narrow enough at once
+      algebra::refine(r, bits);
+      los[i] = r.lo(), his[i] = r.hi();
+      if (!lo || algebra::compare(los[i], *lo) < 0) lo = &los[i];
+      if (!hi || algebra::compare(his[i], *hi) < 0) hi = &his[i];
+    }
+    const Toi t{true, rounded(*lo, false), rounded(*hi, true)};
+    // t_lo > 0 unless t* = 0: a contact just after 0 needs as many bits as it is close to 0
+    // (one below 2^-1074, the smallest double, keeps t_lo = 0: no double lies below it).
+    if (t.t_hi - t.t_lo <= width && (t.t_lo > 0 || t.t_hi == 0 || bits > 1100)) return t;
+    if (bits > 1100)  // the interval holds two doubles apart by > 2^-52 only if wider than that
+      throw std::logic_error("ccd_toi: the contact time did not narrow");
+  }
+}
+
 CcdContact Search::result(unsigned long bits) {
   CcdContact out;
   if (found_.empty()) return out;
@@ -336,12 +384,6 @@ CcdContact run(const Query& q, const CcdOptions& o, bool want_time) {
   return s.result(unsigned(std::max(o.time_bits, 0)));
 }
 
-// The bits that make an exact interval narrower than `width`, with two more for the outward
-// rounding to doubles (each end moves by less than 2^-53 in [0, 1]).
-unsigned long bits_for(double width) {
-  return unsigned(std::max(0, -std::ilogb(width))) + 2;
-}
-
 }  // namespace
 
 CcdContact ccd(const Query& q, const CcdOptions& options) {
@@ -361,17 +403,7 @@ Toi ccd_toi(const Query& q, double t0, double t1, double width) {
   // Refined until the doubles are `width` apart: an end that is not a double rounds outward by
   // up to one of its ulps, so a time such as 1/3 needs its two neighbouring doubles; an exact
   // time that is a double (a bisection point may land on it) needs none.
-  // And t_lo > 0 unless t* = 0: a contact just after 0 needs as many bits as it is close to 0
-  // (one below 2^-1074, the smallest double, would keep t_lo = 0: no double lies below it).
-  for (unsigned long bits = bits_for(width);; bits += 8) {
-    const CcdContact c = s.result(bits);
-    if (!c.hit) return Toi{};
-    const bool narrow = c.time_hi_up - c.time_lo_down <= width;
-    if (narrow && (c.time_lo_down > 0 || c.time_hi_up == 0 || bits > 1100))
-      return {true, c.time_lo_down, c.time_hi_up};
-    if (bits > 1100)  // the interval holds two doubles apart by > 2^-52 only if wider than that
-      throw std::logic_error("ccd_toi: the contact time did not narrow");
-  }
+  return s.toi(width);
 }
 
 int compare_with_toi(const Query& q, double t) {

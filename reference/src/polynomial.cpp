@@ -170,17 +170,24 @@ void jump(Root& r) {
     if (v == 0) break;
     ((v < 0) == neg_lo ? lo : hi) = mid;
   }
-  const Dyadic dl = Dyadic::of(lo), dh = Dyadic::of(hi);
-  const unsigned long k = std::max({r.k, dl.k, dh.k});
-  const Int a = shifted(dl.a, k - dl.k), b = shifted(dh.a, k - dh.k);
-  const Int ra = shifted(r.a, k - r.k), rb = shifted(r.b, k - r.k);
-  if (!(ra <= a && a < b && b <= rb)) return;
-  const int sa = sign_at(s, Dyadic{a, k}), sb = sign_at(s, Dyadic{b, k});
-  if (sa == 0 || sb == 0) {
-    r.a = r.b = sa == 0 ? a : b;
-    r.k = k;
-  } else if (sa != sb) {
-    r.a = a, r.b = b, r.k = k;
+  // Where rounding noise spread the float bisection's answer (s evaluated in doubles near its
+  // root), the two doubles may both lie on one side: then once more, 2^-40 wider on each side.
+  for (const double pad : {0.0, 0x1p-40}) {
+    const Dyadic dl = Dyadic::of(lo - pad), dh = Dyadic::of(hi + pad);
+    const unsigned long k = std::max({r.k, dl.k, dh.k});
+    const Int a = shifted(dl.a, k - dl.k), b = shifted(dh.a, k - dh.k);
+    const Int ra = shifted(r.a, k - r.k), rb = shifted(r.b, k - r.k);
+    if (!(ra <= a && a < b && b <= rb)) return;
+    const int sa = sign_at(s, Dyadic{a, k}), sb = sign_at(s, Dyadic{b, k});
+    if (sa == 0 || sb == 0) {
+      r.a = r.b = sa == 0 ? a : b;
+      r.k = k;
+      return;
+    }
+    if (sa != sb) {
+      r.a = a, r.b = b, r.k = k;
+      return;
+    }
   }
 }
 
@@ -375,6 +382,39 @@ bool unit_roots_by_bernstein(const Poly& p, Roots& out) {
   return true;
 }
 
+// Keeps the roots in [0, 1] (increasing, from unit_roots_by_bernstein) that lie in the dyadic
+// window [t0, t1] of [0, 1], exactly: a root whose interval (lo, hi) straddles t0 or t1 is
+// placed by s's sign there (0: the root is that end; the sign at lo or at hi: the side).
+// The unit window's Bernstein isolation is much cheaper than a Sturm sequence on the window.
+void clip_to_window(const Poly& s, Roots& roots, const Dyadic& t0, const Dyadic& t1) {
+  Roots kept;
+  for (Root r : roots) {
+    if (compare(r.hi(), t0) < 0 || compare(r.lo(), t1) > 0) continue;  // wholly outside
+    if (!r.exact()) {
+      if (compare(r.hi(), t0) == 0 || compare(r.lo(), t1) == 0) continue;  // open interval
+      for (const bool at_start : {true, false}) {  // cut (lo, hi) at t0, then at t1
+        const Dyadic& t = at_start ? t0 : t1;
+        if (r.exact() || compare(r.lo(), t) >= 0 || compare(r.hi(), t) <= 0) continue;
+        const int st = sign_at(s, t);
+        const unsigned long k = std::max(r.k, t.k);
+        const Int a = shifted(r.a, k - r.k), b = shifted(r.b, k - r.k), c = shifted(t.a, k - t.k);
+        if (st == 0) {
+          r = Root{&s, c, c, k};
+        } else if ((st == sign_at(s, r.lo())) == at_start) {  // the root is on t's far side
+          r.a = at_start ? c : a, r.b = at_start ? b : c, r.k = k;
+        } else {
+          r.s = nullptr;  // on the window's outside
+          break;
+        }
+      }
+      // (With t0 = t1, a cut at t0 can leave (t1, hi): outside.)
+      if (!r.s || (!r.exact() && compare(r.lo(), t1) >= 0)) continue;
+    }
+    kept.push_back(r);
+  }
+  roots = std::move(kept);
+}
+
 }  // namespace
 
 // All Bernstein coefficients of one strict sign: p has no root in [0, 1].
@@ -433,7 +473,10 @@ bool is_unit_window(const Dyadic& t0, const Dyadic& t1) {
 Roots roots_in(Poly& s, const Dyadic& t0, const Dyadic& t1) {
   // The unit window: Bernstein bisection mostly finishes, without a Sturm sequence.
   Roots by_signs;
-  if (is_unit_window(t0, t1) && unit_roots_by_bernstein(s, by_signs)) return by_signs;
+  if (unit_roots_by_bernstein(s, by_signs)) {
+    if (!is_unit_window(t0, t1)) clip_to_window(s, by_signs, t0, t1);
+    return by_signs;
+  }
   InlineVector<Poly, 5> seq = sturm_sequence(s);
   // The last element is gcd(s, s') up to a factor (a remainder sequence): s is squarefree iff
   // it is a constant. Else the roots are those of s / gcd(s, s'), each simple.
@@ -471,6 +514,18 @@ int sign_at(const Poly& g, Root& r) {
     if (!bisect_once(r)) return sign_at(g, r.lo());
     if (const int s = sign_over(g, r)) return s;
   }
+}
+
+void narrow_to_doubles(Root& r) {
+  if (r.exact() || r.narrowed) return;
+  jump(r);
+  r.narrowed = true;
+}
+
+int compare(const Dyadic& x, const Dyadic& y) {
+  const unsigned long k = std::max(x.k, y.k);
+  const Int a = x.a << (k - x.k), b = y.a << (k - y.k);
+  return a < b ? -1 : (b < a ? 1 : 0);
 }
 
 void refine(Root& r, unsigned long bits) {

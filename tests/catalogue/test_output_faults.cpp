@@ -22,7 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "fdh/suite/scene_report.hpp"
+#include "fdh/os/child_process.hpp"
+#include "fdh/run/scene_report.hpp"
 #include "temp_dir.hpp"
 #include "test_data.hpp"
 
@@ -65,8 +66,7 @@ OutFaultRun out_fault_run(const OutFaultChild& c) {
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   const std::string err_path = err_file.string();
-  const pid_t pid = ::fork();
-  if (pid == 0) {
+  ChildProcess run([&] {
     const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (err < 0 || ::dup2(err, STDERR_FILENO) < 0 || ::chdir(c.cwd.c_str()) != 0) ::_exit(120);
     if (c.out == OutFaultStdout::Closed) {
@@ -85,10 +85,9 @@ OutFaultRun out_fault_run(const OutFaultChild& c) {
       ::setenv("PATH", (c.path_first + ":" + (path ? path : "/usr/bin:/bin")).c_str(), 1);
     }
     ::execv(argv[0], argv.data());
-    ::_exit(122);
-  }
-  int status = 0;
-  ::waitpid(pid, &status, 0);
+    return 122;
+  });
+  const int status = run.wait().raw;
   OutFaultRun r;
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   r.err = out_fault_read(err_file);

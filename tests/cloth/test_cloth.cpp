@@ -21,7 +21,7 @@
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_file.hpp"
-#include "fdh/suite/scene_run.hpp"
+#include "fdh/run/scene_run.hpp"
 #include "temp_dir.hpp"
 
 namespace fdh::cloth {
@@ -152,16 +152,22 @@ std::vector<Vec3> corner_lifted(const Cloth& cloth) {
   return x0;
 }
 
-TEST(SelfCollision, StopsAPointBeforeItPassesThroughTheCloth) {
+TEST(SelfCollision, StopsAPointAtItsTimeOfImpactWithTheCloth) {
   // The lifted corner moves straight down through the far cell.
   const Cloth cloth = three_by_three();
   const std::vector<Vec3> x0 = corner_lifted(cloth);
   std::vector<Vec3> x = x0, v(x0.size());
   x[0] = {0.6, -0.5, 0.6};
-  SelfCollision pass(cloth, 18, &exact::ccd_hit);
+  SelfCollision pass(cloth, 18, &exact::ccd_hit, &exact::ccd_toi);
   const SelfCollision::Result r = pass.resolve(x0, x, v);
   EXPECT_GT(r.hits, 0);
-  EXPECT_EQ(x[0], x0[0]);  // stopped where the step began
+  // Stopped at its time of impact, halfway (the cloth lies in y = 0): just above the cloth, at
+  // rest, and so half of its motion kept.
+  EXPECT_GT(x[0].y, 0);
+  EXPECT_LT(x[0].y, 1e-8);
+  EXPECT_EQ(v[0], (Vec3{0, 0, 0}));
+  EXPECT_EQ(r.rounds, 1);
+  EXPECT_NEAR(r.kept / r.motion, 0.5, 1e-8);
   EXPECT_FALSE(r.stopped_all);
   // Moving away instead: nothing to do.
   std::vector<Vec3> y = x0, w(x0.size());
@@ -180,7 +186,7 @@ TEST(SelfCollision, ImpactZonesResolveWhatTheRoundsLeave) {
   x[0] = {0.6, -0.5, 0.6};  // down through the far cell
   v[0] = {0, -1, 0};
   x[2] += Vec3{0, 0, 0.001};  // a particle outside the contact, moving
-  SelfCollision pass(cloth, 18, &exact::ccd_hit, /*rounds=*/0);
+  SelfCollision pass(cloth, 18, &exact::ccd_hit, &exact::ccd_toi, /*rounds=*/0);
   const SelfCollision::Result r = pass.resolve(x0, x, v);
   EXPECT_TRUE(r.zones);
   EXPECT_FALSE(r.stopped_all);
@@ -194,7 +200,7 @@ TEST(SelfCollision, ImpactZonesResolveWhatTheRoundsLeave) {
   EXPECT_GT(v[0].z, 0);
   // And the step is now free of contact.
   std::vector<Vec3> w = v;
-  EXPECT_EQ(SelfCollision(cloth, 18, &exact::ccd_hit).resolve(x0, x, w).hits, 0);
+  EXPECT_EQ(SelfCollision(cloth, 18, &exact::ccd_hit, &exact::ccd_toi).resolve(x0, x, w).hits, 0);
 }
 
 // The step on one thread and on two gives the same cloth, to the bit: chunks fixed by the sizes

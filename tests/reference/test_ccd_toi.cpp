@@ -37,6 +37,11 @@ TEST(CompareWithToi, ARationalContactTimeLiesBetweenTwoNeighbouringDoubles) {
   EXPECT_EQ(compare_with_toi(q, toi.t_lo), -1);  // no double equals t*
   EXPECT_EQ(compare_with_toi(q, toi.t_hi), 1);
   EXPECT_NEAR(toi.t_lo, 5.0 / 11, 1e-15);
+  // A window of one instant next to t* (inside the root's first isolating interval): no contact.
+  EXPECT_FALSE(ccd(q, {toi.t_lo, toi.t_lo, 0}).hit);
+  EXPECT_FALSE(ccd(q, {toi.t_hi, toi.t_hi, 0}).hit);
+  EXPECT_FALSE(ccd(q, {0.4375, 0.4375, 0}).hit);
+  EXPECT_TRUE(ccd(q, {0.4375, 0.5, 0}).hit);
 }
 
 TEST(CompareWithToi, ByTheWindowOnly) {

@@ -398,6 +398,7 @@ TEST(Cli, SimulateJsonFields) {
                                                "self_zone_frames",
                                                "self_zone_particles",
                                                "self_stops",
+                                               "self_motion_kept",
                                                "self_crossing",
                                                "energy_start",
                                                "energy_end"}));

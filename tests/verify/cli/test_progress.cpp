@@ -16,8 +16,8 @@ TEST(Progress, ALineShowsStageCountTotalAndIsErased) {
   std::ostringstream err;
   {
     ProgressLine line(err, true);
-    line.update("certify: generator families", 100, 4800, "queries");
-    line.update("certify: scene table", 10, 600, "frames", "now frame 10");
+    line.draw({"certify: generator families", 100, 4800, "queries"});
+    line.draw({"certify: scene table", 10, 600, "frames", "now frame 10"});
     EXPECT_NE(err.str().find("\rcertify: generator families: 100 of 4800 queries"),
               std::string::npos);
     EXPECT_NE(err.str().find("certify: scene table: 10 of 600 frames, now frame 10"),
@@ -32,7 +32,7 @@ TEST(Progress, NothingWhenNotShown) {
   std::ostringstream err;
   {
     ProgressLine line(err, false);
-    line.update("simulate", 1, 2, "frames");
+    line.draw({"simulate", 1, 2, "frames"});
     line.clear();
   }
   EXPECT_EQ(err.str(), "");

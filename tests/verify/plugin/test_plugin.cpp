@@ -17,6 +17,7 @@
 #include "fdh/check/registry.hpp"
 #include "fdh/cli/cli.hpp"
 #include "fdh/io/query_io.hpp"
+#include "fdh/os/child_process.hpp"
 #include "temp_dir.hpp"
 #include "test_data.hpp"
 
@@ -212,20 +213,18 @@ TEST(Plugin, ACrashOnAQueryIsReportedBeforeTheProcessEnds) {
   const fs::path err = file.parent_path() / "stderr.txt";
   const std::vector<std::string> argv = {FDHCERT_BIN, "classify", file.string(), "--plugin",
                                          faulty("crash-on-magic")};
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    std::vector<char*> a;
-    for (const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
-    a.push_back(nullptr);
+  std::vector<char*> a;
+  for (const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
+  a.push_back(nullptr);
+  ChildProcess run([&] {
     const int fd = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     ::dup2(fd, 2);
     ::execv(a[0], a.data());
-    ::_exit(127);
-  }
-  int status = 0;
-  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 3);
+    return 127;
+  });
+  const ChildStatus status = run.wait();
+  ASSERT_TRUE(status.exited());
+  EXPECT_EQ(status.exit_code(), 3);
   EXPECT_EQ(text_of(err),
             "fdhcert: plug-in crash-on-magic crashed (SIGSEGV) in vertex_face_ccd "
             "on query " +

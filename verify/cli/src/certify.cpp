@@ -3,7 +3,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "fdh/io/atomic_file.hpp"
+#include "fdh/os/atomic_file.hpp"
 #include "plugin_option.hpp"
 #include "progress.hpp"
 #include "suite_commands.hpp"
@@ -60,10 +60,7 @@ int run_certify(const CertifyCommand& cmd, const Io& io) {
   check_output_dir(opt.out_dir, {"certificate.json", "certificate.md"});
   const ThreadLimit threads(cmd.threads);
   ProgressLine progress(io.err, progress_wanted(io, cmd.quiet));
-  opt.progress = [&](const std::string& stage, long done, long total) {
-    progress.update("certify: " + stage, done, total,
-                    stage == "generator families" ? "queries" : "");
-  };
+  opt.progress = progress.sink("certify: ");
   const Certificate c = certify(opt);
   progress.clear();
   write_certificate(c);

@@ -8,13 +8,13 @@
 #include "fdh/check/checker.hpp"
 #include "fdh/check/classify.hpp"
 #include "fdh/check/query_times.hpp"
-#include "fdh/io/atomic_file.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/record_scope.hpp"
-#include "fdh/suite/classify_files.hpp"
-#include "fdh/suite/report.hpp"
-#include "fdh/suite/toi_report.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/run/classification_output.hpp"
+#include "fdh/run/classify_files.hpp"
+#include "fdh/run/toi_report.hpp"
 #include "plugin_option.hpp"
 
 namespace fdh::verify {

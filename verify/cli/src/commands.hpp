@@ -80,7 +80,7 @@ CLI::Option* add_number_option(CLI::App& cmd, const std::string& name, T& value,
   return cmd.add_option(name, value, help)->type_name(type_name)->check(CLI::Range(lo, hi));
 }
 // fuzz's bounds: --count N' <= 10^12 and --shard I/N with N <= 10^6, so that N' * N (the
-// shard arithmetic of suite/fuzz.cpp) stays below 10^18 < 2^63 - 1.
+// shard arithmetic of fuzz/src/fuzz.cpp) stays below 10^18 < 2^63 - 1.
 constexpr long kMaxFuzzCount = 1'000'000'000'000L;
 constexpr long kMaxFuzzShards = 1'000'000L;
 static_assert(kMaxFuzzCount <= INT64_MAX / (kMaxFuzzShards + 1), "count * shard overflows");

@@ -4,9 +4,9 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "fdh/fuzz/fuzz.hpp"
 #include "fdh/gen/families.hpp"
-#include "fdh/io/atomic_file.hpp"
-#include "fdh/suite/fuzz.hpp"
+#include "fdh/os/atomic_file.hpp"
 #include "plugin_option.hpp"
 #include "progress.hpp"
 
@@ -118,10 +118,12 @@ int run_fuzz_command(FuzzCommandOptions& o, const Io& io) {
     opt.shard = std::stoi(o.shard.substr(0, slash)) - 1;  // checked by shard_validator
     opt.shards = std::stoi(o.shard.substr(slash + 1));
   }
-  opt.progress = progress_wanted(io, o.quiet || o.json);
+  ProgressLine progress(io.err, progress_wanted(io, o.quiet || o.json));
+  opt.progress = progress.sink();
   FuzzSummary s;
   try {
-    s = run_fuzz(opt, io.err);
+    s = run_fuzz(opt);
+    progress.clear();
   } catch (const std::invalid_argument& e) {  // an unknown method
     throw UsageError(e.what());
   }

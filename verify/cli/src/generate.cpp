@@ -3,10 +3,10 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "fdh/gen/case_seed.hpp"
 #include "fdh/gen/families.hpp"
-#include "fdh/io/atomic_file.hpp"
 #include "fdh/io/query_io.hpp"
-#include "fdh/suite/fuzz.hpp"
+#include "fdh/os/atomic_file.hpp"
 
 namespace fdh::verify {
 namespace {

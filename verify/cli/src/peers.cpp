@@ -5,8 +5,9 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "fdh/io/atomic_file.hpp"
-#include "fdh/suite/peers.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/peer_certify/peer_certify.hpp"
+#include "progress.hpp"
 #include "suite_commands.hpp"
 #include "threads_option.hpp"
 
@@ -64,7 +65,10 @@ int run_peers(PeersCommand& cmd, const Io& io) {
   if (!cmd.peers.save_dir.empty()) check_output_dir(cmd.peers.save_dir);
   cmd.peers.replay_dir = (std::filesystem::path(cmd.corpus) / "peers").string();
   const ThreadLimit threads(cmd.threads);
+  ProgressLine progress(io.err, progress_wanted(io, cmd.json));
+  cmd.peers.progress = progress.sink();
   const PeersReport r = certify_peers(cmd.peers);
+  progress.clear();
   if (cmd.json)
     print_json(io.out, peers_json(r));
   else

@@ -7,9 +7,16 @@
 
 namespace fdh::verify {
 
-void ProgressLine::update(std::string_view what, long done, long total, std::string_view unit,
-                          std::string_view detail) {
+ProgressSink ProgressLine::sink(std::string prefix) {
+  return [this, prefix = std::move(prefix)](const Progress& p) {
+    draw({prefix + p.stage, p.done, p.total, p.unit, p.detail});
+  };
+}
+
+void ProgressLine::draw(const Progress& p) {
   if (!show_) return;
+  const std::string_view what = p.stage, unit = p.unit, detail = p.detail;
+  const long done = p.done, total = p.total;
   const Clock::time_point now = Clock::now();
   const bool new_stage = what != what_, new_detail = detail != detail_;
   if (new_stage) what_ = what, stage_start_ = now;

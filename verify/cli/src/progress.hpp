@@ -1,5 +1,6 @@
-// A progress line for long commands (certify, report, table1, simulate, scenes, fuzz): what is
-// being done, how far it has got and its rate, on standard error. Shown only when standard error
+// The progress line of long commands (certify, report, table1, simulate, scenes, fuzz, peers):
+// it draws the jobs' one progress type (fdh/os/progress.hpp), what is being done, how far it has
+// got and its rate, on standard error. Shown only when standard error
 // is a terminal and the command has no --quiet, so that logs and pipes get none of it.
 #pragma once
 
@@ -11,6 +12,7 @@
 #include <string_view>
 
 #include "commands.hpp"
+#include "fdh/os/progress.hpp"
 
 namespace fdh::verify {
 
@@ -21,11 +23,12 @@ class ProgressLine {
   ProgressLine& operator=(const ProgressLine&) = delete;
   ~ProgressLine() { clear(); }
 
-  // "<what>: <done> of <total> <unit> (<rate> <unit>/s) <detail>"; total <= 0: no "of".
-  // Redrawn at most ten times a second, and whenever `what` changes (its rate then starts
-  // again) or `detail` does.
-  void update(std::string_view what, long done, long total, std::string_view unit,
-              std::string_view detail = {});
+  // "<stage>: <done> of <total> <unit> (<rate> <unit>/s), <detail>"; total <= 0: no "of".
+  // Redrawn at most ten times a second, and whenever the stage changes (its rate then starts
+  // again) or the detail does.
+  void draw(const Progress& p);
+  // A sink that draws what a job reports, its stage after `prefix`.
+  ProgressSink sink(std::string prefix = {});
   // Erases the line (before the command prints its results).
   void clear();
 

@@ -5,8 +5,8 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "fdh/io/atomic_file.hpp"
-#include "fdh/suite/report_document.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/report/report_document.hpp"
 #include "plugin_option.hpp"
 #include "progress.hpp"
 #include "suite_commands.hpp"
@@ -44,13 +44,15 @@ int run_report(const CertifyCommand& cmd, const Io& io) {
   check_output_dir(opt.out_dir, report_outputs());
   const ThreadLimit threads(cmd.threads);
   ProgressLine progress(io.err, progress_wanted(io, cmd.quiet));
-  opt.progress = [&](const std::string& stage, long done, long total) {
-    progress.update("report: certify: " + stage, done, total, "");
-  };
-  const Report report = make_report(opt, [&](std::string_view step, long done, long total) {
-    if (done >= 0) return progress.update(fmt::format("report: {}", step), done, total, "");
-    progress.clear();
-    io.out << "report: " << step << " ..." << std::endl;
+  opt.progress = progress.sink("report: certify: ");
+  std::string step;  // the step now running: each is announced on standard output as it starts
+  const Report report = make_report(opt, [&](const Progress& p) {
+    if (p.stage != step) {
+      step = p.stage;
+      progress.clear();
+      io.out << "report: " << step << " ..." << std::endl;
+    }
+    progress.draw({"report: " + p.stage, p.done, p.total, p.unit, p.detail});
   });
   progress.clear();
   io.out << "report: charts ..." << std::endl;

@@ -3,8 +3,8 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "fdh/io/atomic_file.hpp"
-#include "fdh/suite/scene_report.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/run/scene_report.hpp"
 #include "progress.hpp"
 #include "suite_commands.hpp"
 
@@ -34,9 +34,7 @@ int run_scenes(const ScenesOptions& o, const Io& io) {
   ProgressLine progress(io.err, progress_wanted(io, o.quiet));
   SceneFolderOptions opt;
   opt.movies = o.movies;
-  opt.frame = [&](const cloth::Scene& scene, int frame) {
-    progress.update("scenes: " + scene.name, frame, scene.frames, "frames");
-  };
+  opt.progress = progress.sink();
   opt.done = [&](const SceneFolderRun& r) {
     progress.clear();
     io.out << scene_summary_line(r) << std::endl;

@@ -7,13 +7,13 @@
 #include <optional>
 
 #include "commands.hpp"
-#include "fdh/io/atomic_file.hpp"
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_file.hpp"
 #include "fdh/io/scene_output.hpp"
 #include "fdh/kdop.hpp"
-#include "fdh/suite/scene_report.hpp"
-#include "fdh/suite/scene_run.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/run/scene_report.hpp"
+#include "fdh/run/scene_run.hpp"
 #include "progress.hpp"
 #include "threads_option.hpp"
 
@@ -189,7 +189,7 @@ int run_simulate(SimulateOptions& o, const Io& io) {
   ProgressLine progress(io.err, progress_wanted(io, o.quiet));
   o.run.on_frame = [&](const cloth::Simulation& sim, int frame) {
     outputs.frame(sim, frame);
-    progress.update("simulate " + scene.name, frame, frames, "frames");
+    progress.draw({"simulate " + scene.name, frame, frames, "frames"});
   };
   const SceneRun r = run_scene(scene, o.run);
   progress.clear();

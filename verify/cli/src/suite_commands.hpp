@@ -3,7 +3,7 @@
 #pragma once
 
 #include "commands.hpp"
-#include "fdh/suite/certify.hpp"
+#include "fdh/certify/certify.hpp"
 
 namespace fdh::verify {
 

@@ -6,9 +6,9 @@
 #include <iostream>
 #include <memory>
 
-#include "fdh/io/atomic_file.hpp"
 #include "fdh/io/scene_file.hpp"
-#include "fdh/suite/table1.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/table1/table1.hpp"
 #include "progress.hpp"
 #include "suite_commands.hpp"
 
@@ -48,11 +48,7 @@ int run_table1(const Table1Options& o, const Io& io) {
   if (!o.out_dir.empty()) check_output_dir(o.out_dir, table1_outputs());
   const cloth::Scene scene = read_scene(o.scene);
   ProgressLine progress(io.err, progress_wanted(io, o.quiet));
-  long done = 0;
-  const Table1 t = measure_table1(scene, o.scene, o.frames, [&](const Table1Cell& c) {
-    progress.update("table1", done++, 0, "runs",
-                    fmt::format("now {} k={} {}x{}", c.method, c.k, c.grid, c.grid));
-  });
+  const Table1 t = measure_table1(scene, o.scene, o.frames, progress.sink());
   progress.clear();
   if (!o.out_dir.empty()) write_table1(t, o.out_dir);
   if (o.json)

@@ -2,22 +2,21 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
-#include <sys/prctl.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
-#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "fdh/io/atomic_file.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/os/child_process.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -35,16 +34,10 @@ class ScriptFile {
     if (fd_ < 0) throw std::runtime_error("cannot create a gnuplot script: " + errno_text());
     ::unlink(pattern.c_str());
     path_ = "/dev/fd/" + std::to_string(fd_);
-    std::size_t done = 0;
-    while (done < text.size()) {
-      const ssize_t n = ::write(fd_, text.data() + done, text.size() - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n < 0) {
-        const std::string why = errno_text();
-        ::close(fd_);
-        throw std::runtime_error("cannot write the gnuplot script " + pattern + ": " + why);
-      }
-      done += std::size_t(n);
+    if (!write_all(fd_, text)) {
+      const std::string why = errno_text();
+      ::close(fd_);
+      throw std::runtime_error("cannot write the gnuplot script " + pattern + ": " + why);
     }
   }
   ~ScriptFile() { ::close(fd_); }
@@ -67,7 +60,7 @@ std::pair<std::string, std::string> split_stem(const std::string& stem) {
 
 // Runs gnuplot SCRIPT in folder DIR (so that the folder's name never enters a script), its
 // standard output sent to standard error. The child is an argument list (fork and execvp, no
-// shell) and is killed when fdhcert dies (PR_SET_PDEATHSIG). Throws unless it exits with 0.
+// shell) and is killed when fdhcert dies (fdh/os/child_process.hpp). Throws unless it exits with 0.
 void run_gnuplot(const std::string& script, const std::string& dir, const std::string& what) {
   const ScriptFile file(script);
   std::string prog = "gnuplot", arg = file.path();
@@ -75,24 +68,22 @@ void run_gnuplot(const std::string& script, const std::string& dir, const std::s
   int report[2];  // the child's errno if it cannot start gnuplot; closed by a successful exec
   if (::pipe2(report, O_CLOEXEC) != 0)
     throw std::runtime_error(std::string("cannot run gnuplot: ") + std::strerror(errno));
-  const pid_t parent = ::getpid();
-  const pid_t pid = ::fork();
-  if (pid < 0) {
-    const int why = errno;
+  std::optional<ChildProcess> child;
+  try {
+    // The child: async-signal-safe calls only.
+    child.emplace([&] {
+      ::close(report[0]);
+      int why = 0;
+      if (::dup2(STDERR_FILENO, STDOUT_FILENO) < 0 || ::chdir(dir.c_str()) != 0)
+        why = errno;
+      else
+        ::execvp(argv[0], argv), why = errno;
+      write_all(report[1], std::string_view(reinterpret_cast<const char*>(&why), sizeof why));
+      return 127;
+    });
+  } catch (const std::exception& e) {
     ::close(report[0]), ::close(report[1]);
-    throw std::runtime_error(std::string("cannot run gnuplot: ") + std::strerror(why));
-  }
-  if (pid == 0) {  // the child: async-signal-safe calls only
-    ::close(report[0]);
-    int why = 0;
-    if (::prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || ::getppid() != parent)
-      why = ::getppid() != parent ? ESRCH : errno;
-    else if (::dup2(STDERR_FILENO, STDOUT_FILENO) < 0 || ::chdir(dir.c_str()) != 0)
-      why = errno;
-    else
-      ::execvp(argv[0], argv), why = errno;
-    [[maybe_unused]] const ssize_t n = ::write(report[1], &why, sizeof why);
-    ::_exit(127);
+    throw std::runtime_error(std::string("cannot run gnuplot: ") + e.what());
   }
   ::close(report[1]);
   int why = 0;
@@ -100,13 +91,11 @@ void run_gnuplot(const std::string& script, const std::string& dir, const std::s
   while ((got = ::read(report[0], &why, sizeof why)) < 0 && errno == EINTR) {
   }
   ::close(report[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw std::runtime_error("lost the gnuplot process");
+  const ChildStatus status = child->wait();
   if (got == sizeof why)
     throw std::runtime_error(fmt::format(
         "cannot run gnuplot in {} ({}; Debian package gnuplot-nox)", dir, std::strerror(why)));
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  if (!status.ok())
     throw std::runtime_error(
         fmt::format("gnuplot failed drawing {} (is Debian's gnuplot-nox installed?)", what));
 }

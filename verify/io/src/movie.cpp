@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "fdh/io/atomic_file.hpp"
+#include "fdh/os/atomic_file.hpp"
 
 namespace fdh::verify {
 namespace {

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "fdh/io/atomic_file.hpp"
+#include "fdh/os/atomic_file.hpp"
 
 namespace fdh::verify {
 

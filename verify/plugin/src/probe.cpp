@@ -13,6 +13,8 @@
 #include <string>
 
 #include "fdh/io/record_scope.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/os/child_process.hpp"
 #include "fdh/plugin/loader.hpp"
 #include "guard.hpp"
 
@@ -73,11 +75,7 @@ void run_probes(const std::vector<Method>& methods, const std::vector<BoxMethod>
     said = std::string("fdhcert: ") + e.what() + "\n";
     status = kPluginFailureStatus;
   }
-  for (std::size_t done = 0; done < said.size();) {
-    const ssize_t w = ::write(fd, said.data() + done, said.size() - done);
-    if (w <= 0) break;
-    done += std::size_t(w);
-  }
+  write_all(fd, said);
   ::_exit(status);
 }
 
@@ -107,20 +105,21 @@ void probe(const std::string& plugin, const std::vector<Method>& methods,
            const std::vector<BoxMethod>& boxes, double seconds) {
   int fds[2];
   if (::pipe(fds) != 0) throw std::runtime_error("cannot probe plug-in " + plugin + ": no pipe");
-  std::fflush(nullptr);
-  const pid_t pid = ::fork();
-  if (pid < 0) throw std::runtime_error("cannot probe plug-in " + plugin + ": no process");
-  if (pid == 0) {
-    ::close(fds[0]);
-    child(fds[1], methods, boxes);
+  std::optional<ChildProcess> process;
+  try {
+    process.emplace([&]() -> int {
+      ::close(fds[0]);
+      child(fds[1], methods, boxes);
+    });
+  } catch (const std::exception&) {
+    ::close(fds[0]), ::close(fds[1]);
+    throw std::runtime_error("cannot probe plug-in " + plugin + ": no process");
   }
   ::close(fds[1]);
   const std::optional<std::string> said = read_until_closed(fds[0], seconds);
   ::close(fds[0]);
-  if (!said) ::kill(pid, SIGKILL);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  if (!said) process->kill();
+  const int status = process->wait().raw;
   const std::string what = "plug-in " + plugin;
   if (!said)
     throw PluginFailure(what + " did not answer within " + std::to_string(int(seconds)) +

@@ -1,50 +1,18 @@
-// The step's loops on every core the run allows (oneTBB), with results that do not depend on the
-// thread count: work is cut into chunks fixed by the problem size alone, each chunk writes only
-// its own outputs, and whatever is gathered from chunks is merged in chunk order.
+// The step's loops on every core the run allows, with results that do not depend on the thread
+// count (fdh/parallel/chunks.hpp), and the tree passes built on them.
 #pragma once
 
-#include <algorithm>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
-#include <utility>
+#include <cstddef>
 #include <vector>
+
+#include "fdh/parallel/chunks.hpp"
 
 namespace fdh::cloth {
 
-// f(begin, end) for consecutive chunks of [0, n) of `grain` items (the last may be shorter).
-template <class F>
-void for_chunks(int n, int grain, const F& f) {
-  const int chunks = (n + grain - 1) / grain;
-  if (chunks <= 1) {
-    if (n > 0) f(0, n);
-    return;
-  }
-  tbb::parallel_for(
-      tbb::blocked_range<int>(0, chunks, 1),
-      [&](const tbb::blocked_range<int>& r) {
-        for (int c = r.begin(); c < r.end(); ++c) f(c * grain, std::min(n, (c + 1) * grain));
-      },
-      tbb::simple_partitioner());
-}
-
-// Runs f(c, out[c]) for chunks c = 0 .. chunks - 1 in parallel, then appends the chunks' outputs
-// to `all` in chunk order: the same `all` for any thread count.
-template <class T, class F>
-void gather_chunks(int chunks, std::vector<std::vector<T>>& out, std::vector<T>& all, const F& f) {
-  out.resize(std::max(chunks, 0));
-  tbb::parallel_for(
-      tbb::blocked_range<int>(0, chunks, 1),
-      [&](const tbb::blocked_range<int>& r) {
-        for (int c = r.begin(); c < r.end(); ++c) {
-          out[c].clear();
-          f(c, out[c]);
-        }
-      },
-      tbb::simple_partitioner());
-  for (const auto& part : out) all.insert(all.end(), part.begin(), part.end());
-}
+// The step's chunked loops (fdh/parallel/chunks.hpp): on every core, never isolated (they are
+// short, and start no parallel loop of their own).
+using parallel::for_chunks;
+using parallel::gather_chunks;
 
 // The index one past node i's subtree in a binary tree stored in preorder (each subtree a
 // contiguous range of nodes): the last leaf reached going right, plus one. Node: leaf(), right.

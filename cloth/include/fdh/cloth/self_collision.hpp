@@ -8,9 +8,10 @@
 // patches tree against tree with swept FDHs (k-DOPs of the run's k).
 //
 // Response, in three stages, each used only when the one before did not resolve the step:
-// 1. rounds: the particles of every pair that touches go back to where the step started, at
-//    rest; the test runs again (new contacts can appear with neighbours that kept moving), up
-//    to kRounds rounds;
+// 1. rounds: the particles of every pair that touches stop at the pair's time of impact, at
+//    rest: robust's certified t_lo (fdh/ccd/toi.hpp, never after the contact; the start of the
+//    step when it is 0), the earliest of a particle's pairs; the test runs again on the shortened
+//    motion (new contacts can appear with neighbours that kept moving), up to kRounds rounds;
 // 2. impact zones (Provot 1997; Bridson, Fedkiw & Anderson 2002): the particles of touching
 //    pairs are merged into zones (sets joined by contacts, growing over the iterations), and
 //    each zone moves as one rigid body for the step: it stays where the step started and every
@@ -26,6 +27,7 @@
 #include <vector>
 
 #include "fdh/ccd/robust.hpp"
+#include "fdh/ccd/toi.hpp"
 #include "fdh/cloth/cloth.hpp"
 
 namespace fdh::cloth {
@@ -35,9 +37,10 @@ class SelfCollision {
   static constexpr int kRounds = 4;
   static constexpr int kZoneRounds = 32;
 
-  // k: the FDH's k. exact: robust's fallback (fdh::exact::ccd_hit in this project). rounds:
-  // stage 1's (fewer only to test stage 2).
-  SelfCollision(const Cloth& cloth, int k, CcdTest exact, int rounds = kRounds);
+  // k: the FDH's k. exact, exact_toi: robust's fallbacks for the verdict and the time of impact
+  // (fdh::exact::ccd_hit and ccd_toi in this project). rounds: stage 1's (fewer only to test
+  // stage 2).
+  SelfCollision(const Cloth& cloth, int k, CcdTest exact, ExactToi exact_toi, int rounds = kRounds);
   ~SelfCollision();
 
   struct Result {
@@ -47,6 +50,9 @@ class SelfCollision {
     bool zones = false;        // stage 2 ran
     long zone_particles = 0;   // particles in impact zones at the end of stage 2
     bool stopped_all = false;  // stage 3 ran
+    // Over the particles whose end of step the response changed: the lengths of their motions
+    // summed, before the response and after it (kept / motion: how much of it was kept).
+    double motion = 0, kept = 0;
   };
 
   // Makes the step from x0 to x free of self-contact, changing x and v where needed.
@@ -64,12 +70,18 @@ class SelfCollision {
   struct TreesK;
   // The contacts of the step x0 -> x (queries counted into r).
   void contacts(const std::vector<Vec3>& x0, const std::vector<Vec3>& x, Result& r);
+  // The three stages (resolve() adds the motion kept).
+  Result stages(const std::vector<Vec3>& x0, std::vector<Vec3>& x, std::vector<Vec3>& v);
+  // Stage 1's stop: each particle of a touching pair at rest at the earliest t_lo of its pairs.
+  void stop_at_impact(const std::vector<Vec3>& x0, std::vector<Vec3>& x, std::vector<Vec3>& v);
 
   std::unique_ptr<Trees> trees_;
   CcdTest exact_;
+  ExactToi exact_toi_;
   int rounds_;
   std::vector<Candidate> candidates_, touching_;
   std::vector<char> hit_;
+  std::vector<double> toi_, stop_;  // per touching pair, per particle
 };
 
 }  // namespace fdh::cloth

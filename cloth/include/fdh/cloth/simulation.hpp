@@ -40,10 +40,11 @@ struct NarrowQuery {
 
 class Simulation {
  public:
-  // k: the FDH's k (6, 14, 18 or 26). dt <= 0 takes the scene's. self_exact: the exact CCD
-  // behind the self-collision pass's robust test; required if the scene asks for the pass.
+  // k: the FDH's k (6, 14, 18 or 26). dt <= 0 takes the scene's. self_exact, self_toi: the
+  // exact CCD behind the self-collision pass's robust test and time of impact; required if the
+  // scene asks for the pass.
   Simulation(const Scene& scene, PointTriangleTest narrow, int k = 18, double dt = 0,
-             CcdTest self_exact = nullptr);
+             CcdTest self_exact = nullptr, ExactToi self_toi = nullptr);
   ~Simulation();
 
   // Throws Diverged (naming the frame and the particle) when a position or a velocity is no

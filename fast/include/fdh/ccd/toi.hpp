@@ -28,9 +28,9 @@ inline constexpr double kMinToiWidth = 0x1p-52;
 using ExactToi = Toi (*)(const Query& q, double t0, double t1, double width);
 
 // `robust`'s certified TOI: the exact verdict, and t_lo <= t* <= t_hi with t_hi - t_lo <= width
-// (kMinToiWidth <= width <= 1; std::invalid_argument otherwise). The floating-point filter narrows
-// its own isolated root where it can; the rest goes to exact_fallback with the window it has
-// narrowed.
+// (kMinToiWidth <= width <= 1; std::invalid_argument otherwise), t_lo > 0 unless t* = 0. The
+// floating-point filter narrows its own isolated root where it can; the rest goes to exact_fallback
+// with the window it has narrowed.
 Toi robust_ccd_toi(const Query& q, double width, ExactToi exact_fallback);
 
 // `float-cubic`'s TOI: its first root in [0, 1] at which its own contact test passes, as

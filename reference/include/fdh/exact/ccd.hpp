@@ -44,7 +44,8 @@ CcdContact ccd(const Query& q, const CcdOptions& options = {});
 bool ccd_hit(const Query& q);
 
 // The exact verdict and an enclosure of the earliest contact t* no wider than `width`, searched
-// in [t0, t1] (fdh/ccd/toi.hpp's ExactToi: the fallback of fast/'s robust_ccd_toi).
+// in [t0, t1] (fdh/ccd/toi.hpp's ExactToi: the fallback of fast/'s robust_ccd_toi), with
+// t_lo > 0 unless t* = 0. kMinToiWidth <= width <= 1, else std::invalid_argument.
 Toi ccd_toi(const Query& q, double t0, double t1, double width);
 
 // Where a time t in [0, 1] lies against the exact earliest contact t* of a query that has one:

@@ -1,0 +1,281 @@
+// The report's pieces are built from structs: measurements, the certificate's outputs, the
+// report's tables, Table 1 and the scene JSON.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "fdh/cli/cli.hpp"
+
+#include "fdh/certify/certify.hpp"
+#include "fdh/check/registry.hpp"
+#include "fdh/report/measurements.hpp"
+#include "fdh/report/report_document.hpp"
+#include "fdh/run/build_info.hpp"
+#include "fdh/run/scene_report.hpp"
+#include "fdh/table1/table1.hpp"
+#include "temp_dir.hpp"
+
+namespace fdh::verify {
+namespace {
+
+std::size_t lines(const std::string& s) {
+  return std::size_t(std::count(s.begin(), s.end(), '\n'));
+}
+
+std::string twin_name() {
+  for (const Method& m : all_methods())
+    if (m.is_twin) return m.name;
+  return {};
+}
+
+TEST(Measurements, TheParetoFrontRunsFastestFirstWithFallingError) {
+  const std::vector<SpeedAccuracyRow> rows = {{"a", "f", 10, 5, 0.25, 0.25},
+                                              {"b", "f", 10, 1, 0.3, 0.3},
+                                              {"c", "f", 10, 9, 0, 0},
+                                              {"d", "f", 10, 7, 0.4, 0.4}};
+  const auto front = pareto_front(rows);
+  ASSERT_EQ(front.size(), 3u);
+  EXPECT_EQ(front[0].method, "b");
+  EXPECT_EQ(front[1].method, "a");
+  EXPECT_EQ(front[2].method, "c");
+  EXPECT_EQ(pareto_csv(front),
+            "method,family,ns_per_query,error_rate,kind\nb,f,1,0.6,static\na,f,5,0.5,static\n"
+            "c,f,9,0,static\n");
+}
+
+TEST(Measurements, EachKindOfFamilyHasAParetoFrontOfItsOwn) {
+  std::vector<SpeedAccuracyRow> rows = {{"a", "f", 10, 5, 0.25, 0.25},
+                                        {"b", "f", 10, 1, 0.3, 0.3},
+                                        {"c", "g", 10, 900, 0, 0},
+                                        {"d", "g", 10, 50, 0.1, 0}};
+  rows[2].kind = rows[3].kind = "moving";
+  const auto fronts = pareto_fronts(rows);
+  ASSERT_EQ(fronts.size(), 4u);  // one front over both would drop c (slower than a, b and d)
+  EXPECT_EQ(fronts[0].method, "b");
+  EXPECT_EQ(fronts[1].method, "a");
+  EXPECT_EQ(fronts[2].method, "d");
+  EXPECT_EQ(fronts[3].method, "c");
+}
+
+TEST(Measurements, SpeedAccuracyMeasuresTheMovingFamiliesForTheMethodsThatDecideThem) {
+  std::set<std::string> moving;
+  for (const SpeedAccuracyRow& r : speed_accuracy(2, 1))
+    if (r.kind == "moving") moving.insert(r.method);
+  for (const Method& m : all_methods())
+    EXPECT_EQ(moving.count(m.name), m.test[std::size_t(Decision::VertexFaceCcd)] ? 1u : 0u)
+        << m.name;
+}
+
+TEST(Measurements, DataFilesHaveAHeaderAndOneLinePerRow) {
+  const std::vector<SpeedAccuracyRow> speed = {{"robust", "angled", 100, 12.5, 0, 0.25}};
+  EXPECT_EQ(speed_accuracy_csv(speed),
+            "method,family,queries,ns_per_query,fp_rate,fn_rate,kind\n"
+            "robust,angled,100,12.5,0,0.25,static\n");
+  const std::vector<StabilityRow> stab = {{"edge", 3, "linear-system", 0.125}};
+  EXPECT_EQ(stability_csv(stab),
+            "sweep,parameter,method,failure_rate\nedge,3,linear-system,0.125\n");
+}
+
+TEST(Measurements, TheKdopTreeFileSeparatesGridsByABlankLine) {
+  const std::vector<KdopTreeRow> rows = {{6, 30, 1, 2, 0.5, 0.25, 0.125, 7},
+                                         {14, 30, 1, 2, 0.5, 0.25, 0.125, 6},
+                                         {6, 50, 3, 2, 1, 1, 1, 9}};
+  const std::string csv = kdop_tree_csv(rows);
+  EXPECT_EQ(lines(csv), 5u);
+  EXPECT_NE(csv.find("14,30,1,2,0.5,0.25,0.125,6\n\n6,50,"), std::string::npos) << csv;
+}
+
+TEST(Measurements, StabilityMeasuresEveryMethodButTheTwin) {
+  const std::vector<StabilityRow> rows = stability(2, 1);
+  ASSERT_FALSE(rows.empty());
+  for (const StabilityRow& r : rows) {
+    EXPECT_NE(r.method, twin_name());
+    EXPECT_GE(r.failure_rate, 0);
+    EXPECT_LE(r.failure_rate, 1);
+  }
+  for (const StabilitySweep& sw : stability_sweeps())
+    EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [&](const StabilityRow& r) {
+      return r.sweep == sw.name && r.parameter == sw.last;
+    })) << sw.name;
+}
+
+// The report's counted measurements do not depend on the thread count: the stability rates,
+// and each speed row's queries and FP and FN rates (its time is measured, not counted), with
+// 1, 2 and 64 threads.
+TEST(Measurements, TheRatesAreTheSameForAnyThreadCount) {
+  std::string stab, rates;
+  for (const std::size_t threads : {1, 2, 64}) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const std::string s = stability_csv(stability(3, 5));
+    std::string r;
+    for (const SpeedAccuracyRow& row : speed_accuracy(20, 5))
+      r += row.method + row.family + std::to_string(row.queries) + std::to_string(row.fp_rate) +
+           std::to_string(row.fn_rate) + "\n";
+    if (threads == 1) stab = s, rates = r;
+    EXPECT_EQ(s, stab) << threads;
+    EXPECT_EQ(r, rates) << threads;
+  }
+  EXPECT_GT(lines(stab), 100u);
+}
+
+Certificate two_promises() {
+  Certificate c;
+  c.commit = "abc";
+  c.options.out_dir = "out";
+  c.promises = {{"robust", Decision::PointTriangle, Promise::Exact, 100, 90, 0},
+                {"robust", Decision::EdgeEdgeCcd, Promise::Exact, 40, 10, 2}};
+  c.boxes = {{"fdh", 6, 500, 0, 3, 77, 1}, {"fdh", 18, 500, 0, 3, 60, 0}};
+  c.truths = 20;
+  c.truth_violations = 1;
+  c.first_violation = "robust says \"hit\"";
+  return c;
+}
+
+TEST(Certificate, ChecksAndViolationsCountEveryPromiseBoxAndTruth) {
+  const Certificate c = two_promises();
+  EXPECT_EQ(c.checks(), 100 + 40 + 500 + 3 + 500 + 3 + 20);
+  EXPECT_EQ(c.violations(), 2 + 1 + 1);
+}
+
+TEST(Certificate, JsonListsEveryPromiseAndKeysTheBoxesByK) {
+  const auto j = nlohmann::json::parse(certificate_json(two_promises()));
+  EXPECT_FALSE(j["certified"].get<bool>());
+  EXPECT_EQ(j["commit"], "abc");
+  ASSERT_EQ(j["promises"].size(), 2u);
+  EXPECT_EQ(j["promises"][1]["method"], "robust");
+  EXPECT_EQ(j["promises"][1]["decision"], to_string(Decision::EdgeEdgeCcd));
+  EXPECT_EQ(j["promises"][1]["promise"], to_string(Promise::Exact));
+  EXPECT_EQ(j["promises"][1]["checked"], 40);
+  EXPECT_EQ(j["promises"][1]["decided_by_filter"], 10);
+  EXPECT_EQ(j["promises"][1]["violations"], 2);
+  EXPECT_EQ(j["kdop_contains_exact"]["18"]["boxes"], 500);
+  EXPECT_EQ(j["kdop_contains_exact"]["6"]["method"], "fdh");
+  EXPECT_EQ(j["tree_no_false_cull"]["6"]["exact_overlapping_pairs"], 77);
+  EXPECT_EQ(j["tree_no_false_cull"]["6"]["violations"], 1);
+  EXPECT_EQ(j["exact_equals_stored_truth"]["violations"], 1);
+  EXPECT_EQ(j["first_violation"], "robust says \"hit\"");  // escaped and read back
+  for (const char* key : {"cgal", "gmp", "mode", "seed", "inputs"}) EXPECT_TRUE(j.contains(key));
+}
+
+TEST(Certificate, MarkdownHasOneRowPerPromiseCheck) {
+  const std::string md = certificate_markdown(two_promises());
+  EXPECT_NE(md.find("**Violated**"), std::string::npos);
+  EXPECT_NE(md.find("| point-triangle verdict = the exact twin | `robust` | – | 100 queries (90 "
+                    "decided by the float filter alone) | 0 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| edge-edge-ccd verdict"), std::string::npos);
+  EXPECT_EQ(certificate_section(two_promises()).rfind("**Violated**", 0), 0u);
+}
+
+TEST(Report, TablesComeFromTheRows) {
+  Report r;
+  r.certificate = two_promises();
+  Measurements& m = r.measurements;
+  m.speed = {{"robust", "a", 10, 20, 0, 0},
+             {"robust", "b", 10, 40, 0, 0},
+             {"paper-literal", "a", 10, 5, 0.5, 0.25}};
+  m.stability = {{"angle", 0, "robust", 0},
+                 {"angle", 0, "paper-literal", 0},
+                 {"angle", 1, "paper-literal", 0.5}};
+  m.kdop = {{18, 30, 1682, 2304, 1, 0.5, 0.25, 6000}};
+  const std::string md = report_markdown(r);
+  EXPECT_NE(md.find("| robust | 40.0 | 0 | 0 | 2 of 2 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| paper-literal | 5.0 | 0.5 | 0.25 | 0 of 1 |"), std::string::npos);
+  EXPECT_NE(md.find("| angle | never wrong | wrong from p = 1, worst 0.5 |"), std::string::npos);
+  EXPECT_NE(md.find("| 18 | 30×30 | 1682 / 2304 | 1 | 0.5 | 0.25 | 6000 |"), std::string::npos);
+  EXPECT_NE(md.find("at commit `abc`"), std::string::npos);
+}
+
+Table1 one_cell() {
+  Table1 t;
+  t.scene = "table.scene";
+  t.frames = 10;
+  Table1Cell c{"linear-system", 18, 15, {}};
+  c.run.frames = 10;
+  c.run.time.springs = 0.002;
+  c.run.time.narrow = 0.001;
+  c.run.fp = 3;
+  t.cells.push_back(c);
+  return t;
+}
+
+TEST(Table1, JsonHoldsEveryRowAndThePaper) {
+  const nlohmann::ordered_json j = table1_json(one_cell());
+  EXPECT_EQ(j["frames"], 10);
+  ASSERT_EQ(j["rows"].size(), 1u);
+  EXPECT_EQ(j["rows"][0]["method"], "linear-system");
+  EXPECT_EQ(j["rows"][0]["fp"], 3);
+  EXPECT_DOUBLE_EQ(j["rows"][0]["ms_per_frame"].get<double>(), 0.3);
+  EXPECT_EQ(j["paper"]["grids"].get<std::vector<int>>(), (std::vector<int>{15, 25, 30, 50}));
+  EXPECT_DOUBLE_EQ(j["paper"]["paper-intended"][3].get<double>(), 15.27);
+  EXPECT_DOUBLE_EQ(one_cell().cells[0].paper_ms(), 12.17);
+}
+
+TEST(Table1, CsvHasOurRowsThenThePapers) {
+  const std::string csv = table1_csv(one_cell());
+  EXPECT_EQ(lines(csv), 1u + 1u + 8u);
+  EXPECT_NE(csv.find("linear-system k=18,18,15,225,0.3,3,0,0,0\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("paper: this paper,0,50,2500,15.27,,,,\n"), std::string::npos);
+}
+
+TEST(SceneReport, JsonIsSimulatesWithNullsForWhatWasNotCounted) {
+  cloth::Scene scene;
+  scene.name = "s";
+  SceneRunOptions opt;
+  opt.check = false;
+  SceneRun run;
+  run.frames = 2;
+  run.time.springs = 0.001;
+  const auto j = scene_run_json(scene, opt, run);
+  EXPECT_EQ(j["scene"], "s");
+  EXPECT_EQ(j["narrow"], opt.narrow);
+  EXPECT_TRUE(j["fp"].is_null());
+  EXPECT_TRUE(j["crossing"].is_null());
+  EXPECT_TRUE(j["self_crossing"].is_null());
+  EXPECT_DOUBLE_EQ(j["ms_per_frame"]["springs"].get<double>(), 0.5);
+  opt.check = true;
+  EXPECT_EQ(scene_run_json(scene, opt, run)["inside"], 0);
+}
+
+// The table scene cut to a few frames, alone in a folder.
+std::filesystem::path short_scene_folder() {
+  const std::filesystem::path dir = fresh_temp_dir("scenes_in");
+  std::ifstream in(FDH_SOURCE_DIR "/corpus/scenes/table.scene");
+  std::ofstream out(dir / "table.scene");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("frames", 0) != 0) out << line << "\n";
+  out << "frames 20\n";
+  return dir;
+}
+
+TEST(Scenes, EachSceneGetsAPictureAJsonAndALine) {
+  const std::filesystem::path in = short_scene_folder(), out = fresh_temp_dir("scenes_out");
+  std::ostringstream so, se;
+  ASSERT_EQ(run_cli({"scenes", "--scenes", in.string(), "--out", out.string()}, so, se), 0)
+      << se.str();
+  EXPECT_EQ(so.str().rfind("table ", 0), 0u) << so.str();
+  EXPECT_NE(so.str().find("inside 0 crossing 0"), std::string::npos);
+  EXPECT_GT(std::filesystem::file_size(out / "table.png"), 1000u);
+  std::ifstream json(out / "table.json");
+  const auto j = nlohmann::json::parse(json);
+  EXPECT_EQ(j["frames"], 20);
+  EXPECT_EQ(j["crossing"], 0);
+  std::ostringstream so2, se2;
+  EXPECT_EQ(run_cli({"scenes", "--scenes", (in / "none").string()}, so2, se2), 2);
+}
+
+TEST(BuildInfo, TheCommitIsFixedAtConfigureTime) {
+  const std::string commit = build_commit();
+  EXPECT_FALSE(commit.empty());
+  EXPECT_EQ(commit.find_first_of("\n\r\" "), std::string::npos) << commit;
+}
+
+}  // namespace
+}  // namespace fdh::verify

@@ -1,0 +1,249 @@
+// certificate.json and certificate.md: a Certificate for programs and for people.
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <iterator>
+#include <nlohmann/json.hpp>
+
+#include "fdh/certify/certify.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/run/json_text.hpp"
+
+namespace fdh::verify {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+using Out = std::back_insert_iterator<fmt::memory_buffer>;
+
+const char* mode(const Certificate& c) {
+  return c.options.quick ? "quick" : "full";
+}
+
+json inputs_json(const Certificate& c) {
+  return {{"corpus_files", c.corpus_files},
+          {"corpus_queries", c.corpus_queries},
+          {"fuzzed_per_family", c.options.per_family},
+          {"families", c.families.size()},
+          {"fuzzed_queries", c.fuzzed_queries},
+          {"soup_pairs", c.options.soups},
+          {"moving_families", c.moving_families.size()},
+          {"scenes", c.scenes},
+          {"scene_queries", c.scene_queries},
+          {"extra_files", c.options.extra_files.size()},
+          {"extra_queries", c.extra_queries}};
+}
+
+// Keyed by k, as before there was more than one k-DOP method; a second method of the same k
+// gets "<k>/<method>".
+std::string box_key(const json& into, const BoxCheck& b) {
+  const std::string k = std::to_string(b.k);
+  return into.contains(k) ? k + "/" + b.method : k;
+}
+
+json promises_json(const Certificate& c) {
+  json out = json::array();
+  for (const PromiseCheck& p : c.promises)
+    out.push_back({{"method", p.method},
+                   {"decision", to_string(p.decision)},
+                   {"promise", to_string(p.promise)},
+                   {"checked", p.checked},
+                   {"decided_by_filter", p.filter_decided},
+                   {"violations", p.violations}});
+  return out;
+}
+
+json times_json(const Certificate& c) {
+  json out = json::array();
+  for (const TimePromiseCheck& p : c.times) {
+    const TimeTally& t = p.tally;
+    out.push_back({{"method", p.method},
+                   {"decision", to_string(p.decision)},
+                   {"promise", to_string(p.promise)},
+                   {"width", c.options.toi_width},
+                   {"checked", t.checked},
+                   {"contacts", t.contacts},
+                   {"late", t.late},
+                   {"zero", t.zero},
+                   {"verdict_errors", t.verdict_errors},
+                   {"not_enclosed", t.not_enclosed},
+                   {"too_wide", t.too_wide},
+                   {"early_max", t.early_max()},
+                   {"early_median", t.early_median()},
+                   {"violations", t.broken}});
+  }
+  return out;
+}
+
+// What a method's time promise says, against the exact earliest contact t*.
+const char* time_promise_words(TimePromise p) {
+  switch (p) {
+    case TimePromise::Enclosure:
+      return "encloses the exact earliest contact t* within the width, exact verdict";
+    case TimePromise::NeverLate:
+      return "is never later than the exact earliest contact t*, misses no contact";
+    case TimePromise::None:
+      return "against the exact earliest contact t*";
+  }
+  return "";
+}
+
+// What a method's promise says about its verdicts, against the exact twin.
+const char* promise_words(Promise p) {
+  switch (p) {
+    case Promise::Exact:
+      return "= the exact twin";
+    case Promise::Conservative:
+      return "misses no hit of the exact twin";
+    case Promise::None:
+      return "against the exact twin";
+  }
+  return "";
+}
+
+void inputs_markdown(Out to, const Certificate& c) {
+  fmt::format_to(to, "## Inputs\n\n| source | queries |\n|---|---|\n");
+  fmt::format_to(to, "| corpus (`{}`, {} files) | {} |\n", c.options.corpus_dir, c.corpus_files,
+                 c.corpus_queries);
+  fmt::format_to(to, "| fuzzed: {} per family, {} static and {} moving families | {} |\n",
+                 c.options.per_family, c.families.size(), c.moving_families.size(),
+                 c.fuzzed_queries);
+  fmt::format_to(to, "| extra files ({}) | {} |\n", c.options.extra_files.size(), c.extra_queries);
+  fmt::format_to(to,
+                 "| narrow-phase queries recorded from the shipped scenes ({} scenes, robust, "
+                 "every {}th frame) | {} |\n",
+                 c.scenes, c.options.scene_stride, c.scene_queries);
+  fmt::format_to(to, "| random triangle-soup pairs (tree) | {} |\n\n", c.options.soups);
+}
+
+void properties_markdown(Out to, const Certificate& c) {
+  fmt::format_to(to,
+                 "## Properties\n\n| property | method | k | checked | violations |\n"
+                 "|---|---|---|---|---|\n");
+  for (const BoxCheck& b : c.boxes)
+    fmt::format_to(to, "| float FDH contains the exact FDH | `{}` | {} | {} boxes | {} |\n",
+                   b.method, b.k, b.boxes, b.box_violations);
+  for (const BoxCheck& b : c.boxes) {
+    if (!b.tree) continue;  // a plug-in's boxes: fast/'s tree is not made of them
+    fmt::format_to(to,
+                   "| tree traversal finds every exactly overlapping pair | `{}` | {} | {} tree "
+                   "pairs, {} overlapping primitive pairs | {} |\n",
+                   b.method, b.k, b.soup_pairs, b.exact_pairs, b.cull_violations);
+  }
+  for (const PromiseCheck& p : c.promises)
+    fmt::format_to(to, "| {} verdict {} | `{}` | – | {} queries{} | {} |\n", to_string(p.decision),
+                   promise_words(p.promise), p.method, p.checked,
+                   p.filter_decided
+                       ? fmt::format(" ({} decided by the float filter alone)", p.filter_decided)
+                       : std::string(),
+                   p.violations);
+  for (const TimePromiseCheck& p : c.times)
+    fmt::format_to(to,
+                   "| {} time {} | `{}` | – | {} queries ({} contacts; {} late, {} zero, "
+                   "earliest by {:.3g} of the step, median {:.3g}) | {} |\n",
+                   to_string(p.decision), time_promise_words(p.promise), p.method, p.tally.checked,
+                   p.tally.contacts, p.tally.late, p.tally.zero, p.tally.early_max(),
+                   p.tally.early_median(), p.tally.broken);
+  fmt::format_to(to,
+                 "| the exact twin = the known truth (corpus and benchmark files; fuzzed queries "
+                 "whose construction fixes it) | – | – | {} queries | {} |\n",
+                 c.truths, c.truth_violations);
+}
+
+json metamorphic_json(const Certificate& c) {
+  json out = json::array();
+  for (const MetamorphicCheck& m : c.metamorphic)
+    out.push_back({{"method", m.method},
+                   {"promise", to_string(m.promise)},
+                   {"checked", m.checked},
+                   {"violations", m.violations}});
+  return out;
+}
+
+// Every method under the truth-keeping transforms: promised methods must change no verdict.
+void metamorphic_markdown(Out to, const Certificate& c) {
+  fmt::format_to(
+      to,
+      "\n## Metamorphic checks\n\nEvery query above under each transform that keeps "
+      "its truth (docs/methods.md, \"Metamorphic checks\"): a changed verdict is wrong "
+      "on one of the two queries. Methods that promise the exact verdict must change "
+      "none (a violation); the others are counted.\n\n"
+      "| method | promise | transformed queries | verdicts changed |\n|---|---|---|---|\n");
+  for (const MetamorphicCheck& m : c.metamorphic)
+    fmt::format_to(to, "| `{}` | {} | {} | {} |\n", m.method, to_string(m.promise), m.checked,
+                   m.violations);
+}
+
+}  // namespace
+
+long Certificate::checks() const {
+  long n = truths;
+  for (const PromiseCheck& p : promises) n += p.checked;
+  for (const TimePromiseCheck& p : times) n += p.tally.checked;
+  for (const BoxCheck& b : boxes) n += b.boxes + b.soup_pairs;
+  for (const MetamorphicCheck& m : metamorphic) n += m.held() ? m.checked : 0;
+  return n;
+}
+
+long Certificate::violations() const {
+  long n = truth_violations;
+  for (const PromiseCheck& p : promises) n += p.violations;
+  for (const TimePromiseCheck& p : times) n += p.tally.broken;
+  for (const BoxCheck& b : boxes) n += b.box_violations + b.cull_violations;
+  for (const MetamorphicCheck& m : metamorphic) n += m.held() ? m.violations : 0;
+  return n;
+}
+
+void write_certificate(const Certificate& c) {
+  const fs::path dir(c.options.out_dir);
+  write_file_atomically((dir / "certificate.json").string(), certificate_json(c));
+  write_file_atomically((dir / "certificate.md").string(), certificate_markdown(c));
+}
+
+std::string certificate_json(const Certificate& c) {
+  json boxes = json::object(), culls = json::object();
+  for (const BoxCheck& b : c.boxes) {
+    boxes[box_key(boxes, b)] = {
+        {"method", b.method}, {"boxes", b.boxes}, {"violations", b.box_violations}};
+    if (!b.tree) continue;
+    culls[box_key(culls, b)] = {{"method", b.method},
+                                {"soup_pairs", b.soup_pairs},
+                                {"exact_overlapping_pairs", b.exact_pairs},
+                                {"violations", b.cull_violations}};
+  }
+  const json j = {
+      {"certified", c.certified()},
+      {"commit", c.commit},
+      {"cgal", c.cgal},
+      {"gmp", c.gmp},
+      {"mode", mode(c)},
+      {"seed", c.options.seed},
+      {"inputs", inputs_json(c)},
+      {"kdop_contains_exact", boxes},
+      {"tree_no_false_cull", culls},
+      {"promises", promises_json(c)},
+      {"times", times_json(c)},
+      {"exact_equals_stored_truth", {{"queries", c.truths}, {"violations", c.truth_violations}}},
+      {"metamorphic", metamorphic_json(c)},
+      {"peers", peers_json(c.peers)},
+      {"first_violation", c.first_violation}};
+  return json_text(j, "certificate.json");
+}
+
+std::string certificate_markdown(const Certificate& c) {
+  fmt::memory_buffer out;
+  const auto to = std::back_inserter(out);
+  fmt::format_to(to, "# fdhcert certificate\n\n{}\n",
+                 c.certified() ? std::string("**Certified**: no violation.")
+                               : fmt::format("**Violated**: {}.", c.first_violation));
+  fmt::format_to(
+      to, "\nCommit `{}`, CGAL {}, GMP {}, {} run, seed {}. Made by `fdhcert certify{}`.\n\n",
+      c.commit, c.cgal, c.gmp, mode(c), c.options.seed, c.options.quick ? " --quick" : "");
+  inputs_markdown(to, c);
+  properties_markdown(to, c);
+  metamorphic_markdown(to, c);
+  fmt::format_to(to, "\n{}", peers_markdown(c.peers));
+  return fmt::to_string(out);
+}
+
+}  // namespace fdh::verify

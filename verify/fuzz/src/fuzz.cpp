@@ -1,0 +1,288 @@
+#include "fdh/fuzz/fuzz.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "fdh/gen/case_seed.hpp"
+#include "fdh/gen/families.hpp"
+#include "fdh/io/case_files.hpp"
+#include "fdh/io/record_scope.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/os/child_process.hpp"
+#include "fdh/os/folders.hpp"
+#include "fdh/os/work_folder.hpp"
+#include "fuzz_params.hpp"
+#include "fuzz_target.hpp"
+
+namespace fdh::verify {
+namespace fs = std::filesystem;
+
+long shard_begin(long count, int shard, int shards) {
+  if (count < 0 || shards < 1 || shard < 0 || shard > shards)
+    throw std::invalid_argument("shard_begin needs count >= 0 and 0 <= shard <= shards");
+  // count = q·shards + r, so count·shard/shards = q·shard + r·shard/shards exactly; q·shard is
+  // at most count and r·shard < shards² < 2^62: no product overflows.
+  const long q = count / shards, r = count % shards;
+  return q * shard + r * shard / shards;
+}
+
+namespace {
+
+// A done-marker's content: `<disagreements> <case file>...`, paths relative to the out folder.
+struct MarkerContent {
+  long disagreements = 0;
+  std::vector<std::string> files;
+};
+
+MarkerContent read_marker(const std::string& p) {
+  std::ifstream in(p);
+  MarkerContent r;
+  if (!(in >> r.disagreements)) throw std::runtime_error(p + ": unreadable marker");
+  for (std::string f; in >> f;) r.files.push_back(f);
+  return r;
+}
+
+// Refuses to start while OUT/.fuzz holds an unfinished run other than `ours`: its cases would
+// be left half done under a run that looks resumed.
+void refuse_other_unfinished_runs(const std::string& meta, const fs::path& out,
+                                  const FuzzParams& ours) {
+  for (const std::string& dir : run_folders(meta, "tmp")) {
+    const std::optional<FuzzParams> p = FuzzParams::read(dir + "/manifest");
+    if (!p || *p == ours) continue;
+    if (coverage_of(dir, p->first(), p->last()).todo.empty()) continue;
+    throw FuzzRefused(out.string() + " holds an unfinished fuzz run with other options (" +
+                      p->options() + "): resume it with those, delete " + dir +
+                      " to abandon it, or give another --out");
+  }
+}
+
+// Any family of the registry: static or moving, vertex-face or edge-edge.
+const Family& any_family(const std::string& name) {
+  const Family* f = family_named(name);
+  if (!f) throw std::invalid_argument("unknown family '" + name + "'");
+  return *f;
+}
+
+FuzzParams params_of(const FuzzOptions& opt, const Method& m, const Family& f) {
+  if (opt.shards < 1 || opt.shard < 0 || opt.shard >= opt.shards)
+    throw std::invalid_argument("--shard I/N needs 1 <= I <= N");
+  if (opt.count < 0) throw std::invalid_argument("--count must not be negative");
+  return {m.name, f.name, opt.seed, opt.count, opt.shard, opt.shards, opt.metamorphic};
+}
+
+// OUT/.fuzz, locked for the run; a run that is held by another refuses.
+WorkFolder take_work_folder(const fs::path& out, double wait_seconds) {
+  make_folder(out.string());
+  try {
+    return WorkFolder((out / ".fuzz").string(), wait_seconds);
+  } catch (const LockBusy&) {
+    throw FuzzRefused("another fuzz run is using " + out.string() + " (it holds " +
+                      (out / ".fuzz" / "lock").string() +
+                      "): wait for it to end, or give another --out");
+  }
+}
+
+struct Run {
+  const FuzzOptions& opt;
+  FuzzTarget target{select_methods({opt.method}).front(), opt.metamorphic};
+  const Method& method = target.method;
+  const Family& generator = any_family(opt.family);
+  std::string family = generator.name;
+  FuzzParams params = params_of(opt, method, generator);
+  fs::path out{opt.out_dir};
+  fs::path case_dir = out / target.case_folder(family);
+  long first = params.first(), last = params.last();
+  long chunk = std::max(1, opt.chunk);
+  WorkFolder space;  // takes the lock: only after every option is known to be good
+  std::string run_dir = space.dir() + "/" + params.folder_name();
+  std::vector<IndexRange> todo;  // the cases no marker covered when the run started
+
+  // Every refusal comes before anything in OUT changes.
+  explicit Run(const FuzzOptions& o) : opt(o), space(take_work_folder(out, o.lock_wait_seconds)) {
+    refuse_other_unfinished_runs(space.dir(), out, params);
+    const std::string manifest = run_dir + "/manifest";
+    const bool resumed = fs::exists(manifest);
+    if (resumed) {
+      const std::optional<FuzzParams> p = FuzzParams::read(manifest);
+      if (!p || !(*p == params))
+        throw FuzzRefused(manifest + " does not record this run (" + params.options() +
+                          "): delete " + run_dir + " to start it afresh");
+    }
+    space.clear_stale_temporaries();
+    make_folder(case_dir.string());
+    make_folder(run_dir);
+    if (!resumed) {
+      space.write_whole(manifest, params.manifest().text());  // before any case
+      sync_folder(run_dir);
+    }
+  }
+
+  bool fails(const Generated& g) const {
+    const QueryRecord r = g.record();
+    const RecordScope asking(r);  // a plug-in's crash names the family
+    return target.fails(g.query);
+  }
+
+  // Runs cases [r.begin, r.end), writes their case files, then the marker; its disagreements.
+  long run_chunk(IndexRange r) const {
+    long disagreements = 0;
+    std::vector<std::string> files;
+    for (long i = r.begin; i < r.end; ++i) {
+      std::optional<Generated> g = shrunk_failure(generator, case_seed(opt.seed, i),
+                                                  [this](const Generated& x) { return fails(x); });
+      if (!g) continue;
+      ++disagreements;
+      const std::string name = case_hash(g->query) + ".vf";
+      const std::string text = target.case_text(g->query, family);
+      const std::string path = (case_dir / name).string();
+      // Most disagreements shrink to a case found before: one read instead of a synced write.
+      if (!file_holds(path, text)) space.write_whole(path, text);
+      files.push_back(target.case_folder(family) + "/" + name);
+    }
+    if (!files.empty()) sync_folder(case_dir.string());  // the cases are on disk before the marker
+    std::ostringstream os;
+    os << disagreements;
+    for (const std::string& f : files) os << ' ' << f;
+    os << '\n';
+    space.write_whole(run_dir + "/" + marker_name(r), os.str());
+    return disagreements;
+  }
+
+  // The chunks of the cases to do: each gap of `todo` cut into pieces of `chunk` cases,
+  // numbered in order. Worker w of n takes chunks w, w + n, ...
+  long chunks() const {
+    long n = 0;
+    for (const IndexRange& g : todo) n += (g.end - g.begin - 1) / chunk + 1;
+    return n;
+  }
+
+  // Each chunk it finishes is reported on `progress_fd` as {cases, disagreements} (16 bytes:
+  // one atomic pipe write), so the parent's progress reads no files.
+  void work(int w, int n, int progress_fd) const {
+    long base = 0;  // number of the gap's first chunk
+    for (const IndexRange& g : todo) {
+      const long m = (g.end - g.begin - 1) / chunk + 1;
+      for (long j = ((w - base) % n + n) % n; j < m; j += n) {
+        const IndexRange r{g.begin + j * chunk, std::min(g.end, g.begin + j * chunk + chunk)};
+        const long report[2] = {r.end - r.begin, run_chunk(r)};
+        // Progress is cosmetic: a full or closed pipe changes nothing, so the result is unused.
+        [[maybe_unused]] const ssize_t written = ::write(progress_fd, report, sizeof report);
+      }
+      base += m;
+    }
+  }
+};
+
+// Worker processes 0 .. n-1, each reporting (cases, found) per chunk on the pipe. Processes,
+// not threads: RapidCheck's generators keep global state. A killed run leaves no worker behind.
+std::vector<ChildProcess> start_workers(const Run& run, int workers, int progress_fd) {
+  std::vector<ChildProcess> children;
+  for (int w = 0; w < workers; ++w)
+    children.emplace_back([&run, w, workers, progress_fd] {
+      try {
+        run.work(w, workers, progress_fd);
+        return 0;
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "fdhcert: fuzz worker: %s\n", e.what());
+        return 3;
+      }
+    });
+  return children;
+}
+
+// The counts a run's progress shows.
+struct Tally {
+  long done = 0, found = 0;
+};
+
+// Waits for every worker, reporting progress; false if one failed.
+bool wait_for_workers(const Run& run, std::vector<ChildProcess> children, int progress_fd,
+                      Tally tally) {
+  bool ok = true;
+  const Progress shape{"fuzz " + run.method.name + " on " + run.family, 0, run.last - run.first,
+                       "cases"};
+  while (!children.empty()) {
+    for (std::size_t k = 0; k < children.size();) {
+      if (const std::optional<ChildStatus> s = children[k].poll()) {
+        ok &= s->ok();
+        children.erase(children.begin() + long(k));
+      } else {
+        ++k;
+      }
+    }
+    for (long got[2]; ::read(progress_fd, got, sizeof got) == sizeof got;)
+      tally.done += got[0], tally.found += got[1];
+    if (children.empty()) break;
+    Progress p = shape;
+    p.done = tally.done, p.detail = std::to_string(tally.found) + " found";
+    report(run.opt.progress, p);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  return ok;
+}
+
+// Runs the chunks still to do on `opt.threads` workers; throws if one failed.
+void run_workers(const Run& run, Tally tally) {
+  const long chunks = run.chunks();
+  if (chunks == 0) return;
+  const int threads =
+      run.opt.threads > 0 ? run.opt.threads : int(std::thread::hardware_concurrency());
+  const int workers = int(std::min<long>(std::max(1, threads), chunks));
+  int pipe_fd[2];
+  if (::pipe2(pipe_fd, O_CLOEXEC | O_NONBLOCK) != 0)
+    throw std::runtime_error("fuzz: cannot make a pipe");
+  std::vector<ChildProcess> children;
+  try {
+    children = start_workers(run, workers, pipe_fd[1]);
+  } catch (...) {
+    ::close(pipe_fd[0]);
+    ::close(pipe_fd[1]);
+    throw;
+  }
+  ::close(pipe_fd[1]);
+  const bool ok = wait_for_workers(run, std::move(children), pipe_fd[0], tally);
+  ::close(pipe_fd[0]);
+  if (!ok) throw std::runtime_error("fuzz: a worker failed (see above)");
+}
+
+}  // namespace
+
+FuzzSummary run_fuzz(const FuzzOptions& opt) {
+  if (opt.out_dir.empty()) throw std::invalid_argument("fuzz needs an output folder");
+  Run run(opt);  // throws as run_fuzz says; holds OUT's lock until it returns
+
+  FuzzSummary sum;
+  sum.first = run.first;
+  sum.last = run.last;
+  const Coverage before = coverage_of(run.run_dir, run.first, run.last);
+  run.todo = before.todo;
+  sum.resumed = before.done_count();
+  Tally tally{sum.resumed, 0};
+  for (const DoneMarker& m : before.done) tally.found += read_marker(m.path).disagreements;
+  run_workers(run, tally);
+
+  const Coverage after = coverage_of(run.run_dir, run.first, run.last);
+  if (!after.todo.empty())
+    throw std::runtime_error("fuzz: cases " + std::to_string(after.todo.front().begin) + ".." +
+                             std::to_string(after.todo.front().end - 1) + " did not finish");
+  for (const DoneMarker& m : after.done) {
+    const MarkerContent r = read_marker(m.path);
+    sum.disagreements += r.disagreements;
+    for (const std::string& f : r.files) sum.distinct.insert((run.out / f).string());
+  }
+  sum.cases = sum.last - sum.first;
+  return sum;
+}
+
+}  // namespace fdh::verify

@@ -1,0 +1,96 @@
+#include "fuzz_params.hpp"
+
+#include <sstream>
+
+#include "fdh/fuzz/fuzz.hpp"
+
+namespace fdh::verify {
+namespace {
+
+const std::string kTitle = "fdhcert fuzz run";
+
+// One value read whole from `text`, or false.
+template <class T>
+bool parse(const std::string& text, T& value) {
+  std::istringstream in(text);
+  return (in >> value) && in.peek() == EOF;
+}
+
+bool parse_shard(const std::string& text, FuzzParams& p) {
+  std::istringstream in(text);
+  char slash = 0;
+  if (!(in >> p.shard >> slash >> p.shards) || slash != '/' || in.peek() != EOF) return false;
+  --p.shard;
+  return true;
+}
+
+}  // namespace
+
+bool FuzzParams::operator==(const FuzzParams& o) const {
+  return method == o.method && family == o.family && seed == o.seed && count == o.count &&
+         shard == o.shard && shards == o.shards && metamorphic == o.metamorphic;
+}
+
+std::string FuzzParams::folder_name() const {
+  return (metamorphic ? "metamorphic." : "") + method + "." + family + ".seed" +
+         std::to_string(seed) + ".count" + std::to_string(count) + ".shard" +
+         std::to_string(shard + 1) + "of" + std::to_string(shards);
+}
+
+std::string FuzzParams::options() const {
+  return (metamorphic ? "--metamorphic " : "") + std::string("--method ") + method + " --family " +
+         family + " --seed " + std::to_string(seed) + " --count " + std::to_string(count) +
+         " --shard " + std::to_string(shard + 1) + "/" + std::to_string(shards);
+}
+
+Manifest FuzzParams::manifest() const {
+  Manifest m{kTitle,
+             {{"method", method},
+              {"family", family},
+              {"seed", std::to_string(seed)},
+              {"count", std::to_string(count)},
+              {"shard", std::to_string(shard + 1) + "/" + std::to_string(shards)}}};
+  if (metamorphic) m.entries.emplace_back("mode", "metamorphic");
+  return m;
+}
+
+std::optional<FuzzParams> FuzzParams::of(const Manifest& m) {
+  FuzzParams p;
+  bool ok[5] = {};  // method, family, seed, count, shard
+  for (const auto& [key, value] : m.entries) {
+    if (key == "method") {
+      p.method = value, ok[0] = true;
+    } else if (key == "family") {
+      p.family = value, ok[1] = true;
+    } else if (key == "seed") {
+      ok[2] = parse(value, p.seed);
+    } else if (key == "count") {
+      ok[3] = parse(value, p.count);
+    } else if (key == "shard") {
+      ok[4] = parse_shard(value, p);
+    } else if (key == "mode" && value == "metamorphic") {
+      p.metamorphic = true;
+    } else {
+      return std::nullopt;
+    }
+  }
+  for (const bool b : ok)
+    if (!b) return std::nullopt;
+  if (p.count < 0 || p.shards < 1 || p.shard < 0 || p.shard >= p.shards) return std::nullopt;
+  return p;
+}
+
+std::optional<FuzzParams> FuzzParams::read(const std::string& manifest_path) {
+  const std::optional<Manifest> m = Manifest::read(manifest_path, kTitle);
+  return m ? of(*m) : std::nullopt;
+}
+
+long FuzzParams::first() const {
+  return shard_begin(count, shard, shards);
+}
+
+long FuzzParams::last() const {
+  return shard_begin(count, shard + 1, shards);
+}
+
+}  // namespace fdh::verify
