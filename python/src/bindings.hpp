@@ -1,5 +1,5 @@
 // The parts of the Python module, each registering its functions on the module (one concept a
-// file: queries, k-DOPs, classify, scenes), and the conversions they share.
+// file: queries, times of impact, k-DOPs, classify, scenes), and the conversions they share.
 #pragma once
 
 #include <pybind11/numpy.h>
@@ -27,6 +27,7 @@ void add_queries(py::module_& m);
 void add_kdop(py::module_& m);
 void add_classify(py::module_& m);
 void add_scene(py::module_& m);
+void add_toi(py::module_& m);
 
 // An N×8×3 array as N queries of `kind` (the order of fdh::Query: vertex-face v f0 f1 f2 at t = 0,
 // then at t = 1; edge-edge ea0 ea1 eb0 eb1, then at t = 1). ValueError for another shape or a

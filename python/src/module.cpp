@@ -21,6 +21,7 @@ PYBIND11_MODULE(fdhcert, m) {
     }
   });
   add_queries(m);
+  add_toi(m);
   add_kdop(m);
   add_classify(m);
   add_scene(m);

@@ -120,6 +120,73 @@ def test_robust_equals_exact_on_the_ccd_sample_in_batches():
         assert (test(queries, "robust") == test(queries, "exact")).all(), path
 
 
+def toi_per_query(path, methods):
+    """`classify --toi --per-query --json`: the JSON and the per-query rows."""
+    out = Path(os.environ.get("TMPDIR", "/tmp")) / f"fdhcert-pytest-toi-{os.getpid()}.csv"
+    try:
+        r = program("classify", path, "--toi", "--json", "--methods", methods, "--per-query", out)
+        assert r.returncode == 0, r.stderr
+        rows = list(csv.DictReader(out.open()))
+    finally:
+        out.unlink(missing_ok=True)
+    return json.loads(r.stdout), rows
+
+
+def sample_queries(path):
+    """A CCD benchmark CSV as an N×8×3 array (8 rows per query, exact rationals)."""
+    rows = [line.split(",") for line in path.read_text().split()]
+    coords = [[float(Fraction(int(r[i]), int(r[i + 1]))) for i in (0, 2, 4)] for r in rows]
+    return np.array(coords).reshape(-1, 8, 3)
+
+
+def toi_files():
+    files = [DATA / "moving.vf", DATA / "moving_times.vf"]
+    if SAMPLE and Path(SAMPLE).is_dir():
+        files += sorted(Path(SAMPLE).glob("*/*/*.csv"))[::6]
+    return files
+
+
+@pytest.mark.parametrize("path", toi_files(), ids=lambda p: p.name)
+def test_times_of_impact_agree_with_the_program(path):
+    methods = ["exact", "robust", "float-cubic"]
+    cli, rows = toi_per_query(path, ",".join(methods))
+    assert set(cli["toi"]["methods"]) == set(methods)
+    if path.suffix == ".csv":
+        points = sample_queries(path)
+        kinds = ["edge-edge" if "edge-edge" in str(path) else "vertex-face"] * len(points)
+    else:
+        kinds, points, _ = read_vf(path)
+    assert len(rows) == len(points)
+    for method in methods:
+        for kind in set(kinds):
+            keep = [i for i, k in enumerate(kinds) if k == kind]
+            toi = fdhcert.edge_edge_toi if kind == "edge-edge" else fdhcert.vertex_face_toi
+            hit, t_lo, t_hi = toi(points[keep], method, 2**-30)
+            for j, i in enumerate(keep):
+                lo, hi = rows[i][f"{method} t_lo"], rows[i][f"{method} t_hi"]
+                assert bool(hit[j]) == (lo != ""), (method, i)
+                if hit[j]:
+                    assert (t_lo[j], t_hi[j]) == (float(lo), float(hi)), (method, i)
+                else:
+                    assert (t_lo[j], t_hi[j]) == (1.0, 1.0)
+    # robust's enclosures are exact, as the program's checker says.
+    assert cli["toi"]["methods"]["robust"]["late"] == 0
+    assert cli["toi"]["methods"]["robust"]["broken"] == 0
+
+
+def test_a_time_of_impact_is_enclosed_and_at_most_the_width_wide():
+    # The triangle rises through the still point: contact at t = 1/2 exactly.
+    tri = [[0, 0, -1], [1, 0, -1], [0, 1, -1]]
+    q = np.array([[[0.25, 0.25, 0], *tri, [0.25, 0.25, 0], [0, 0, 1], [1, 0, 1], [0, 1, 1]]],
+                 dtype=float)
+    hit, t_lo, t_hi = fdhcert.vertex_face_toi(q, width=2**-40)
+    assert hit[0] and t_lo[0] <= 0.5 <= t_hi[0] and t_hi[0] - t_lo[0] <= 2**-40
+    with pytest.raises(ValueError):
+        fdhcert.vertex_face_toi(q, "paper-literal")
+    with pytest.raises(ValueError):
+        fdhcert.vertex_face_toi(q, width=0)
+
+
 def test_the_exact_contact_time_is_a_fraction():
     _, points, _ = read_vf(DATA / "moving.vf")
     rising = fdhcert.contact_time(points[0], "vertex-face")

@@ -149,5 +149,88 @@ TEST(Checker, CulledPairsAreTheExactPairsNotFound) {
   EXPECT_EQ(culled_pairs(found, exact), (std::vector<std::pair<int, int>>{{1, 1}}));
 }
 
+// A method whose time of impact is the constant `said`, under `promise`.
+Method timed(Toi said, TimePromise promise) {
+  Method m;
+  m.name = "timed";
+  m.time_promise = promise;
+  for (QueryToi& t : m.toi) t = [said](const Query&, double) { return said; };
+  return m;
+}
+
+// crossing() meets the triangle at t* = 1/2 exactly.
+TEST(Checker, TimePromisesAllowWhatTheySay) {
+  const Query q = crossing();
+  const TimeTwin twin = time_twin(q);
+  ASSERT_TRUE(twin.hit);
+  EXPECT_EQ(twin.t_star, 0.5);
+  const double w = 0x1p-30;
+  const auto check_with = [&](Toi said, TimePromise p) {
+    return check_time(timed(said, p), q, w, twin);
+  };
+  // An enclosure of 1/2 within the width keeps both promises; 1/2 itself is neither early nor late.
+  const TimeCheck exact_half = check_with({true, 0.5, 0.5}, TimePromise::Enclosure);
+  EXPECT_TRUE(exact_half.kept);
+  EXPECT_EQ(exact_half.early, 0);
+  // Early but wide: never late, no enclosure.
+  const TimeCheck wide = check_with({true, 0.25, 0.75}, TimePromise::Enclosure);
+  EXPECT_TRUE(wide.too_wide);
+  EXPECT_TRUE(wide.enclosed);
+  EXPECT_FALSE(wide.kept);
+  EXPECT_EQ(wide.early, 0.25);
+  EXPECT_TRUE(check_with({true, 0.25, 0.75}, TimePromise::NeverLate).kept);
+  // Late by one ulp: breaks both.
+  const Toi late{true, std::nextafter(0.5, 1.0), std::nextafter(0.5, 1.0)};
+  EXPECT_TRUE(check_with(late, TimePromise::NeverLate).late);
+  EXPECT_FALSE(check_with(late, TimePromise::NeverLate).kept);
+  EXPECT_FALSE(check_with(late, TimePromise::Enclosure).kept);
+  EXPECT_TRUE(check_with(late, TimePromise::None).kept);
+  // A missed contact is late; a zero TOI where t* > 0 is counted, and never late.
+  const TimeCheck missed = check_with({}, TimePromise::NeverLate);
+  EXPECT_TRUE(missed.late && missed.verdict_error && !missed.kept);
+  const TimeCheck zero = check_with({true, 0, 1}, TimePromise::NeverLate);
+  EXPECT_TRUE(zero.zero && zero.kept);
+  EXPECT_EQ(zero.early, 0.5);
+  EXPECT_EQ(describe(timed(late, TimePromise::NeverLate), check_with(late, TimePromise::NeverLate)),
+            "timed's TOI is late: t_lo = 0.50000000000000011 > t* ~ 0.5");
+  // A contact said where there is none: allowed by never-late alone.
+  const Query p = passing();
+  const TimeCheck alarm = check_time(timed({true, 0, 0}, TimePromise::NeverLate), p, w);
+  EXPECT_TRUE(alarm.verdict_error && alarm.kept && !alarm.late);
+  EXPECT_FALSE(check_time(timed({true, 0, 0}, TimePromise::Enclosure), p, w).kept);
+  // Garbage breaks either promise.
+  EXPECT_FALSE(check_with({true, 0.75, 0.25}, TimePromise::NeverLate).kept);
+}
+
+TEST(Checker, TheTimeTallyCountsLateEarlyAndZero) {
+  const Query q = crossing();
+  TimeTally t;
+  t.add(check_time(timed({true, 0.5, 0.5}, TimePromise::NeverLate), q, 1), 0);
+  t.add(check_time(timed({true, 0, 0.5}, TimePromise::NeverLate), q, 1), 1);
+  t.add(check_time(timed({true, 0.75, 0.75}, TimePromise::NeverLate), q, 1), 2);
+  t.add(check_time(timed({true, 0.375, 0.5}, TimePromise::NeverLate), q, 1), 3);
+  EXPECT_EQ(t.checked, 4);
+  EXPECT_EQ(t.contacts, 4);
+  EXPECT_EQ(t.late, 1);
+  EXPECT_EQ(t.zero, 1);
+  EXPECT_EQ(t.broken, 1);
+  EXPECT_EQ(t.first_broken, (std::vector<std::size_t>{2}));
+  EXPECT_EQ(t.early_max(), 0.5);
+  EXPECT_EQ(t.early_median(), 0.125);  // of 0, 0.125, 0.5: the late one is not early
+}
+
+// The registry's robust keeps its enclosure, and the twin agrees with itself.
+TEST(Checker, RobustAndTheTwinKeepTheirTimePromises) {
+  Query moving = crossing();
+  moving.x[5].z = moving.x[6].z = moving.x[7].z = 0.5;  // the triangle rises to meet it
+  for (const Method& m : toi_methods()) {
+    if (m.time_promise == TimePromise::None) continue;
+    for (const Query& q : {crossing(), passing(), moving}) {
+      const TimeCheck c = check_time(m, q, kDefaultToiWidth);
+      EXPECT_TRUE(c.kept) << m.name << ": " << describe(m, c);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fdh::verify

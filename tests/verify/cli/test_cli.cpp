@@ -312,6 +312,43 @@ TEST(Cli, ReplayJsonNamesFailingCases) {
   EXPECT_EQ(j["methods"]["paper-literal"]["cases"].size(), j["cases"].get<std::size_t>());
 }
 
+// Replay --toi re-checks the times: robust's keep their enclosure on every stored case, and
+// float-cubic's late ones are named.
+TEST(Cli, ReplayTimesOfImpact) {
+  const CliRun r = fdhcert({"replay", FDH_SOURCE_DIR "/corpus/counterexamples/float-cubic",
+                            "--methods", "exact,robust,float-cubic", "--json", "--toi"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::ordered_json::parse(r.out);
+  EXPECT_EQ(j["toi"]["robust"]["late"].size(), 0u);
+  EXPECT_EQ(j["toi"]["robust"]["broken"].size(), 0u);
+  EXPECT_EQ(j["toi"]["exact"]["broken"].size(), 0u);
+  EXPECT_GT(j["toi"]["float-cubic"]["late"].size(), 0u);
+  EXPECT_EQ(j["toi"]["float-cubic"]["broken"].size(), 0u);  // it promises nothing
+}
+
+// classify --toi: a second table, and "toi" in the JSON with each method's counts.
+TEST(Cli, ClassifyToiCountsLateZeroAndEarly) {
+  const CliRun table = fdhcert({"classify", kData + "moving.vf", "--toi", "--check"});
+  ASSERT_EQ(table.status, 0) << table.err;
+  EXPECT_NE(table.out.find("early max"), std::string::npos) << table.out;
+  const CliRun r = fdhcert({"classify", kData + "moving.vf", kData + "static.vf", "--toi", "--json",
+                            "--width", "0x1p-40", "--check"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto t = nlohmann::ordered_json::parse(r.out)["toi"];
+  EXPECT_EQ(t["width"], 0x1p-40);
+  EXPECT_EQ(t["files"].size(), 2u);
+  // The methods that give a time; the paper's give none.
+  EXPECT_EQ(keys(t["methods"]), (std::vector<std::string>{"exact", "robust", "float-cubic"}));
+  for (const char* m : {"exact", "robust"}) {
+    EXPECT_EQ(t["methods"][m]["promise"], "exact-enclosure");
+    EXPECT_EQ(t["methods"][m]["late"], 0);
+    EXPECT_EQ(t["methods"][m]["broken"], 0);
+    EXPECT_GT(t["methods"][m]["contacts"], 0);
+    EXPECT_LE(t["methods"][m]["early_max"], 0x1p-40);
+  }
+  EXPECT_EQ(t["methods"]["float-cubic"]["promise"], "none");
+}
+
 // Issue 11's "done when": fuzz on a moving family finds, shrinks and stores float-cubic's
 // failures, and replay shows float-cubic failing on each while exact keeps every stored truth.
 TEST(Cli, FuzzFloatCubicOnAMovingFamilyThenReplay) {

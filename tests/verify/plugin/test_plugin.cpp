@@ -135,8 +135,8 @@ TEST(Plugin, ReplayAndFuzzRunThePlugIn) {
 TEST(Plugin, APlugInThatCannotBeUsedIsRefusedWithExitTwo) {
   const std::vector<std::pair<std::string, std::string>> bad = {
       {FDH_SOURCE_DIR "/no/such/plugin.so", "cannot load"},
-      {FDH_NO_PLUGIN, "exports no fdh_plugin_v1"},
-      {faulty("wrong-abi"), "ABI version 99, but this fdhcert takes 1"},
+      {FDH_NO_PLUGIN, "exports neither fdh_plugin_v2 nor fdh_plugin_v1"},
+      {faulty("wrong-abi"), "ABI version 99, but this fdhcert takes 1 or 2"},
       {faulty("taken-name"), "method name 'robust' is taken"},
       {faulty("path-name"), "its name is not a letter or digit, then"},
   };
@@ -229,6 +229,59 @@ TEST(Plugin, ACrashOnAQueryIsReportedBeforeTheProcessEnds) {
             "fdhcert: plug-in crash-on-magic crashed (SIGSEGV) in vertex_face_ccd "
             "on query " +
                 file.string() + ":2\n");
+}
+
+// The faulty plug-ins are of ABI version 1, built against that version's header as it shipped
+// (tests/verify/plugin/v1/): one that keeps its promise loads and is classified as before, and
+// gives no time of impact.
+TEST(Plugin, AVersionOnePlugInStillLoads) {
+  const CliRun r = fdhcert({"classify", kData + "static.vf", "--plugin", faulty("crash-on-magic"),
+                            "--methods", "exact,crash-on-magic", "--json", "--check", "--toi"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["methods"]["crash-on-magic"]["fn"], 0);
+  EXPECT_GT(j["methods"]["crash-on-magic"]["tp"], 0);
+  EXPECT_TRUE(j["toi"]["methods"].contains("exact"));
+  EXPECT_FALSE(j["toi"]["methods"].contains("crash-on-magic"));
+}
+
+// The example of ABI version 2 gives a time too: the start of the step, never late.
+TEST(Plugin, AVersionTwoPlugInGivesATimeThatIsChecked) {
+  const CliRun r =
+      fdhcert({"classify", kData + "moving.vf", kData + "static.vf", "--plugin", FDH_EXAMPLE_PLUGIN,
+               "--methods", "exact,aabb", "--json", "--toi", "--check"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json t = nlohmann::json::parse(r.out)["toi"]["methods"]["aabb"];
+  EXPECT_EQ(t["promise"], "never-late");
+  EXPECT_GT(t["checked"], 0);
+  EXPECT_EQ(t["late"], 0);
+  EXPECT_GT(t["zero"], 0);  // 0 wherever t* > 0
+  EXPECT_EQ(t["broken"], 0);
+}
+
+// A plug-in whose time is late on one query: certify fails and saves the case.
+TEST(Plugin, CertifyCatchesALateTimeAndSavesTheCase) {
+  const fs::path file = magic_queries("plugin_late");
+  const fs::path out = fresh_temp_dir("plugin_late_out"), corpus = fresh_temp_dir("plugin_late_c");
+  const CliRun r =
+      fdhcert({"certify", "--plugin", FDH_LATE_TOI_PLUGIN, "--corpus", corpus.string(), "--out",
+               out.string(), "--per-family", "5", "--soups", "0", file.string()});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_TRUE(has(r.err, "late-toi's TOI is late: t_lo = 1 > t* ~ 0.5")) << r.err;
+  std::size_t saved = 0;
+  for (const auto& e : fs::recursive_directory_iterator(out))
+    if (e.is_regular_file() && has(text_of(e.path()), "late-toi's TOI is late")) ++saved;
+  EXPECT_GE(saved, 1u);
+  const nlohmann::json c = nlohmann::json::parse(text_of(out / "certificate.json"));
+  bool listed = false;
+  for (const auto& p : c["times"])
+    if (p["method"] == "late-toi" && p["decision"] == "vertex-face-toi") {
+      listed = true;
+      EXPECT_EQ(p["promise"], "never-late");
+      EXPECT_EQ(p["late"], 1);
+      EXPECT_EQ(p["violations"], 1);
+    }
+  EXPECT_TRUE(listed);
 }
 
 TEST(Plugin, TheFourCommandsTakePlugin) {

@@ -53,6 +53,41 @@ json promises_json(const Certificate& c) {
   return out;
 }
 
+json times_json(const Certificate& c) {
+  json out = json::array();
+  for (const TimePromiseCheck& p : c.times) {
+    const TimeTally& t = p.tally;
+    out.push_back({{"method", p.method},
+                   {"decision", to_string(p.decision)},
+                   {"promise", to_string(p.promise)},
+                   {"width", c.options.toi_width},
+                   {"checked", t.checked},
+                   {"contacts", t.contacts},
+                   {"late", t.late},
+                   {"zero", t.zero},
+                   {"verdict_errors", t.verdict_errors},
+                   {"not_enclosed", t.not_enclosed},
+                   {"too_wide", t.too_wide},
+                   {"early_max", t.early_max()},
+                   {"early_median", t.early_median()},
+                   {"violations", t.broken}});
+  }
+  return out;
+}
+
+// What a method's time promise says, against the exact earliest contact t*.
+const char* time_promise_words(TimePromise p) {
+  switch (p) {
+    case TimePromise::Enclosure:
+      return "encloses the exact earliest contact t* within the width, exact verdict";
+    case TimePromise::NeverLate:
+      return "is never later than the exact earliest contact t*, misses no contact";
+    case TimePromise::None:
+      return "against the exact earliest contact t*";
+  }
+  return "";
+}
+
 // What a method's promise says about its verdicts, against the exact twin.
 const char* promise_words(Promise p) {
   switch (p) {
@@ -102,6 +137,13 @@ void properties_markdown(Out to, const Certificate& c) {
                        ? fmt::format(" ({} decided by the float filter alone)", p.filter_decided)
                        : std::string(),
                    p.violations);
+  for (const TimePromiseCheck& p : c.times)
+    fmt::format_to(to,
+                   "| {} time {} | `{}` | – | {} queries ({} contacts; {} late, {} zero, "
+                   "earliest by {:.3g} of the step, median {:.3g}) | {} |\n",
+                   to_string(p.decision), time_promise_words(p.promise), p.method, p.tally.checked,
+                   p.tally.contacts, p.tally.late, p.tally.zero, p.tally.early_max(),
+                   p.tally.early_median(), p.tally.broken);
   fmt::format_to(to,
                  "| the exact twin = the known truth (corpus and benchmark files; fuzzed queries "
                  "whose construction fixes it) | – | – | {} queries | {} |\n",
@@ -137,6 +179,7 @@ void metamorphic_markdown(Out to, const Certificate& c) {
 long Certificate::checks() const {
   long n = truths;
   for (const PromiseCheck& p : promises) n += p.checked;
+  for (const TimePromiseCheck& p : times) n += p.tally.checked;
   for (const BoxCheck& b : boxes) n += b.boxes + b.soup_pairs;
   for (const MetamorphicCheck& m : metamorphic) n += m.held() ? m.checked : 0;
   return n;
@@ -145,6 +188,7 @@ long Certificate::checks() const {
 long Certificate::violations() const {
   long n = truth_violations;
   for (const PromiseCheck& p : promises) n += p.violations;
+  for (const TimePromiseCheck& p : times) n += p.tally.broken;
   for (const BoxCheck& b : boxes) n += b.box_violations + b.cull_violations;
   for (const MetamorphicCheck& m : metamorphic) n += m.held() ? m.violations : 0;
   return n;
@@ -178,6 +222,7 @@ std::string certificate_json(const Certificate& c) {
       {"kdop_contains_exact", boxes},
       {"tree_no_false_cull", culls},
       {"promises", promises_json(c)},
+      {"times", times_json(c)},
       {"exact_equals_stored_truth", {{"queries", c.truths}, {"violations", c.truth_violations}}},
       {"metamorphic", metamorphic_json(c)},
       {"peers", peers_json(c.peers)},

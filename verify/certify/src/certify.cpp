@@ -36,6 +36,7 @@ namespace {
 // so the certificate does not depend on how the run was cut (parallel.hpp).
 struct CertifyTally {
   std::vector<PromiseCheck> promises;
+  std::vector<TimePromiseCheck> times;
   std::vector<BoxCheck> boxes;
   std::vector<MetamorphicCheck> metamorphic;
   long truths = 0, truth_violations = 0;
@@ -53,6 +54,7 @@ struct CertifyTally {
       promises[i].filter_decided += later.promises[i].filter_decided;
       promises[i].violations += later.promises[i].violations;
     }
+    for (std::size_t i = 0; i < times.size(); ++i) times[i].tally.merge(later.times[i].tally, 0);
     for (std::size_t i = 0; i < boxes.size(); ++i) {
       const BoxCheck& b = later.boxes[i];
       boxes[i].boxes += b.boxes, boxes[i].box_violations += b.box_violations;
@@ -80,6 +82,9 @@ class Certifier {
     for (const Method& m : methods_)
       for (const Decision d : kQueryDecisions)
         if (m.test[std::size_t(d)]) zero_.promises.push_back({m.name, d, m.promise});
+    for (const Method& m : timed_)
+      for (const Decision d : kToiDecisions)
+        if (m.toi[toi_index(d)]) zero_.times.push_back({m.name, d, m.time_promise, {}});
     for (const BoxMethod& b : boxes_) {
       zero_.boxes.push_back({b.name, b.k});
       zero_.boxes.back().tree = b.builds_tree;
@@ -128,6 +133,7 @@ class Certifier {
   // The certificate's rows and counts are total_'s.
   void write_counts() {
     c_.promises = total_.promises, c_.boxes = total_.boxes, c_.metamorphic = total_.metamorphic;
+    c_.times = total_.times;
     c_.truths = total_.truths, c_.truth_violations = total_.truth_violations;
   }
 
@@ -155,6 +161,22 @@ class Certifier {
       if (v.kept) continue;
       ++p.violations;
       violation(with_truth(r, twin), describe(m, v) + " (" + to_string(d) + ")", t);
+    }
+    check_times(r, twin, t);
+  }
+
+  // Each time-promised method's time of impact against the exact earliest contact.
+  void check_times(const QueryRecord& r, bool twin, CertifyTally& t) const {
+    if (t.times.empty()) return;
+    const Query& q = r.query;
+    const Decision d = toi_decision_of(q);
+    const TimeTwin exact = time_twin(q);
+    for (TimePromiseCheck& row : t.times) {
+      if (row.decision != d) continue;
+      const Method& m = named(timed_, row.method);
+      const TimeCheck c = check_time(m, q, c_.options.toi_width, exact);
+      row.tally.add(c, 0, 0);
+      if (!c.kept) violation(with_truth(r, twin), describe(m, c) + " (" + to_string(d) + ")", t);
     }
   }
 
@@ -196,10 +218,10 @@ class Certifier {
     }
   }
 
-  const Method& method(const std::string& name) const {
-    return *std::find_if(methods_.begin(), methods_.end(),
-                         [&](const Method& m) { return m.name == name; });
+  static const Method& named(const std::vector<Method>& ms, const std::string& name) {
+    return *std::find_if(ms.begin(), ms.end(), [&](const Method& m) { return m.name == name; });
   }
+  const Method& method(const std::string& name) const { return named(methods_, name); }
 
   void check_boxes(const QueryRecord& q, const std::vector<Vec3>& pts, CertifyTally& t) const {
     for (std::size_t i = 0; i < boxes_.size(); ++i) {
@@ -253,6 +275,7 @@ class Certifier {
 
   Certificate& c_;
   const std::vector<Method> methods_ = promised_methods();
+  const std::vector<Method> timed_ = time_promised_methods();
   const std::vector<BoxMethod> boxes_ = all_box_methods();
   const MetamorphicCertifier metamorphic_;
   CertifyTally zero_;   // every row, every count 0

@@ -1,8 +1,10 @@
 #include "fdh/check/checker.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
+#include "fdh/exact/ccd.hpp"
 #include "fdh/exact/kdop.hpp"
 
 namespace fdh::verify {
@@ -118,6 +120,117 @@ std::vector<std::pair<int, int>> culled_pairs(std::vector<std::pair<int, int>> f
 std::string describe(const Method& m, const Verdicts& v) {
   const auto word = [](bool hit) { return hit ? "hit" : "no"; };
   return m.name + " says " + word(v.said) + ", the exact twin says " + word(v.twin);
+}
+
+TimeTwin time_twin(const Query& q) {
+  exact::CcdOptions o;
+  o.time_bits = 52;
+  const exact::CcdContact c = exact::ccd(q, o);
+  TimeTwin t;
+  t.hit = c.hit;
+  if (c.hit) t.t_star = c.time_lo_down + (c.time_hi_up - c.time_lo_down) / 2;
+  return t;
+}
+
+bool keeps_time_promise(TimePromise promise, const TimeCheck& c) {
+  switch (promise) {
+    case TimePromise::Enclosure:
+      return !c.garbage && !c.verdict_error && !c.late && c.enclosed && !c.too_wide;
+    case TimePromise::NeverLate:
+      return !c.garbage && !c.late;
+    case TimePromise::None:
+      return true;
+  }
+  return false;
+}
+
+TimeCheck check_time_given(const Method& m, const Query& q, double width, const Toi& said,
+                           const TimeTwin& twin) {
+  TimeCheck c;
+  c.said = said, c.twin = twin, c.width = width;
+  c.verdict_error = said.hit != twin.hit;
+  if (said.hit) {
+    // Written so that NaN is garbage too.
+    c.garbage = !(0 <= said.t_lo && said.t_lo <= said.t_hi && said.t_hi <= 1);
+    c.too_wide = !c.garbage && said.t_hi - said.t_lo > width;
+  }
+  if (twin.hit && !said.hit) c.late = true;  // a missed contact: the step passes through
+  if (twin.hit && said.hit && !c.garbage) {
+    const int lo = exact::compare_with_toi(q, said.t_lo);
+    c.late = lo > 0;
+    c.enclosed = lo <= 0 && exact::compare_with_toi(q, said.t_hi) >= 0;
+    c.zero = said.t_lo == 0 && lo < 0;
+    c.early = c.late ? 0 : std::max(0.0, twin.t_star - said.t_lo);
+  }
+  c.kept = keeps_time_promise(m.time_promise, c);
+  return c;
+}
+
+TimeCheck check_time(const Method& m, const Query& q, double width, const TimeTwin& twin) {
+  return check_time_given(m, q, width, m.time_of_impact(q, width), twin);
+}
+
+TimeCheck check_time(const Method& m, const Query& q, double width) {
+  return check_time(m, q, width, time_twin(q));
+}
+
+void TimeTally::add(const TimeCheck& c, std::size_t index, std::size_t keep) {
+  ++checked;
+  contacts += c.twin.hit;
+  verdict_errors += c.verdict_error, late += c.late, zero += c.zero;
+  not_enclosed += !c.enclosed, too_wide += c.too_wide, garbage += c.garbage;
+  if (c.twin.hit && c.said.hit && !c.late && !c.garbage) early.push_back(c.early);
+  if (c.kept) return;
+  ++broken;
+  if (first_broken.size() < keep) first_broken.push_back(index);
+}
+
+void TimeTally::merge(const TimeTally& o, std::size_t offset) {
+  checked += o.checked, contacts += o.contacts, verdict_errors += o.verdict_errors;
+  late += o.late, zero += o.zero, not_enclosed += o.not_enclosed, too_wide += o.too_wide;
+  garbage += o.garbage, broken += o.broken;
+  early.insert(early.end(), o.early.begin(), o.early.end());
+  for (const std::size_t i : o.first_broken)
+    if (first_broken.size() < 16) first_broken.push_back(offset + i);
+}
+
+double TimeTally::early_max() const {
+  return early.empty() ? 0 : *std::max_element(early.begin(), early.end());
+}
+
+double TimeTally::early_median() const {
+  if (early.empty()) return 0;
+  std::vector<double> e = early;
+  const auto mid = e.begin() + std::ptrdiff_t((e.size() - 1) / 2);
+  std::nth_element(e.begin(), mid, e.end());
+  return *mid;
+}
+
+namespace {
+
+std::string number(double v) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
+}
+
+}  // namespace
+
+std::string describe(const Method& m, const TimeCheck& c) {
+  const std::string enclosure = "[" + number(c.said.t_lo) + ", " + number(c.said.t_hi) + "]";
+  const std::string t_star = "t* ~ " + number(c.twin.t_star);
+  if (c.garbage) return m.name + "'s TOI " + enclosure + " is not an interval of [0, 1]";
+  if (c.late && !c.said.hit)
+    return m.name + " says no contact, the exact twin finds one at " + t_star;
+  if (c.late) return m.name + "'s TOI is late: t_lo = " + number(c.said.t_lo) + " > " + t_star;
+  if (c.verdict_error)
+    return m.name + " says contact at " + enclosure + ", the exact twin says none";
+  if (!c.enclosed) return m.name + "'s enclosure " + enclosure + " misses " + t_star;
+  if (c.too_wide) return m.name + "'s enclosure " + enclosure + " is wider than " + number(c.width);
+  if (c.zero) return m.name + "'s TOI is 0, " + t_star;
+  if (c.early > 0)
+    return m.name + "'s TOI is early by " + number(c.early) + " of the step, " + t_star;
+  return "";
 }
 
 }  // namespace fdh::verify

@@ -19,9 +19,16 @@ std::vector<char> run_and_time(const Method& m, const std::vector<Query>& qs,
   std::vector<std::size_t> mine;
   for (std::size_t i = 0; i < qs.size(); ++i)
     if (m.applies_to(qs[i])) mine.push_back(i);
-  const auto pass = [&] {
+  const double seconds = seconds_per_pass([&] {
     for (const std::size_t i : mine) verdict[i] = m.hit(qs[i]);
-  };
+  });
+  ns_per_query = mine.empty() ? 0 : seconds * 1e9 / double(mine.size());
+  return verdict;
+}
+
+}  // namespace
+
+double seconds_per_pass(const std::function<void()>& pass) {
   const auto seconds = [](Clock::time_point a) {
     return std::chrono::duration<double>(Clock::now() - a).count();
   };
@@ -36,11 +43,8 @@ std::vector<char> run_and_time(const Method& m, const std::vector<Query>& qs,
     for (long p = 0; p < passes; ++p) pass();
     elapsed = seconds(start);
   }
-  ns_per_query = mine.empty() ? 0 : elapsed * 1e9 / (double(passes) * double(mine.size()));
-  return verdict;
+  return elapsed / double(passes);
 }
-
-}  // namespace
 
 const char* truth_source_name(TruthSource s) {
   switch (s) {

@@ -5,6 +5,7 @@
 
 #include "fdh/ccd/float_cubic.hpp"
 #include "fdh/ccd/robust.hpp"
+#include "fdh/ccd/toi.hpp"
 #include "fdh/exact/ccd.hpp"
 #include "fdh/exact/point_triangle.hpp"
 #include "fdh/kdop.hpp"
@@ -26,6 +27,10 @@ const char* to_string(Decision d) {
       return "kdop-build";
     case Decision::KdopOverlap:
       return "kdop-overlap";
+    case Decision::VertexFaceToi:
+      return "vertex-face-toi";
+    case Decision::EdgeEdgeToi:
+      return "edge-edge-toi";
   }
   return "?";
 }
@@ -40,6 +45,30 @@ const char* to_string(Promise p) {
       return "none";
   }
   return "?";
+}
+
+const char* to_string(TimePromise p) {
+  switch (p) {
+    case TimePromise::Enclosure:
+      return "exact-enclosure";
+    case TimePromise::NeverLate:
+      return "never-late";
+    case TimePromise::None:
+      return "none";
+  }
+  return "?";
+}
+
+Decision toi_decision_of(const Query& q) {
+  return q.kind == QueryKind::EdgeEdge ? Decision::EdgeEdgeToi : Decision::VertexFaceToi;
+}
+
+std::size_t toi_index(Decision d) {
+  return d == Decision::EdgeEdgeToi ? 1 : 0;
+}
+
+Toi twin_toi(const Query& q, double width) {
+  return exact::ccd_toi(q, 0, 1, width);
 }
 
 Decision decision_of(const Query& q) {
@@ -86,6 +115,14 @@ bool robust_moving(const Query& q) {
   return robust_ccd(q, &exact::ccd_hit);
 }
 
+Toi robust_toi(const Query& q, double width) {
+  return robust_ccd_toi(q, width, &exact::ccd_toi);
+}
+
+Toi float_cubic_time(const Query& q, double) {
+  return float_cubic_toi(q);
+}
+
 Filtered robust_static_filter(const Query& q) {
   return robust_point_triangle_filter(q.b0(), q.b1(), q.d(), q.e(), q.f());
 }
@@ -108,15 +145,20 @@ std::vector<Method> built_in_methods(int gate_k) {
                           "sequences; the exact twin of every query decision",
                           Promise::Exact, &exact::point_triangle_hit, &exact::ccd_hit);
   twin.is_twin = true;
+  twin.toi = {&twin_toi, &twin_toi};
+  twin.time_promise = TimePromise::Enclosure;
   Method robust = all_kinds("robust", "floating-point filters with error bounds, exact fallback",
                             Promise::Exact, &robust_static, &robust_moving);
   robust.filter = {&robust_static_filter, &robust_ccd_filter, &robust_ccd_filter};
-  const Method float_cubic{"float-cubic",
-                           "Provot/Bridson: float cubic roots, then inside tests",
-                           Promise::None,
-                           // A CCD method: a static query is a moving one whose triangle stays.
-                           {&fdh::float_cubic, &fdh::float_cubic, &fdh::float_cubic},
-                           {}};
+  robust.toi = {&robust_toi, &robust_toi};
+  robust.time_promise = TimePromise::Enclosure;
+  Method float_cubic{"float-cubic",
+                     "Provot/Bridson: float cubic roots, then inside tests",
+                     Promise::None,
+                     // A CCD method: a static query is a moving one whose triangle stays.
+                     {&fdh::float_cubic, &fdh::float_cubic, &fdh::float_cubic},
+                     {}};
+  float_cubic.toi = {&float_cubic_time, &float_cubic_time};  // promises nothing: measured
   return {
       twin,
       robust,
@@ -195,6 +237,20 @@ std::vector<Method> promised_methods(int gate_k) {
   std::vector<Method> out;
   for (Method& m : all_methods(gate_k))
     if (m.promise != Promise::None && !m.is_twin) out.push_back(std::move(m));
+  return out;
+}
+
+std::vector<Method> time_promised_methods() {
+  std::vector<Method> out;
+  for (Method& m : toi_methods())
+    if (m.time_promise != TimePromise::None && !m.is_twin) out.push_back(std::move(m));
+  return out;
+}
+
+std::vector<Method> toi_methods() {
+  std::vector<Method> out;
+  for (Method& m : all_methods())
+    if (m.toi[0] || m.toi[1]) out.push_back(std::move(m));
   return out;
 }
 

@@ -14,6 +14,7 @@
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/run/classification_output.hpp"
 #include "fdh/run/classify_files.hpp"
+#include "fdh/run/toi_report.hpp"
 #include "plugin_option.hpp"
 
 namespace fdh::verify {
@@ -39,7 +40,16 @@ const char* const kClassifyFooter =
    "methods": {"exact": {"tp": .., "tn": .., "fp": .., "fn": .., "na": ..,
                          "ns_per_query": ..}, ...},
    "gate": K, "files": [{"file": F, <the same counts>}]}
-with null counts where a method applies to nothing. With --time-ratio BASE it
+with null counts where a method applies to nothing. With --toi it also holds
+  "toi": {"width": W, "methods": {"robust": {"promise": "exact-enclosure",
+          "checked": .., "contacts": .., "late": .., "zero": .., "verdict_errors": ..,
+          "not_enclosed": .., "too_wide": .., "broken": .., "early_max": ..,
+          "early_median": .., "ns_per_query": .., "na": ..}, ...},
+          "files": [{"file": F, "methods": {...}}]}
+for the methods that give a time (exact, robust, float-cubic, plug-ins of ABI
+version 2): late counts a contact missed or a t_lo after the exact earliest
+contact t*; zero a t_lo of 0 where t* > 0; early is t* - t_lo in step units.
+With --time-ratio BASE it
 also holds
   "time_ratio": {"to": BASE, "limit": R, "queries": N,
                  "mean_ns": {"robust": .., "exact": ..}, "methods": {"robust":
@@ -63,6 +73,8 @@ struct ClassifyOptions {
   std::string time_ratio;  // a base method: per-query time ratios to it
   double ratio_limit = 1.1;
   int rounds = 7;
+  bool toi = false;  // also the times of impact
+  double width = kDefaultToiWidth;
 };
 
 std::string where_and_id(const QueryRecord& q) {
@@ -95,6 +107,27 @@ std::size_t report_disagreements(const std::vector<QueryRecord>& queries,
       err << "fdhcert: " << m.name << " disagrees with " << twin << " at "
           << where_and_id(queries[i]) << "\n";
     }
+  }
+  return found;
+}
+
+// Prints every time of impact that breaks its method's TimePromise (checker.hpp), with the
+// checker's words. Returns how many.
+std::size_t report_broken_times(const std::vector<QueryRecord>& queries,
+                                const std::vector<Method>& methods, const ToiClassification& toi,
+                                std::ostream& err) {
+  std::size_t found = 0;
+  for (const ToiResult& r : toi.methods) {
+    if (r.tally.broken == 0) continue;
+    found += std::size_t(r.tally.broken);
+    for (const Method& m : methods)
+      if (m.name == r.name)
+        for (const std::size_t i : r.tally.first_broken)
+          err << "fdhcert: " << r.name << " breaks its " << to_string(r.promise) << " time at "
+              << where_and_id(queries[i]) << ": "
+              << describe(m,
+                          check_time_given(m, queries[i].query, toi.width, r.said[i], toi.twin[i]))
+              << "\n";
   }
   return found;
 }
@@ -147,15 +180,21 @@ int run_classify(const ClassifyOptions& o, const Io& io) {
   const Classification& c = in.total;
 
   const ReportContext ctx{o.gate};
-  if (!o.per_query.empty()) write_file_atomically(o.per_query, per_query_csv(in.all, c));
+  ToiClassifiedFiles toi;
+  if (o.toi) toi = classify_toi_files(in, methods, o.width);
+  if (!o.per_query.empty())
+    write_file_atomically(o.per_query, per_query_csv(in.all, c, o.toi ? &toi.total : nullptr));
   nlohmann::ordered_json j;
   if (o.json)
     j = classification_json(in.files, c, ctx);
   else
     print_table(io.out, in.files, c, ctx);
+  if (o.toi && o.json) j["toi"] = toi_json(toi.files, toi.total);
+  if (o.toi && !o.json) io.out << "\n", print_toi_table(io.out, toi.files, toi.total);
   if (!o.time_ratio.empty()) j["time_ratio"] = print_time_ratios(o, in.all, methods, io.out);
   if (o.json) print_json(io.out, j);
-  const std::size_t disagreements = report_disagreements(in.all, methods, c, io.err);
+  std::size_t disagreements = report_disagreements(in.all, methods, c, io.err);
+  if (o.toi) disagreements += report_broken_times(in.all, methods, toi.total, io.err);
   return o.check && disagreements > 0 ? 1 : 0;
 }
 
@@ -204,9 +243,20 @@ Command add_classify(CLI::App& app) {
                     1e3);
   add_number_option(*cmd, "--rounds", o->rounds,
                     "--time-ratio's timed batches per query and method (default 7)", "N", 1, 100);
+  cmd->add_flag("--toi", o->toi,
+                "also the time of impact of every method that gives one:\n"
+                "late, zero and how early against the exact earliest\n"
+                "contact (a second table, or \"toi\" in --json); with\n"
+                "--per-query, each method's enclosure t_lo, t_hi too");
+  cmd->add_option("--width", o->width,
+                  "the width of enclosure asked of each time of impact\n"
+                  "(default 2^-30 of the step)")
+      ->type_name("W")
+      ->check(CLI::Range(0x1p-52, 1.0));
   cmd->add_flag("--check", o->check,
                 "exit 1 if exact disagrees with a file's truth, or a method\n"
-                "that promises exact answers (robust) with exact, on any query");
+                "that promises exact answers (robust) with exact, on any query\n"
+                "(with --toi: or a time breaks its promise)");
   return {cmd, [o](const Io& io) { return run_classify(*o, io); }};
 }
 

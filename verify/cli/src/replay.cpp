@@ -1,10 +1,12 @@
 // fdhcert replay: re-run stored cases; exact must still give each stored truth.
+#include <algorithm>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "fdh/check/checker.hpp"
 #include "fdh/check/classify.hpp"
+#include "fdh/check/classify_toi.hpp"
 #include "fdh/io/case_files.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
@@ -24,15 +26,22 @@ fuzz --out folder). Every case must carry a truth.
   exact must still give each case's stored truth: if it does not, replay names
   the case and exits with status 1.
   For every other method it reports which cases it still gets wrong (a case
-  it makes no decision on is not counted).)";
+  it makes no decision on is not counted).
+  With --toi, also the cases where a method's time of impact is late (a
+  contact missed, or t_lo after the exact earliest contact) or 0 where the
+  contact is later.)";
 
 const char* const kReplayFooter =
     R"(--json prints {"cases": N, "exact_mismatches": [...],
-               "methods": {"<name>": {"failing": K, "cases": [...]}}})";
+               "methods": {"<name>": {"failing": K, "cases": [...]}}}
+and with --toi also "toi": {"<name>": {"late": [...], "zero": [...],
+                                       "broken": [...]}} (broken: the cases
+where the time breaks the method's time promise).)";
 
 struct ReplayOptions {
   std::vector<std::string> paths, methods;
-  bool json = false;
+  bool json = false, toi = false;
+  double width = kDefaultToiWidth;
 };
 
 // The stored cases under the paths, of every kind: static and moving vertex-face, edge-edge.
@@ -53,7 +62,31 @@ std::vector<QueryRecord> read_cases(const std::vector<std::string>& paths) {
 struct Replay {
   std::vector<std::string> twin_mismatches;
   std::vector<std::pair<std::string, std::vector<std::string>>> failing;
+  struct Times {
+    std::string method;
+    std::vector<std::string> late, zero, broken;
+  };
+  std::vector<Times> times;  // with --toi: per method that gives a time
 };
+
+// The cases where each method's time is late, 0 too early, or breaks its promise (checker.hpp).
+void replay_times(const std::vector<QueryRecord>& cases, const std::vector<Query>& queries,
+                  const std::vector<Method>& methods, double width, Replay& r) {
+  const ToiClassification toi = classify_toi(queries, methods, width);
+  for (const ToiResult& m : toi.methods) {
+    Replay::Times t{m.name, {}, {}, {}};
+    const Method& method = *std::find_if(methods.begin(), methods.end(),
+                                         [&](const Method& x) { return x.name == m.name; });
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      if (!m.applies[i]) continue;
+      const TimeCheck c = check_time_given(method, queries[i], width, m.said[i], toi.twin[i]);
+      if (c.late) t.late.push_back(where(cases[i]));
+      if (c.zero) t.zero.push_back(where(cases[i]));
+      if (!c.kept) t.broken.push_back(where(cases[i]));
+    }
+    r.times.push_back(std::move(t));
+  }
+}
 
 Replay replay(const std::vector<QueryRecord>& cases, const Classification& c) {
   Replay r;
@@ -75,8 +108,11 @@ void print_replay(const Replay& r, std::size_t cases, bool json, std::ostream& o
     nlohmann::ordered_json methods = nlohmann::ordered_json::object();
     for (const auto& [name, list] : r.failing)
       methods[name] = {{"failing", list.size()}, {"cases", list}};
-    print_json(out,
-               {{"cases", cases}, {"exact_mismatches", r.twin_mismatches}, {"methods", methods}});
+    nlohmann::ordered_json j = {
+        {"cases", cases}, {"exact_mismatches", r.twin_mismatches}, {"methods", methods}};
+    for (const Replay::Times& t : r.times)
+      j["toi"][t.method] = {{"late", t.late}, {"zero", t.zero}, {"broken", t.broken}};
+    print_json(out, j);
     return;
   }
   out << "replayed " << cases << " cases; exact "
@@ -88,6 +124,11 @@ void print_replay(const Replay& r, std::size_t cases, bool json, std::ostream& o
     out << "  " << name << ": " << list.size() << " failing\n";
     for (const std::string& w : list) out << "    " << w << "\n";
   }
+  for (const Replay::Times& t : r.times) {
+    out << "  " << t.method << " time of impact: " << t.late.size() << " late, " << t.zero.size()
+        << " zero, " << t.broken.size() << " breaking its promise\n";
+    for (const std::string& w : t.late) out << "    late: " << w << "\n";
+  }
 }
 
 int run_replay(const ReplayOptions& o, const Io& io) {
@@ -95,7 +136,8 @@ int run_replay(const ReplayOptions& o, const Io& io) {
   const std::vector<QueryRecord> cases = read_cases(o.paths);
   const std::vector<Query> queries = queries_of(cases);
   const RecordScope asking(cases, queries);  // a plug-in's crash names FILE:LINE
-  const Replay r = replay(cases, classify(queries, truths_of(cases), methods));
+  Replay r = replay(cases, classify(queries, truths_of(cases), methods));
+  if (o.toi) replay_times(cases, queries, methods, o.width, r);
   print_replay(r, cases.size(), o.json, io.out);
   for (const std::string& w : r.twin_mismatches)
     io.err << "fdhcert: exact no longer gives the stored truth at " << w << "\n";
@@ -111,6 +153,12 @@ Command add_replay(CLI::App& app) {
   add_methods_option(*cmd, o->methods, "comma-separated methods (default: all)");
   add_plugin_option(*cmd);
   cmd->add_flag("--json", o->json, "print one JSON object (below)");
+  cmd->add_flag("--toi", o->toi,
+                "also re-check every method's time of impact: the cases\n"
+                "where it is late, 0, or breaks its time promise");
+  cmd->add_option("--width", o->width, "the enclosure width asked of each time (default 2^-30)")
+      ->type_name("W")
+      ->check(CLI::Range(0x1p-52, 1.0));
   return {cmd, [o](const Io& io) { return run_replay(*o, io); }};
 }
 

@@ -1,5 +1,6 @@
 /* An fdhcert plug-in (docs/plugins.md): "no contact" only when an axis parts the boxes of a
-   query's two sides, which needs no rounding: a conservative method, in plain C. */
+   query's two sides, which needs no rounding: a conservative method, in plain C. Its time of
+   impact is the start of the step wherever the boxes meet: never late, however early. */
 #include <fdh/plugin.h>
 #include <math.h>
 
@@ -23,13 +24,24 @@ static int vertex_face(const double x[8][3]) {
 static int edge_edge(const double x[8][3]) {
   return boxes_meet(x, 0x33);
 }
+/* ABI version 2: the time of impact, [0, 1] for any contact the boxes allow. */
+static int vertex_face_toi(const double x[8][3], double width, double* t_lo, double* t_hi) {
+  (void)width;
+  *t_lo = 0, *t_hi = 1;
+  return vertex_face(x);
+}
+static int edge_edge_toi(const double x[8][3], double width, double* t_lo, double* t_hi) {
+  (void)width;
+  *t_lo = 0, *t_hi = 1;
+  return edge_edge(x);
+}
 static void aabb(int k, const double (*p)[3], size_t n, double* lo, double* hi) {
   for (int c = 0; c < 3 && k == 6; ++c) {
     lo[c] = hi[c] = p[0][c];
     for (size_t i = 1; i < n; ++i) grow(&lo[c], &hi[c], p[i][c]);
   }
 }
-const struct fdh_plugin* fdh_plugin_v1(void) {
+const struct fdh_plugin* fdh_plugin_v2(void) {
   static const struct fdh_plugin p = {.abi_version = FDH_PLUGIN_ABI_VERSION,
                                       .name = "aabb",
                                       .summary = "axis-aligned boxes",
@@ -37,6 +49,9 @@ const struct fdh_plugin* fdh_plugin_v1(void) {
                                       .vertex_face_ccd = vertex_face,
                                       .edge_edge_ccd = edge_edge,
                                       .kdop_ks = FDH_KDOP_6,
-                                      .kdop = aabb};
+                                      .kdop = aabb,
+                                      .time_promise = FDH_TIME_NEVER_LATE,
+                                      .vertex_face_toi = vertex_face_toi,
+                                      .edge_edge_toi = edge_edge_toi};
   return &p;
 }

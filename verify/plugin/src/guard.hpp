@@ -15,7 +15,7 @@ namespace fdh::verify::plugin {
 // One call into a plug-in: what a message about it names.
 struct CallSite {
   const char* plugin = "";       // the plug-in's name
-  const char* function = "";     // "point_triangle", "vertex_face_ccd", "edge_edge_ccd", "kdop"
+  const char* function = "";     // "point_triangle", "vertex_face_ccd", ..., "kdop"
   const Query* query = nullptr;  // the query asked, for the query functions (its record:
                                  // fdh/io/record_scope.hpp)
   int k = 0;                     // the k-DOP's k and

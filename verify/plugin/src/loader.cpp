@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -44,33 +45,66 @@ bool is_name(const char* s) {
   return n > 0;
 }
 
+// The entry point: fdh_plugin_v2, else fdh_plugin_v1, and its name.
+std::pair<const fdh_plugin* (*)(), const char*> entry_point(void* lib, const std::string& path) {
+  for (const char* name : {"fdh_plugin_v2", "fdh_plugin_v1"})
+    if (void* f = ::dlsym(lib, name)) return {reinterpret_cast<const fdh_plugin* (*)()>(f), name};
+  refuse(path, "exports neither fdh_plugin_v2 nor fdh_plugin_v1 (an fdhcert plug-in must)");
+}
+
+// The struct as far as its version has fields: a version-1 struct ends at kdop, so nothing
+// beyond is read (the version-2 fields stay zero: no time of impact).
+fdh_plugin copy_of_version(const fdh_plugin* p, const std::string& path) {
+  fdh_plugin api{};
+  if (p->abi_version == FDH_PLUGIN_ABI_VERSION)
+    api = *p;
+  else if (p->abi_version == FDH_PLUGIN_ABI_VERSION_1)
+    std::memcpy(static_cast<void*>(&api), p, offsetof(fdh_plugin, time_promise));
+  else
+    refuse(path, "ABI version " + std::to_string(p->abi_version) + ", but this fdhcert takes " +
+                     std::to_string(FDH_PLUGIN_ABI_VERSION_1) + " or " +
+                     std::to_string(FDH_PLUGIN_ABI_VERSION));
+  return api;
+}
+
 // The struct the entry point returns, checked field by field.
 fdh_plugin entry_struct(const std::string& path) {
   // A file path, never a name for dlopen to search for.
   const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
   void* lib = ::dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!lib) refuse(path, std::string("cannot load: ") + ::dlerror());
-  const auto entry = reinterpret_cast<const fdh_plugin* (*)()>(::dlsym(lib, "fdh_plugin_v1"));
-  if (!entry) refuse(path, "exports no fdh_plugin_v1 (an fdhcert plug-in must)");
-  const CallSite site{path.c_str(), "fdh_plugin_v1"};
-  const fdh_plugin* p = nullptr;
+  const auto [entry, entry_name] = entry_point(lib, path);
+  const CallSite site{path.c_str(), entry_name};
+  const fdh_plugin* returned = nullptr;
   {
     const InCall in(site);
-    p = entry();
+    returned = entry();
   }
-  if (!p) refuse(path, "fdh_plugin_v1 returned NULL");
-  if (p->abi_version != FDH_PLUGIN_ABI_VERSION)
-    refuse(path, "ABI version " + std::to_string(p->abi_version) + ", but this fdhcert takes " +
-                     std::to_string(FDH_PLUGIN_ABI_VERSION));
+  if (!returned) refuse(path, std::string(entry_name) + " returned NULL");
+  const fdh_plugin a = copy_of_version(returned, path);
+  const fdh_plugin* p = &a;
   if (!is_name(p->name))
     refuse(path, "its name is not a letter or digit, then up to 39 of a-z A-Z 0-9 . _ + -");
   if (p->promise < FDH_PROMISE_NONE || p->promise > FDH_PROMISE_EXACT)
     refuse(path, "promise " + std::to_string(p->promise) + " is none of 0, 1, 2");
+  if (p->time_promise < FDH_TIME_NONE || p->time_promise > FDH_TIME_EXACT_ENCLOSURE)
+    refuse(path, "time_promise " + std::to_string(p->time_promise) + " is none of 0, 1, 2");
   if ((p->kdop_ks & ~0xfu) || (p->kdop_ks != 0) != (p->kdop != nullptr))
     refuse(path, "kdop_ks must name the k of a kdop builder (FDH_KDOP_* bits), and only then");
-  if (!p->point_triangle && !p->vertex_face_ccd && !p->edge_edge_ccd && !p->kdop)
+  if (!p->point_triangle && !p->vertex_face_ccd && !p->edge_edge_ccd && !p->kdop &&
+      !p->vertex_face_toi && !p->edge_edge_toi)
     refuse(path, "it has no function");
-  return *p;
+  return a;
+}
+
+// `v` in the fewest digits that read back as v.
+std::string shortest(double v) {
+  char text[32];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    if (std::strtod(text, nullptr) == v || std::isnan(v)) break;
+  }
+  return text;
 }
 
 // A query function as a registry test: the 8 points in, 0 or 1 out, anything else garbage.
@@ -88,6 +122,31 @@ QueryTest query_test(const LoadedPtr& p, fdh_query_fn f, const char* function) {
       throw PluginFailure("plug-in " + p->name + " returned " + std::to_string(r) +
                           " (garbage: not 0 or 1) " + plugin::where(site));
     return r == 1;
+  };
+}
+
+// A TOI function as a registry time: 0 or 1 out, and with 1 an interval of [0, 1] in order;
+// anything else garbage.
+QueryToi query_toi(const LoadedPtr& p, fdh_toi_fn f, const char* function) {
+  return [p, f, function](const Query& q, double width) {
+    double x[8][3];
+    for (int i = 0; i < 8; ++i) x[i][0] = q.x[i].x, x[i][1] = q.x[i].y, x[i][2] = q.x[i].z;
+    const CallSite site{p->name.c_str(), function, &q};
+    double lo = 1, hi = 1;
+    int r;
+    {
+      const InCall in(site);
+      r = f(x, width, &lo, &hi);
+    }
+    if (r != 0 && r != 1)
+      throw PluginFailure("plug-in " + p->name + " returned " + std::to_string(r) +
+                          " (garbage: not 0 or 1) " + plugin::where(site));
+    if (r == 0) return Toi{};
+    if (!(0 <= lo && lo <= hi && hi <= 1))  // NaN fails too
+      throw PluginFailure("plug-in " + p->name + " returned a contact at [" + shortest(lo) + ", " +
+                          shortest(hi) + "] (garbage: not 0 <= t_lo <= t_hi <= 1) " +
+                          plugin::where(site));
+    return Toi{true, lo, hi};
   };
 }
 
@@ -110,17 +169,14 @@ Method query_method(const LoadedPtr& p) {
         query_test(p, a.vertex_face_ccd, "vertex_face_ccd");
   if (a.edge_edge_ccd)
     m.test[std::size_t(Decision::EdgeEdgeCcd)] = query_test(p, a.edge_edge_ccd, "edge_edge_ccd");
+  if (a.vertex_face_toi)
+    m.toi[toi_index(Decision::VertexFaceToi)] = query_toi(p, a.vertex_face_toi, "vertex_face_toi");
+  if (a.edge_edge_toi)
+    m.toi[toi_index(Decision::EdgeEdgeToi)] = query_toi(p, a.edge_edge_toi, "edge_edge_toi");
+  m.time_promise = a.time_promise == FDH_TIME_EXACT_ENCLOSURE ? TimePromise::Enclosure
+                   : a.time_promise == FDH_TIME_NEVER_LATE    ? TimePromise::NeverLate
+                                                              : TimePromise::None;
   return m;
-}
-
-// `v` in the fewest digits that read back as v.
-std::string shortest(double v) {
-  char text[32];
-  for (int digits = 15; digits <= 17; ++digits) {
-    std::snprintf(text, sizeof text, "%.*g", digits, v);
-    if (std::strtod(text, nullptr) == v || std::isnan(v)) break;
-  }
-  return text;
 }
 
 // The builder for one k; garbage is a slab with NaN or lo > hi.
@@ -166,7 +222,8 @@ void load_plugin(const std::string& path) {
   loaded->name = loaded->api.name;
   const LoadedPtr p = loaded;
   std::vector<Method> methods;
-  if (p->api.point_triangle || p->api.vertex_face_ccd || p->api.edge_edge_ccd)
+  if (p->api.point_triangle || p->api.vertex_face_ccd || p->api.edge_edge_ccd ||
+      p->api.vertex_face_toi || p->api.edge_edge_toi)
     methods.push_back(query_method(p));
   std::vector<BoxMethod> boxes;
   for (int i = 0; i < 4; ++i)

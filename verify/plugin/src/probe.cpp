@@ -54,6 +54,7 @@ void run_probes(const std::vector<Method>& methods, const std::vector<BoxMethod>
     for (const QueryRecord& r : probes) {
       const RecordScope asking(r);  // a crash names the probe
       if (m.applies_to(r.query)) m.hit(r.query);
+      if (m.gives_toi(r.query)) m.time_of_impact(r.query, kDefaultToiWidth);
     }
   double lo[13], hi[13];
   for (const BoxMethod& b : boxes)

@@ -9,6 +9,7 @@
 
 #include "fdh/check/contact.hpp"
 #include "fdh/check/registry.hpp"
+#include "fdh/run/toi_report.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -116,20 +117,21 @@ Json classification_json(const std::vector<FileClassification>& files, const Cla
   return j;
 }
 
-std::string per_query_csv(const std::vector<QueryRecord>& queries, const Classification& c) {
+std::string per_query_csv(const std::vector<QueryRecord>& queries, const Classification& c,
+                          const ToiClassification* toi) {
   std::set<std::string> files;
   for (const QueryRecord& q : queries) files.insert(q.file);
   const bool prefix = files.size() > 1;
   std::ostringstream os;
   os << "id,truth";
   for (const MethodResult& m : c.methods) os << ',' << m.name;
-  os << ",contact,time\n";
+  os << ",contact,time" << (toi ? toi_csv_header(*toi) : "") << "\n";
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const QueryRecord& q = queries[i];
     os << csv_field(prefix ? q.file + ":" + q.id : q.id) << ',' << int(c.reference[i]);
     for (const MethodResult& m : c.methods) os << ',' << verdict_field(m.verdict[i]);
     const auto [contact, time] = contact_columns(q.query);
-    os << ',' << contact << ',' << time << '\n';
+    os << ',' << contact << ',' << time << (toi ? toi_csv_fields(*toi, i) : "") << '\n';
   }
   return os.str();
 }

@@ -31,4 +31,21 @@ ClassifiedFiles classify_files(const std::vector<std::string>& files,
   return out;
 }
 
+ToiClassifiedFiles classify_toi_files(const ClassifiedFiles& classified,
+                                      const std::vector<Method>& methods, double width) {
+  ToiClassifiedFiles out;
+  std::vector<ToiClassification> parts;
+  std::size_t begin = 0;
+  for (const FileClassification& f : classified.files) {
+    const auto first = classified.all.begin() + std::ptrdiff_t(begin);
+    const std::vector<Query> qs =
+        queries_of(std::vector<QueryRecord>(first, first + std::ptrdiff_t(f.c.queries)));
+    begin += f.c.queries;
+    parts.push_back(classify_toi(qs, methods, width));
+    out.files.emplace_back(f.file, parts.back());
+  }
+  out.total = join(parts);
+  return out;
+}
+
 }  // namespace fdh::verify

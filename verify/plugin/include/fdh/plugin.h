@@ -1,10 +1,12 @@
-/* fdh/plugin.h: the C interface of fdhcert plug-ins, ABI version 1 (docs/plugins.md).
+/* fdh/plugin.h: the C interface of fdhcert plug-ins, ABI version 2 (docs/plugins.md).
  *
  * A plug-in is a shared library that exports
  *
- *     const struct fdh_plugin* fdh_plugin_v1(void);
+ *     const struct fdh_plugin* fdh_plugin_v2(void);
  *
- * returning a struct that lives as long as the library. `fdhcert classify|fuzz|replay|certify
+ * returning a struct that lives as long as the library. A plug-in of ABI version 1 exports
+ * fdh_plugin_v1 instead, with abi_version 1 and the struct up to kdop: it still loads, unchanged,
+ * and gives no time of impact. `fdhcert classify|fuzz|replay|certify
  * --plugin lib.so` loads it and runs its functions like the built-in methods, against the
  * exact twin of each decision, under the promise it declares. Plain C: it compiles as C and
  * as C++. */
@@ -18,7 +20,10 @@ extern "C" {
 #endif
 
 /* The value of fdh_plugin.abi_version this header describes. */
-#define FDH_PLUGIN_ABI_VERSION 1
+#define FDH_PLUGIN_ABI_VERSION 2
+
+/* The value of abi_version of a plug-in of the first version (no time of impact). */
+#define FDH_PLUGIN_ABI_VERSION_1 1
 
 /* What fdhcert holds the query functions' answers to, against the exact answer. */
 enum fdh_promise {
@@ -46,6 +51,21 @@ typedef int (*fdh_query_fn)(const double x[8][3]);
  * with NaN, an infinity or lo > hi is garbage and ends the run. */
 typedef void (*fdh_kdop_fn)(int k, const double (*points)[3], size_t n, double* lo, double* hi);
 
+/* What fdhcert holds the time-of-impact functions' times to, against the exact earliest contact
+ * time t* (ABI version 2). A late time (t_lo > t*, or a contact missed) breaks both promises. */
+enum fdh_time_promise {
+  FDH_TIME_NONE = 0,           /* measured, not promised */
+  FDH_TIME_NEVER_LATE = 1,     /* no contact missed, and t_lo <= t* (early is allowed) */
+  FDH_TIME_EXACT_ENCLOSURE = 2 /* the exact verdict, t_lo <= t* <= t_hi, t_hi - t_lo <= width */
+};
+
+/* The time of impact of a query (the 8 points as for fdh_query_fn): return 1 for contact, with
+ * *t_lo <= *t_hi in [0, 1] enclosing the earliest contact time, asked no wider than `width`
+ * (0 < width <= 1; a plug-in may ignore it); return 0 for none (t_lo and t_hi unread). A solver
+ * advances to t_lo. Any other return value, or a contact with t_lo, t_hi not in order in
+ * [0, 1], is reported as garbage and ends the run. */
+typedef int (*fdh_toi_fn)(const double x[8][3], double width, double* t_lo, double* t_hi);
+
 /* Bits of fdh_plugin.kdop_ks: the k the builder takes. */
 #define FDH_KDOP_6 1u
 #define FDH_KDOP_14 2u
@@ -65,9 +85,15 @@ struct fdh_plugin {
   fdh_query_fn edge_edge_ccd;   /* two moving edges over t in [0, 1] */
   unsigned kdop_ks;             /* FDH_KDOP_* bits; 0 when kdop is NULL */
   fdh_kdop_fn kdop;
+  /* ABI version 2 only: a version-1 struct ends above, and fdhcert reads no further. */
+  int time_promise;           /* an fdh_time_promise, for the two TOI functions */
+  fdh_toi_fn vertex_face_toi; /* may be NULL: no time for vertex-face queries */
+  fdh_toi_fn edge_edge_toi;   /* may be NULL: no time for edge-edge queries */
 };
 
-/* The entry point every plug-in exports. */
+/* The entry point a plug-in exports: fdh_plugin_v2 (abi_version 2), or fdh_plugin_v1 for a
+ * plug-in of ABI version 1 (abi_version 1; fdhcert looks for v2 first). */
+const struct fdh_plugin* fdh_plugin_v2(void);
 const struct fdh_plugin* fdh_plugin_v1(void);
 
 #ifdef __cplusplus

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "fdh/check/checker.hpp"
 #include "fdh/check/registry.hpp"
 #include "fdh/os/progress.hpp"
 #include "fdh/peer_certify/peer_certify.hpp"
@@ -27,6 +28,7 @@ struct CertifyOptions {
   long scene_frames = -1;
   int scene_stride = -1;
   std::vector<std::string> extra_files;
+  double toi_width = kDefaultToiWidth;  // the enclosure width asked of the times of impact
   // Hears the work as it goes: the stage ("corpus", "generator families", "scenes", ...), how
   // much of it is done and of how much (0: unknown). May be empty.
   ProgressSink progress;
@@ -38,6 +40,15 @@ struct PromiseCheck {
   Decision decision = Decision::PointTriangle;
   Promise promise = Promise::Exact;
   long checked = 0, filter_decided = 0, violations = 0;
+};
+
+// One method's time of impact on one TOI decision, under its TimePromise, against the exact
+// earliest contact (check/checker.hpp check_time): late, zero, early, enclosure.
+struct TimePromiseCheck {
+  std::string method;
+  Decision decision = Decision::VertexFaceToi;
+  TimePromise promise = TimePromise::Enclosure;
+  TimeTally tally;  // tally.broken: the violations
 };
 
 // One k-DOP method (one k): its boxes contain the exact FDH; the tree built of its boxes culls
@@ -70,6 +81,7 @@ struct Certificate {
   // Narrow-phase queries recorded from the shipped scenes (<corpus>/scenes/*.scene).
   long scenes = 0, scene_queries = 0;
   std::vector<PromiseCheck> promises;         // every (method, query decision) with a promise
+  std::vector<TimePromiseCheck> times;        // every (method, TOI decision) with a promise
   std::vector<BoxCheck> boxes;                // every k-DOP method
   long truths = 0, truth_violations = 0;      // queries with a stored truth: the twin = the truth
   std::vector<MetamorphicCheck> metamorphic;  // every method of the registry

@@ -70,4 +70,56 @@ std::vector<std::pair<int, int>> culled_pairs(std::vector<std::pair<int, int>> f
 // "robust says hit, exact says no": the words of a broken check, for messages and case files.
 std::string describe(const Method& m, const Verdicts& v);
 
+// The exact earliest contact of a query, once for all the methods checked on it: the verdict
+// and t* rounded to a double (for how early a time is; late or not is decided exactly).
+struct TimeTwin {
+  bool hit = false;
+  double t_star = 1;  // t* to within 2^-52 (exact::ccd), 1 without a hit
+};
+TimeTwin time_twin(const Query& q);
+
+// What the checker found for one method's time of impact on one query (the TOI decisions).
+struct TimeCheck {
+  Toi said;
+  TimeTwin twin;
+  double width = kDefaultToiWidth;  // the width asked
+  bool verdict_error = false;       // said.hit differs from the exact verdict
+  bool late = false;      // a contact missed, or t_lo > t* (exactly): breaks either promise
+  bool enclosed = true;   // with both hits: t_lo <= t* <= t_hi, exactly
+  bool too_wide = false;  // with a hit said: t_hi - t_lo above the width asked
+  bool zero = false;      // t_lo == 0 said where 0 < t*
+  double early = 0;       // with both hits and not late: t* - t_lo, in step units (>= 0)
+  bool kept = true;       // the method's TimePromise is kept
+  bool garbage = false;   // not 0 <= t_lo <= t_hi <= 1 with a hit: breaks either promise
+};
+
+// Whether the findings of `c` keep `promise` (registry.hpp TimePromise).
+bool keeps_time_promise(TimePromise promise, const TimeCheck& c);
+
+// One method's time of impact, asked at `width`, against the exact twin; the twin's answer
+// given or computed. The method must give one for q's TOI decision (Method::gives_toi).
+TimeCheck check_time(const Method& m, const Query& q, double width, const TimeTwin& twin);
+TimeCheck check_time(const Method& m, const Query& q, double width);
+// A time the method already gave (classify's timed runs, a plug-in's saved answer).
+TimeCheck check_time_given(const Method& m, const Query& q, double width, const Toi& said,
+                           const TimeTwin& twin);
+
+// The counts of the TOI checks of one method, over many queries.
+struct TimeTally {
+  long checked = 0, contacts = 0;  // queries checked; those with an exact contact
+  long verdict_errors = 0, late = 0, zero = 0, not_enclosed = 0, too_wide = 0, garbage = 0;
+  long broken = 0;                        // checks that broke the method's TimePromise
+  std::vector<double> early;              // t* - t_lo of every contact found in time, step units
+  std::vector<std::size_t> first_broken;  // indices into the caller's sequence, at most `keep`
+
+  void add(const TimeCheck& c, std::size_t index, std::size_t keep = 16);
+  void merge(const TimeTally& other, std::size_t offset);  // other's indices shifted by offset
+  double early_max() const;                                // 0 without contacts
+  double early_median() const;                             // the lower median; 0 without contacts
+};
+
+// "float-cubic's TOI is late: t_lo = 0x1.8p-1 > t* = 0.74...": the words of a time check that
+// found something, for messages and case files ("" when it found nothing).
+std::string describe(const Method& m, const TimeCheck& c);
+
 }  // namespace fdh::verify

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +44,10 @@ struct Classification {
   std::vector<std::size_t> exact_vs_file;  // queries where exact disagrees with the file's truth
   std::size_t static_vf = 0, moving_vf = 0, edge_edge = 0;  // the queries by kind
 };
+
+// The seconds one call of `pass` takes: one call, then, if it took less than about 20 ms, the
+// mean of enough further calls (at most 1000) to fill that.
+double seconds_per_pass(const std::function<void()>& pass);
 
 // Any queries, with the file's truth per query (truth[i] for queries[i], nullopt where the file
 // gives none; an empty vector: none at all); a method that does not apply to a query

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "fdh/ccd/toi.hpp"
 #include "fdh/filtered.hpp"
 #include "fdh/kdop.hpp"
 #include "fdh/point_triangle/robust.hpp"
@@ -26,12 +27,21 @@ enum class Decision {
   EdgeEdgeCcd,    // two moving edges over the step
   KdopBuild,      // the k-DOP of a point set: must contain the exact FDH of the points
   KdopOverlap,    // do the k-DOPs of two point sets overlap: must not miss an exact overlap
+  VertexFaceToi,  // the time of impact of a moving point and triangle (fdh/ccd/toi.hpp)
+  EdgeEdgeToi,    // the time of impact of two moving edges
 };
 inline constexpr std::array<Decision, 3> kQueryDecisions = {
     Decision::PointTriangle, Decision::VertexFaceCcd, Decision::EdgeEdgeCcd};
 const char* to_string(Decision d);  // "point-triangle", "vertex-face-ccd", ...
+inline constexpr std::array<Decision, 2> kToiDecisions = {Decision::VertexFaceToi,
+                                                          Decision::EdgeEdgeToi};
 // The query decision a query asks for: PointTriangle when the triangle stands still.
 Decision decision_of(const Query& q);
+// The TOI decision of a query: VertexFaceToi for any vertex-face query (a still triangle is a
+// moving one that stays), EdgeEdgeToi for edge-edge.
+Decision toi_decision_of(const Query& q);
+// Its index in Method::toi: 0 for VertexFaceToi, 1 for EdgeEdgeToi.
+std::size_t toi_index(Decision d);
 
 // What the checker holds a method to, against the exact twin of its decision.
 enum class Promise {
@@ -41,8 +51,19 @@ enum class Promise {
 };
 const char* to_string(Promise p);
 
+// What the checker holds a method's time of impact to, against the exact earliest contact t*
+// (reference/ exact::compare_with_toi). A late time (t_lo > t*, or a contact missed) breaks both.
+enum class TimePromise {
+  Enclosure,  // the exact verdict, t_lo <= t* <= t_hi, and t_hi - t_lo <= the width asked
+  NeverLate,  // no contact missed, and t_lo <= t* (any hit where there is none is allowed)
+  None,       // measured, not promised (float-cubic)
+};
+const char* to_string(TimePromise p);  // "exact-enclosure", "never-late", "none"
+
 using QueryTest = std::function<bool(const Query&)>;
 using QueryFilter = std::function<Filtered(const Query&)>;
+// A time of impact with an enclosure no wider than `width` asked (a method may ignore it).
+using QueryToi = std::function<Toi(const Query&, double width)>;
 
 // A method of the query decisions: a row of `classify`.
 struct Method {
@@ -62,15 +83,26 @@ struct Method {
   // Its functions are called from the calling thread only, one call at a time: a plug-in's
   // (docs/plugins.md promises no more). The built-in methods are safe from any thread.
   bool one_thread = false;
+  // Its time of impact per TOI decision (indexed by toi_index), empty where it gives none, and
+  // what that time promises.
+  std::array<QueryToi, 2> toi{};
+  TimePromise time_promise = TimePromise::None;
 
   bool applies_to(const Query& q) const { return bool(test[std::size_t(decision_of(q))]); }
   bool hit(const Query& q) const { return test[std::size_t(decision_of(q))](q); }
+  bool gives_toi(const Query& q) const { return bool(toi[toi_index(toi_decision_of(q))]); }
+  Toi time_of_impact(const Query& q, double width) const {
+    return toi[toi_index(toi_decision_of(q))](q, width);
+  }
 };
 
 // The exact twin of a query decision: its verdict (reference/), for the query's own decision or
 // for a given one (a static query is also a moving one whose triangle stays: VertexFaceCcd).
 bool twin_hit(const Query& q);
 bool twin_hit(const Query& q, Decision d);
+// The exact twin of the TOI decisions: the exact verdict and an enclosure of t* no wider than
+// `width` (exact::ccd_toi over the whole step).
+Toi twin_toi(const Query& q, double width);
 
 // A k-DOP method of a fixed k: builds a box (lo, hi per slab) and decides overlap of two boxes.
 // Slab s has the integer direction directions[s] (k = 2 × directions.size()), in the method's
@@ -102,6 +134,10 @@ std::vector<Method> all_methods(int gate_k = 0);
 
 // The methods the checker holds to a promise (Exact or Conservative), the twin itself left out.
 std::vector<Method> promised_methods(int gate_k = 0);
+// The methods whose time of impact keeps a promise (Enclosure or NeverLate), the twin left out.
+std::vector<Method> time_promised_methods();
+// The methods that give a time of impact at all, the twin first.
+std::vector<Method> toi_methods();
 
 // The named subset, in the order given. Throws std::invalid_argument naming an unknown method
 // and listing the known ones.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fdh/check/classify.hpp"
+#include "fdh/check/classify_toi.hpp"
 #include "fdh/io/query_record.hpp"
 
 namespace fdh::verify {
@@ -40,6 +41,8 @@ nlohmann::ordered_json classification_json(const std::vector<FileClassification>
 // point–triangle; for a moving one (vertex-face or edge-edge) "moving" and the earliest time of
 // exact CCD, a rational or "lo..hi" around an irrational one. No contact: "none" and "".
 // With queries from several files the id is "<file>:<id>".
-std::string per_query_csv(const std::vector<QueryRecord>& queries, const Classification& c);
+// With `toi` (classify --toi), each row also has the TOI columns of toi_report.hpp after time.
+std::string per_query_csv(const std::vector<QueryRecord>& queries, const Classification& c,
+                          const ToiClassification* toi = nullptr);
 
 }  // namespace fdh::verify

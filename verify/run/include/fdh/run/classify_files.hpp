@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fdh/check/classify.hpp"
+#include "fdh/check/classify_toi.hpp"
 #include "fdh/io/query_record.hpp"
 #include "fdh/run/classification_output.hpp"
 
@@ -22,5 +23,14 @@ struct ClassifiedFiles {
 // (from the path). Throws InputError for bad input, and when no file holds a query.
 ClassifiedFiles classify_files(const std::vector<std::string>& files,
                                const std::vector<Method>& methods, const std::string& kind);
+
+// The times of impact of the same files (`classify --toi`): per file, in the order of
+// `classified.files`, and in total.
+struct ToiClassifiedFiles {
+  std::vector<std::pair<std::string, ToiClassification>> files;
+  ToiClassification total;
+};
+ToiClassifiedFiles classify_toi_files(const ClassifiedFiles& classified,
+                                      const std::vector<Method>& methods, double width);
 
 }  // namespace fdh::verify

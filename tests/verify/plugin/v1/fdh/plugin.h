@@ -1,0 +1,81 @@
+/* The plug-in header of ABI version 1, frozen as it shipped: the tests build v1 plug-ins against
+ * it (tests/verify/plugin/faulty_plugin.c) to show that fdhcert still loads them unchanged.
+ * The current header is verify/plugin/include/fdh/plugin.h.
+ *
+ * fdh/plugin.h: the C interface of fdhcert plug-ins, ABI version 1 (docs/plugins.md).
+ *
+ * A plug-in is a shared library that exports
+ *
+ *     const struct fdh_plugin* fdh_plugin_v1(void);
+ *
+ * returning a struct that lives as long as the library. `fdhcert classify|fuzz|replay|certify
+ * --plugin lib.so` loads it and runs its functions like the built-in methods, against the
+ * exact twin of each decision, under the promise it declares. Plain C: it compiles as C and
+ * as C++. */
+#ifndef FDH_PLUGIN_H
+#define FDH_PLUGIN_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The value of fdh_plugin.abi_version this header describes. */
+#define FDH_PLUGIN_ABI_VERSION 1
+
+/* What fdhcert holds the query functions' answers to, against the exact answer. */
+enum fdh_promise {
+  FDH_PROMISE_NONE = 0,         /* measured, not promised: a wrong answer is counted, no more */
+  FDH_PROMISE_CONSERVATIVE = 1, /* never 0 where the exact answer is 1 */
+  FDH_PROMISE_EXACT = 2         /* the exact answer on every input */
+};
+
+/* A query: 8 points, x[i] = {x, y, z}, in the order of fdh::Query (fast/include/fdh/query.hpp):
+ *   vertex-face: p0 a0 b0 c0 p1 a1 b1 c1, the point p and the triangle abc at t = 0, then at
+ *                t = 1, each vertex moving linearly;
+ *   edge-edge:   e0 e1 f0 f1 at t = 0, then at t = 1 (the edges e0e1 and f0f1).
+ * Return 1 for contact (closed sets: touching counts), 0 for none. Any other value is reported
+ * as garbage and ends the run. */
+typedef int (*fdh_query_fn)(const double x[8][3]);
+
+/* The k-DOP of n >= 1 points (points[i] = {x, y, z}) for k = 6, 14, 18 or 26: k/2 slabs, lo[s]
+ * <= hi[s], in fdh::Kdop<k>'s order (fast/include/fdh/kdop.hpp). Of the 13 directions
+ *   0: (1,0,0)  1: (0,1,0)  2: (0,0,1)                                     axes
+ *   3: (1,1,1)  4: (1,1,-1)  5: (1,-1,1)  6: (1,-1,-1)                     corners
+ *   7: (1,1,0)  8: (1,-1,0)  9: (1,0,1)  10: (1,0,-1)  11: (0,1,1)  12: (0,1,-1)   edges
+ * k = 6 takes 0-2, k = 14 takes 0-6, k = 18 takes 0-2 and 7-12, k = 26 all 13, in this order.
+ * Slab s of a box bounds d.p over the points, d its direction (not normalised). fdhcert holds
+ * every builder to containment: each slab must contain the exact extent of the points. A slab
+ * with NaN, an infinity or lo > hi is garbage and ends the run. */
+typedef void (*fdh_kdop_fn)(int k, const double (*points)[3], size_t n, double* lo, double* hi);
+
+/* Bits of fdh_plugin.kdop_ks: the k the builder takes. */
+#define FDH_KDOP_6 1u
+#define FDH_KDOP_14 2u
+#define FDH_KDOP_18 4u
+#define FDH_KDOP_26 8u
+
+struct fdh_plugin {
+  int abi_version;     /* FDH_PLUGIN_ABI_VERSION */
+  const char* name;    /* the method's name: a letter or digit, then up to 39 of a-z A-Z 0-9 . _
+                          + -; not a built-in method's */
+  const char* summary; /* one line for tables and certificates, or NULL */
+  int promise;         /* an fdh_promise, for the three query functions */
+  /* Any of these may be NULL: the method then makes no such decision (n/a). */
+  fdh_query_fn point_triangle;  /* a still triangle (x[5..7] == x[1..3]): the segment p0p1
+                                   against the triangle; when NULL, vertex_face_ccd decides */
+  fdh_query_fn vertex_face_ccd; /* a moving point against a moving triangle over t in [0, 1] */
+  fdh_query_fn edge_edge_ccd;   /* two moving edges over t in [0, 1] */
+  unsigned kdop_ks;             /* FDH_KDOP_* bits; 0 when kdop is NULL */
+  fdh_kdop_fn kdop;
+};
+
+/* The entry point every plug-in exports. */
+const struct fdh_plugin* fdh_plugin_v1(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FDH_PLUGIN_H */
