@@ -122,13 +122,11 @@ def test_robust_equals_exact_on_the_ccd_sample_in_batches():
 
 def toi_per_query(path, methods):
     """`classify --toi --per-query --json`: the JSON and the per-query rows."""
-    out = Path(os.environ.get("TMPDIR", "/tmp")) / f"fdhcert-pytest-toi-{os.getpid()}.csv"
-    try:
+    with tempfile.TemporaryDirectory(prefix="fdh_pytest_toi.") as folder:
+        out = Path(folder) / "per-query.csv"
         r = program("classify", path, "--toi", "--json", "--methods", methods, "--per-query", out)
         assert r.returncode == 0, r.stderr
         rows = list(csv.DictReader(out.open()))
-    finally:
-        out.unlink(missing_ok=True)
     return json.loads(r.stdout), rows
 
 

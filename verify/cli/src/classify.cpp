@@ -44,7 +44,7 @@ with null counts where a method applies to nothing. With --toi it also holds
   "toi": {"width": W, "methods": {"robust": {"promise": "exact-enclosure",
           "checked": .., "contacts": .., "late": .., "zero": .., "verdict_errors": ..,
           "not_enclosed": .., "too_wide": .., "broken": .., "early_max": ..,
-          "early_median": .., "ns_per_query": .., "na": ..}, ...},
+          "early_median": .., "toi_ns_per_query": .., "na": ..}, ...},
           "files": [{"file": F, "methods": {...}}]}
 for the methods that give a time (exact, robust, float-cubic, plug-ins of ABI
 version 2): late counts a contact missed or a t_lo after the exact earliest

@@ -49,7 +49,7 @@ Json methods_json(const ToiClassification& c) {
         {"early_max", any ? Json(t.early_max()) : Json(nullptr)},
         {"early_median", any ? Json(t.early_median()) : Json(nullptr)},
         // Three decimals are more than the timing's precision.
-        {"ns_per_query", any ? Json(std::round(m.ns_per_query * 1e3) / 1e3) : Json(nullptr)},
+        {"toi_ns_per_query", any ? Json(std::round(m.ns_per_query * 1e3) / 1e3) : Json(nullptr)},
         {"na", m.na}};
   }
   return methods;

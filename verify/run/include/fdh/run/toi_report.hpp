@@ -23,7 +23,7 @@ void print_toi_table(std::ostream& os, const std::vector<FileToi>& files,
 
 // {"width": W, "methods": {"<name>": {"promise": P, "checked": N, "contacts": C, "late": L,
 //  "zero": Z, "verdict_errors": V, "not_enclosed": E, "too_wide": X, "broken": B,
-//  "early_max": M, "early_median": D, "ns_per_query": T, "na": A}, ...},
+//  "early_max": M, "early_median": D, "toi_ns_per_query": T, "na": A}, ...},
 //  "files": [{"file": F, "methods": {...}}, ...]}
 nlohmann::ordered_json toi_json(const std::vector<FileToi>& files, const ToiClassification& total);
 
