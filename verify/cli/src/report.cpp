@@ -27,6 +27,11 @@ The verification report, as `./run verify` makes it (into docs/report):
   DIR/stability.png/svg       failure rate of each method as the motion angle,
                               the distance to an edge, the distance from the
                               origin and the triangle's aspect go to their limits
+  DIR/toi_speed.png/svg       how early each method's time of impact is (and
+                              how often late) against ns per query, per
+                              method and moving family
+  DIR/toi_stability.png/svg   the same as the motion angle, the distance to an
+                              edge and the depth of a tangential dip go to 0
   DIR/kdop_k.png/svg          FDH tree build, refit and traversal time against
                               candidate pairs, k = 6, 14, 18, 26
   DIR/report.md               all of it, with tables

@@ -1,6 +1,6 @@
-// The report's three charts, their plot commands built from the measurements' rows: one curve
-// or point set per method and sweep found in the rows, read from the data files. Static and
-// moving families get a row of panels each.
+// The report's verdict and k-DOP charts (the TOI charts: toi_charts.cpp), their plot commands
+// built from the measurements' rows: one curve or point set per method and sweep found in the
+// rows, read from the data files. Static and moving families get a row of panels each.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -135,6 +135,7 @@ void draw_report_charts(const std::string& dir, const Measurements& m) {
   const fs::path d(dir);
   draw_chart(speed_chart(d, m));
   draw_chart(stability_chart(d, m));
+  draw_toi_charts(dir, m);
   draw_chart(kdop_chart(d, m));
 }
 

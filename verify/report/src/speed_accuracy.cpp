@@ -12,19 +12,24 @@
 
 namespace fdh::verify {
 
+std::vector<Query> family_queries(std::size_t family, long per_family, std::uint64_t seed) {
+  const Family& f = all_families().at(family);
+  const std::uint64_t stream = family + 1;
+  std::vector<Query> qs;
+  for (long i = 0; i < per_family; ++i)
+    qs.push_back(generate(f, case_seed(seed * 1000 + stream, i)).query);
+  return qs;
+}
+
 std::vector<SpeedAccuracyRow> speed_accuracy(long per_family, std::uint64_t seed,
                                              const ProgressSink& progress) {
   std::vector<SpeedAccuracyRow> rows;
   const std::vector<Method> methods = all_methods();
-  std::uint64_t stream = 0;
-  for (const Family& f : all_families()) {
-    report(progress,
-           {"speed against accuracy", long(stream), long(all_families().size()), "families"});
-    ++stream;
-    std::vector<Query> qs;
-    for (long i = 0; i < per_family; ++i)
-      qs.push_back(generate(f, case_seed(seed * 1000 + stream, i)).query);
-    const Classification c = classify(qs, {}, methods);  // counted against the twin
+  const std::size_t families = all_families().size();
+  for (std::size_t k = 0; k < families; ++k) {
+    const Family& f = all_families()[k];
+    report(progress, {"speed against accuracy", long(k), long(families), "families"});
+    const Classification c = classify(family_queries(k, per_family, seed), {}, methods);
     for (const MethodResult& m : c.methods) {
       const long n = m.tally.decided();  // the queries it applies to
       if (n == 0) continue;

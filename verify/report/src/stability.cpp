@@ -1,5 +1,5 @@
 // Where methods break: failure rates as one parameter of the query goes to its degenerate
-// limit.
+// limit; and, on the sweeps whose contacts turn grazing, the methods' times of impact.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -191,13 +191,19 @@ struct PointCounts {
   std::vector<long> wrong, applied;
 };
 
-// per_point queries at p, from their own stream: the same counts on any thread.
+// per_point queries at p, from their own stream: the same queries on any thread, and the same
+// for the verdicts and the times of impact.
+std::vector<Query> point_queries(const SweepDef& def, int p, long per_point, std::uint64_t seed) {
+  Sampler s(seed * 7919 + std::uint64_t(p) * 131 + std::uint64_t(def.sweep.name[0]));
+  std::vector<Query> qs;
+  for (long i = 0; i < per_point; ++i) qs.push_back(def.make(p, s));
+  return qs;
+}
+
 PointCounts point_counts(const SweepDef& def, const std::vector<Method>& methods, int p,
                          long per_point, std::uint64_t seed) {
-  Sampler s(seed * 7919 + std::uint64_t(p) * 131 + std::uint64_t(def.sweep.name[0]));
   PointCounts n{std::vector<long>(methods.size()), std::vector<long>(methods.size())};
-  for (long i = 0; i < per_point; ++i) {
-    const Query q = def.make(p, s);
+  for (const Query& q : point_queries(def, p, per_point, seed)) {
     const bool twin = twin_hit(q);
     for (std::size_t m = 0; m < methods.size(); ++m) {
       if (!methods[m].applies_to(q)) continue;
@@ -233,7 +239,73 @@ std::vector<std::vector<double>> sweep_rates(const SweepDef& def,
   return failure;
 }
 
+// The TOI checks of each method at p: tallies[m], against the twin's t*, untimed.
+std::vector<TimeTally> toi_point(const SweepDef& def, const std::vector<Method>& methods, int p,
+                                 long per_point, std::uint64_t seed) {
+  const std::vector<Query> qs = point_queries(def, p, per_point, seed);
+  std::vector<TimeTally> tallies(methods.size());
+  for (std::size_t i = 0; i < qs.size(); ++i) {
+    const TimeTwin twin = time_twin(qs[i]);
+    for (std::size_t m = 0; m < methods.size(); ++m)
+      if (methods[m].gives_toi(qs[i]))
+        tallies[m].add(check_time(methods[m], qs[i], kToiWidthAsked, twin), i);
+  }
+  return tallies;
+}
+
+bool is_toi_sweep(const SweepDef& def) {
+  const std::string name = def.sweep.name;
+  return name == "angle" || name == "edge" || name == "tangency";
+}
+
 }  // namespace
+
+const std::vector<StabilitySweep>& toi_stability_sweeps() {
+  static const std::vector<StabilitySweep> sweeps = [] {
+    std::vector<StabilitySweep> out;
+    for (const SweepDef& d : sweep_defs())
+      if (is_toi_sweep(d)) out.push_back(d.sweep);
+    return out;
+  }();
+  return sweeps;
+}
+
+std::vector<ToiStabilityRow> toi_stability(long per_point, std::uint64_t seed,
+                                           const ProgressSink& progress) {
+  std::vector<Method> methods = toi_methods();
+  methods.erase(
+      std::remove_if(methods.begin(), methods.end(), [](const Method& m) { return m.is_twin; }),
+      methods.end());
+  std::vector<ToiStabilityRow> rows;
+  long done = 0;
+  for (const SweepDef& def : sweep_defs()) {
+    if (!is_toi_sweep(def)) continue;
+    const StabilitySweep& sw = def.sweep;
+    report(progress, {"TOI sweeps", done++, long(toi_stability_sweeps().size()), "sweeps"});
+    const auto points = parts_in_order(std::size_t(sw.last) + 1, 1, std::vector<TimeTally>{},
+                                       [&](std::size_t p, std::size_t, std::vector<TimeTally>& t) {
+                                         t = toi_point(def, methods, int(p), per_point, seed);
+                                       });
+    for (std::size_t m = 0; m < methods.size(); ++m)
+      for (std::size_t p = 0; p < points.size(); ++p) {
+        const TimeTally& t = points[p][m];
+        if (t.checked > 0)
+          rows.push_back({sw.name, int(p), methods[m].name, t.checked, t.contacts, t.late,
+                          t.early_median(), t.early_max()});
+      }
+  }
+  return rows;
+}
+
+std::string toi_stability_csv(const std::vector<ToiStabilityRow>& rows) {
+  fmt::memory_buffer out;
+  const auto to = std::back_inserter(out);
+  fmt::format_to(to, "sweep,parameter,method,queries,contacts,late,early_median,early_max\n");
+  for (const ToiStabilityRow& r : rows)
+    fmt::format_to(to, "{},{},{},{},{},{},{:.6g},{:.6g}\n", r.sweep, r.parameter, r.method,
+                   r.queries, r.contacts, r.late, r.early_median, r.early_max);
+  return fmt::to_string(out);
+}
 
 const std::vector<StabilitySweep>& stability_sweeps() {
   static const std::vector<StabilitySweep> sweeps = [] {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fdh/os/progress.hpp"
+#include "fdh/query.hpp"
 
 namespace fdh::verify {
 
@@ -26,6 +27,32 @@ struct SpeedAccuracyRow {
 // `progress` hears the families done ("speed against accuracy").
 std::vector<SpeedAccuracyRow> speed_accuracy(long per_family, std::uint64_t seed,
                                              const ProgressSink& progress = {});
+
+// The queries of all_families()[family] that speed_accuracy measures (and toi_speed, on the
+// same queries): per_family of them from the family's own stream.
+std::vector<Query> family_queries(std::size_t family, long per_family, std::uint64_t seed);
+
+// One method's times of impact on the queries of one moving family, against the exact earliest
+// contact t* (check/checker.hpp, check_time): how early its t_lo is over the contacts it found
+// in time, in step units, and how often it is late.
+struct ToiSpeedRow {
+  std::string method, family;
+  long queries = 0, contacts = 0;  // the queries it gave a time for; those with a contact
+  double ns_per_query = 0;
+  double early_median = 0, early_max = 0;  // t* - t_lo; 0 without a contact found in time
+  long late = 0;                           // contacts missed or t_lo > t*: the step passes through
+  long early = 0;  // contacts found with t* - t_lo above the width asked (kToiWidthAsked)
+  long zero = 0;   // t_lo = 0 where t* > 0
+  long verdict_errors = 0;
+};
+
+// The width of the enclosure every TOI measurement asks for: robust's default, 2^-30.
+inline constexpr double kToiWidthAsked = 0x1p-30;
+
+// Every method that gives a time of impact (the exact twin included) on `per_family` queries
+// of every moving family (the queries of speed_accuracy). `progress` hears the families done.
+std::vector<ToiSpeedRow> toi_speed(long per_family, std::uint64_t seed,
+                                   const ProgressSink& progress = {});
 
 // The lower-left envelope of `rows`: the points no other point beats in both time and error
 // rate, fastest first.
@@ -66,6 +93,24 @@ const std::vector<StabilitySweep>& stability_sweeps();
 std::vector<StabilityRow> stability(long per_point, std::uint64_t seed,
                                     const ProgressSink& progress = {});
 
+// For one TOI sweep (a stability sweep whose queries approach a grazing contact) and one value
+// of its parameter: one TOI method's errors on its per_point queries.
+struct ToiStabilityRow {
+  std::string sweep;
+  int parameter = 0;
+  std::string method;
+  long queries = 0, contacts = 0, late = 0;
+  double early_median = 0, early_max = 0;  // as ToiSpeedRow's
+};
+
+// The TOI sweeps: the stability sweeps (same queries, same streams) whose contacts turn
+// grazing: angle (the motion's angle to the plane 2^-p), edge (the crossing 2^-p from an edge)
+// and tangency (a dip 2^-p deep: a double root in time). Every method that gives a time of
+// impact, the twin aside, checked untimed. Rows run as stability's.
+const std::vector<StabilitySweep>& toi_stability_sweeps();
+std::vector<ToiStabilityRow> toi_stability(long per_point, std::uint64_t seed,
+                                           const ProgressSink& progress = {});
+
 // The FDH tree of one k on a cloth over a sphere: medians of 20 runs.
 struct KdopTreeRow {
   int k = 0, grid = 0;
@@ -85,6 +130,11 @@ std::string speed_accuracy_csv(const std::vector<SpeedAccuracyRow>& rows);
 std::string pareto_csv(const std::vector<SpeedAccuracyRow>& front);
 //   sweep,parameter,method,failure_rate
 std::string stability_csv(const std::vector<StabilityRow>& rows);
+//   method,family,queries,contacts,ns_per_query,early_median,early_max,late,early,zero,
+//   verdict_errors
+std::string toi_speed_csv(const std::vector<ToiSpeedRow>& rows);
+//   sweep,parameter,method,queries,contacts,late,early_median,early_max
+std::string toi_stability_csv(const std::vector<ToiStabilityRow>& rows);
 //   k,grid,cloth_triangles,obstacle_triangles,build_ms,refit_ms,traverse_ms,candidate_pairs,
 // with a blank line between grids (gnuplot draws one line per block).
 std::string kdop_tree_csv(const std::vector<KdopTreeRow>& rows);

@@ -17,7 +17,9 @@ struct Measurements {
   long per_point = 0;   // queries per parameter value in `stability`
   std::vector<SpeedAccuracyRow> speed, pareto;
   std::vector<StabilityRow> stability;
-  std::vector<KdopTreeRow> kdop;  // one block of k per cloth grid: 30, 50, 100
+  std::vector<ToiSpeedRow> toi_speed;          // on the moving families of `speed`
+  std::vector<ToiStabilityRow> toi_stability;  // per_point queries per parameter value
+  std::vector<KdopTreeRow> kdop;               // one block of k per cloth grid: 30, 50, 100
 };
 
 struct Report {
@@ -32,8 +34,8 @@ struct Report {
 Report make_report(const CertifyOptions& options, const ProgressSink& progress = {});
 
 // Into report.certificate.options.out_dir: certificate.json and .md, data/*.csv, the charts
-// (speed_accuracy, stability, kdop_k as .png and .svg) and report.md. Throws
-// std::runtime_error when a file cannot be written or gnuplot fails.
+// (speed_accuracy, stability, toi_speed, toi_stability, kdop_k as .png and .svg) and report.md.
+// Throws std::runtime_error when a file cannot be written or gnuplot fails.
 void write_report(const Report& report);
 
 // The files write_report writes, relative to its folder: for check_output_dir before the run.
@@ -43,6 +45,8 @@ std::string report_markdown(const Report& report);
 
 // The charts from the data files in <dir>/data (written by write_report).
 void draw_report_charts(const std::string& dir, const Measurements& m);
+// The two time-of-impact charts of those (toi_speed, toi_stability).
+void draw_toi_charts(const std::string& dir, const Measurements& m);
 
 // The certificate's part of report.md (certificate.md without its title): what `fdhcert
 // report` prints when it is done.
