@@ -75,6 +75,13 @@ TEST(Cli, UsageErrorsExitTwoWithAShortMessage) {
       {"fuzz", "--method", "robust", "--family", "angled"},  // no --out
       {"fuzz", "--method", "robust", "--family", "angled", "--out", "x", "--shard", "3/2"},
       {"fuzz", "--method", "robust", "--family", "nope", "--out", "x"},
+      {"fuzz", "--method", "float-cubic", "--family", "coplanar", "--out", "x", "--toi-tolerance",
+       "0.2"},  // without --toi
+      {"fuzz", "--method", "float-cubic", "--family", "coplanar", "--out", "x", "--width", "1e-3"},
+      {"fuzz", "--method", "float-cubic", "--family", "coplanar", "--out", "x", "--toi",
+       "--toi-tolerance", "-1"},
+      {"fuzz", "--method", "float-cubic", "--family", "coplanar", "--out", "x", "--toi",
+       "--metamorphic"},
       {"generate", "angled", "--out", "x", "--count", "0"},
       {"generate", "angled", "extra", "--out", "x"},
       {"simulate", kData + "none.scene", "--k", "7"},
@@ -288,9 +295,9 @@ TEST(Cli, FuzzJsonSummary) {
                             "--count", "100", "--threads", "1", "--shard", "1/2", "--json"});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::ordered_json::parse(r.out);
-  EXPECT_EQ(keys(j), (std::vector<std::string>{"method", "metamorphic", "family", "seed", "shard",
-                                               "first", "last", "cases", "resumed", "disagreements",
-                                               "distinct", "files"}));
+  EXPECT_EQ(keys(j), (std::vector<std::string>{"method", "metamorphic", "toi", "family", "seed",
+                                               "shard", "first", "last", "cases", "resumed",
+                                               "disagreements", "distinct", "files"}));
   EXPECT_EQ(j["method"], "paper-literal");
   EXPECT_EQ(j["shard"], "1/2");
   EXPECT_EQ(j["first"], 0);

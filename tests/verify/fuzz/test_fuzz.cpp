@@ -22,6 +22,7 @@
 #include <climits>
 #include <thread>
 
+#include "fdh/check/checker.hpp"
 #include "fdh/check/metamorphic.hpp"
 #include "fdh/io/query_io.hpp"
 
@@ -108,11 +109,27 @@ long kill_and_restart(const std::vector<std::string>& args, const fs::path& out,
 // `markers` chunks and restarted, it ends with exactly the whole run's case files.
 void expect_kill_loses_nothing(const FuzzOptions& o, const fs::path& whole, const fs::path& killed,
                                long markers) {
-  const long done_before = kill_and_restart(
-      {"fuzz", "--method", o.method, "--family", o.family, "--seed", std::to_string(o.seed),
-       "--count", std::to_string(o.count), "--chunk", std::to_string(o.chunk), "--threads",
-       std::to_string(o.threads), "--out", killed.string()},
-      killed, markers);
+  std::vector<std::string> args = {"fuzz",
+                                   "--method",
+                                   o.method,
+                                   "--family",
+                                   o.family,
+                                   "--seed",
+                                   std::to_string(o.seed),
+                                   "--count",
+                                   std::to_string(o.count),
+                                   "--chunk",
+                                   std::to_string(o.chunk),
+                                   "--threads",
+                                   std::to_string(o.threads),
+                                   "--out",
+                                   killed.string()};
+  if (o.toi) {
+    char tolerance[40];
+    std::snprintf(tolerance, sizeof tolerance, "%a", o.toi_tolerance);
+    args.insert(args.end(), {"--toi", "--toi-tolerance", tolerance});
+  }
+  const long done_before = kill_and_restart(args, killed, markers);
   EXPECT_GT(done_before, 0);
   EXPECT_LT(done_before, o.count / o.chunk) << "the run finished before it could be killed";
   EXPECT_EQ(cases_in(killed), cases_in(whole));
@@ -397,6 +414,126 @@ TEST(Fuzz, ShardBoundsDoNotOverflow) {
   EXPECT_THROW(shard_begin(5, 2, 1), std::invalid_argument);
   // The last shard of the largest run ends at its count.
   EXPECT_EQ(shard_begin(1L << 40, 1000000, 1000000), 1L << 40);
+}
+
+// fuzz --toi on float-cubic over `family`: the options of a run into a fresh folder `name`.
+FuzzOptions toi_options(const std::string& name, const std::string& family, long count) {
+  FuzzOptions o = options(fuzz_dir(name), 2);
+  o.method = "float-cubic";
+  o.family = family;
+  o.count = count;
+  o.chunk = 50;
+  o.toi = true;
+  return o;
+}
+
+// The class a case file of fuzz --toi names: "late" for toi/float-cubic/F/late-<hash>.vf.
+std::string class_of(const std::string& file) {
+  const std::string name = fs::path(file).filename().string();
+  return name.substr(0, name.find('-'));
+}
+
+// fuzz --toi finds float-cubic's late times; each stored case, shrunk, is still late (t_lo
+// after t*, not a missed contact), and its file says so with the exact contact time.
+TEST(FuzzToi, FindsLateFloatCubicTimesThatStayLateWhenShrunk) {
+  const FuzzOptions o = toi_options("fuzz_toi_late", "coplanar", 300);
+  const FuzzSummary s = run_fuzz(o);
+  EXPECT_EQ(o.toi_tolerance, kDefaultToiTolerance);
+  const Method m = select_methods({"float-cubic"}).front();
+  int late = 0;
+  for (const std::string& f : s.distinct) {
+    SCOPED_TRACE(f);
+    EXPECT_NE(f.find("/toi/float-cubic/coplanar/"), std::string::npos);
+    const QueryRecord r = read_native(f).at(0);
+    const TimeCheck c = check_time(m, r.query, o.toi_width);
+    const std::string cls = class_of(f);
+    ASSERT_TRUE(r.has_truth());
+    EXPECT_EQ(r.truth == Truth::Yes, c.twin.hit);
+    if (cls == "late") {
+      ++late;
+      EXPECT_TRUE(c.late && c.said.hit);
+      EXPECT_EQ(first_line(f).rfind("# TOI late: float-cubic's TOI is late: t_lo = ", 0), 0u)
+          << first_line(f);
+      EXPECT_NE(first_line(f).find("exact says hit (at t "), std::string::npos);
+    } else {
+      EXPECT_EQ(cls, "missed");
+      EXPECT_TRUE(c.late && !c.said.hit);
+    }
+  }
+  EXPECT_GE(late, 3);
+}
+
+// A case is shrunk within its class: with a tolerance of 0, float-cubic's early times shrink to
+// early times, never to late ones or missed contacts; the exact twin and robust keep their
+// promise on every case.
+TEST(FuzzToi, EarlyCasesShrinkToEarlyCases) {
+  FuzzOptions o = toi_options("fuzz_toi_early", "random-linear", 300);
+  o.toi_tolerance = 0;
+  const FuzzSummary s = run_fuzz(o);
+  const Method m = select_methods({"float-cubic"}).front();
+  int early = 0;
+  for (const std::string& f : s.distinct) {
+    SCOPED_TRACE(f);
+    const Query q = read_native(f).at(0).query;
+    const TimeCheck c = check_time(m, q, o.toi_width);
+    if (class_of(f) == "early") {
+      ++early;
+      EXPECT_TRUE(c.kept && !c.late && c.early > 0);
+    }
+    for (const Method& p : time_promised_methods()) EXPECT_TRUE(check_time(p, q, o.toi_width).kept);
+  }
+  EXPECT_GE(early, 3);
+  // At the default tolerance none of them is a finding.
+  o.out_dir = fuzz_dir("fuzz_toi_early_default").string();
+  o.toi_tolerance = kDefaultToiTolerance;
+  for (const std::string& f : run_fuzz(o).distinct) EXPECT_NE(class_of(f), "early") << f;
+}
+
+// Same seed, same cases, for any number of workers; other tolerances are another run.
+TEST(FuzzToi, SameSeedSameCases) {
+  FuzzOptions a = toi_options("fuzz_toi_a", "sliding-on-edge", 200);
+  FuzzOptions b = toi_options("fuzz_toi_b", "sliding-on-edge", 200);
+  b.threads = 1;
+  b.chunk = 70;
+  const FuzzSummary sa = run_fuzz(a), sb = run_fuzz(b);
+  EXPECT_GT(sa.disagreements, 0);
+  EXPECT_EQ(sa.disagreements, sb.disagreements);
+  EXPECT_EQ(cases_in(a.out_dir), cases_in(b.out_dir));
+  // The mode, width and tolerance are in the run's name and manifest.
+  const fs::path run = fs::path(a.out_dir) / ".fuzz" /
+                       "toi.w0x1p-30.tol0x1.999999999999ap-4.float-cubic.sliding-on-edge.seed7."
+                       "count200.shard1of1" /
+                       "manifest";
+  std::ifstream in(run);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("mode toi\nwidth 0x1p-30\ntoi-tolerance 0x1.999999999999ap-4\n"),
+            std::string::npos)
+      << text.str();
+  // Another tolerance on the same folder is another run: refused while this one is unfinished.
+  fs::remove(fuzz_markers_in(a.out_dir).at(1));
+  FuzzOptions other = a;
+  other.toi_tolerance = 0;
+  EXPECT_THROW(run_fuzz(other), FuzzRefused);
+}
+
+// fuzz --toi killed with SIGKILL and started again ends with the uninterrupted run's cases.
+TEST(FuzzToi, KilledWithSigkillAndRestartedLosesNothing) {
+  const FuzzOptions o = toi_options("fuzz_toi_whole", "coplanar", 2000);
+  ASSERT_FALSE(run_fuzz(o).distinct.empty());
+  expect_kill_loses_nothing(o, o.out_dir, fuzz_dir("fuzz_toi_killed"), 4);
+}
+
+// --toi asks for a moving family, a method that gives a time, and not --metamorphic.
+TEST(FuzzToi, RefusesWhatItCannotCheck) {
+  FuzzOptions o = toi_options("fuzz_toi_bad", "angled", 10);
+  EXPECT_THROW(run_fuzz(o), std::invalid_argument);  // static family
+  o.family = "coplanar";
+  o.method = "paper-literal";
+  EXPECT_THROW(run_fuzz(o), std::invalid_argument);  // no time of impact
+  o.method = "float-cubic";
+  o.metamorphic = true;
+  EXPECT_THROW(run_fuzz(o), std::invalid_argument);
 }
 
 }  // namespace

@@ -31,13 +31,22 @@ dyadic translation or velocity, power-of-two scale, relabelled corners or
 ends; docs/methods.md): no oracle needed, so any method, the exact twin
 included. Such a query is shrunk while some transform still changes M's
 verdict, and stored in DIR/metamorphic/M/F/<hash>.vf with the twin's verdict
-as the truth and a comment naming the transform and both verdicts.)";
+as the truth and a comment naming the transform and both verdicts.
+
+With --toi (moving families only) it checks M's time of impact instead: a
+finding is a contact missed, a time after the exact earliest contact t*
+(late), one that breaks M's time promise otherwise, or one earlier than t* by
+more than --toi-tolerance of the step. Each is shrunk while M's time stays in
+the same class (a late case stays late) and stored in
+DIR/toi/M/F/<class>-<hash>.vf (class: missed, late, broken, early) with the
+twin's verdict as the truth and a comment giving M's enclosure and the exact
+contact time.)";
 
 const char* const kFuzzFooter =
     R"(The same seed and shard always give the same cases. Progress is saved in
 DIR/.fuzz/ as cases are done: a run killed and started again with the same
---method, --family, --seed, --count, --shard and --metamorphic (any --chunk
-and --threads)
+--method, --family, --seed, --count, --shard, --metamorphic and --toi (with
+its --width and --toi-tolerance; any --chunk and --threads)
 continues where it stopped and ends with exactly the cases of an uninterrupted
 run. A second run on DIR while one runs, or a run with other options while DIR
 holds an unfinished run, stops with exit status 2. On a terminal, a progress
@@ -89,6 +98,7 @@ void print_summary(const FuzzOptions& opt, const FuzzSummary& s, bool json, std:
   if (json) {
     print_json(out, {{"method", opt.method},
                      {"metamorphic", opt.metamorphic},
+                     {"toi", opt.toi},
                      {"family", opt.family},
                      {"seed", opt.seed},
                      {"shard", shard},
@@ -101,12 +111,17 @@ void print_summary(const FuzzOptions& opt, const FuzzSummary& s, bool json, std:
                      {"files", s.distinct}});
     return;
   }
-  out << "fuzz " << (opt.metamorphic ? "--metamorphic " : "") << opt.method << " on " << opt.family
-      << ", seed " << opt.seed << ", cases " << s.first << ".." << s.last - 1 << " (shard " << shard
-      << ")\n"
+  const char* found = opt.metamorphic ? " verdicts changed by a transform, "
+                      : opt.toi       ? " TOI findings, "
+                                      : " disagreements with exact, ";
+  out << "fuzz "
+      << (opt.metamorphic ? "--metamorphic "
+          : opt.toi       ? "--toi "
+                          : "")
+      << opt.method << " on " << opt.family << ", seed " << opt.seed << ", cases " << s.first
+      << ".." << s.last - 1 << " (shard " << shard << ")\n"
       << s.cases << " cases (" << s.resumed << " done by an earlier run), " << s.disagreements
-      << (opt.metamorphic ? " verdicts changed by a transform, " : " disagreements with exact, ")
-      << s.distinct.size() << " distinct shrunk cases\n";
+      << found << s.distinct.size() << " distinct shrunk cases\n";
   for (const std::string& f : s.distinct) out << "  " << f << "\n";
 }
 
@@ -167,6 +182,21 @@ Command add_fuzz(CLI::App& app) {
   add_plugin_option(*cmd);
   cmd->add_flag("--metamorphic", opt.metamorphic,
                 "look for verdicts that change under a truth-keeping\ntransform (above)");
+  CLI::Option* toi = cmd->add_flag("--toi", opt.toi,
+                                   "look for late, promise-breaking or too early times\n"
+                                   "of impact on a moving family (above)");
+  toi->excludes("--metamorphic");
+  cmd->add_option("--width", opt.toi_width,
+                  "with --toi: the enclosure width asked of each time\n(default 2^-30)")
+      ->type_name("W")
+      ->check(CLI::Range(0x1p-52, 1.0))
+      ->needs(toi);
+  cmd->add_option("--toi-tolerance", opt.toi_tolerance,
+                  "with --toi: how early (t* - t_lo, in steps) a time may be\n"
+                  "before it is a finding (default 0.1)")
+      ->type_name("T")
+      ->check(CLI::Range(0.0, 1.0))
+      ->needs(toi);
   cmd->add_flag("--json", o->json, "print the summary as one JSON object");
   add_quiet_flag(*cmd, o->quiet);
   return {cmd, [o](const Io& io) { return run_fuzz_command(*o, io); }};

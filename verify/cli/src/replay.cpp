@@ -29,19 +29,21 @@ fuzz --out folder). Every case must carry a truth.
   it makes no decision on is not counted).
   With --toi, also the cases where a method's time of impact is late (a
   contact missed, or t_lo after the exact earliest contact) or 0 where the
-  contact is later.)";
+  contact is later, and those earlier than the exact contact by more than
+  --toi-tolerance of the step (fuzz --toi's early findings).)";
 
 const char* const kReplayFooter =
     R"(--json prints {"cases": N, "exact_mismatches": [...],
                "methods": {"<name>": {"failing": K, "cases": [...]}}}
 and with --toi also "toi": {"<name>": {"late": [...], "zero": [...],
-                                       "broken": [...]}} (broken: the cases
-where the time breaks the method's time promise).)";
+                                       "early": [...], "broken": [...]}}
+(broken: the cases where the time breaks the method's time promise).)";
 
 struct ReplayOptions {
   std::vector<std::string> paths, methods;
   bool json = false, toi = false;
   double width = kDefaultToiWidth;
+  double tolerance = kDefaultToiTolerance;  // how early a time may be before it is listed
 };
 
 // The stored cases under the paths, of every kind: static and moving vertex-face, edge-edge.
@@ -64,17 +66,18 @@ struct Replay {
   std::vector<std::pair<std::string, std::vector<std::string>>> failing;
   struct Times {
     std::string method;
-    std::vector<std::string> late, zero, broken;
+    std::vector<std::string> late, zero, early, broken;
   };
   std::vector<Times> times;  // with --toi: per method that gives a time
 };
 
 // The cases where each method's time is late, 0 too early, or breaks its promise (checker.hpp).
 void replay_times(const std::vector<QueryRecord>& cases, const std::vector<Query>& queries,
-                  const std::vector<Method>& methods, double width, Replay& r) {
+                  const std::vector<Method>& methods, const ReplayOptions& o, Replay& r) {
+  const double width = o.width;
   const ToiClassification toi = classify_toi(queries, methods, width);
   for (const ToiResult& m : toi.methods) {
-    Replay::Times t{m.name, {}, {}, {}};
+    Replay::Times t{m.name, {}, {}, {}, {}};
     const Method& method = *std::find_if(methods.begin(), methods.end(),
                                          [&](const Method& x) { return x.name == m.name; });
     for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -82,6 +85,7 @@ void replay_times(const std::vector<QueryRecord>& cases, const std::vector<Query
       const TimeCheck c = check_time_given(method, queries[i], width, m.said[i], toi.twin[i]);
       if (c.late) t.late.push_back(where(cases[i]));
       if (c.zero) t.zero.push_back(where(cases[i]));
+      if (c.early > o.tolerance) t.early.push_back(where(cases[i]));
       if (!c.kept) t.broken.push_back(where(cases[i]));
     }
     r.times.push_back(std::move(t));
@@ -111,7 +115,8 @@ void print_replay(const Replay& r, std::size_t cases, bool json, std::ostream& o
     nlohmann::ordered_json j = {
         {"cases", cases}, {"exact_mismatches", r.twin_mismatches}, {"methods", methods}};
     for (const Replay::Times& t : r.times)
-      j["toi"][t.method] = {{"late", t.late}, {"zero", t.zero}, {"broken", t.broken}};
+      j["toi"][t.method] = {
+          {"late", t.late}, {"zero", t.zero}, {"early", t.early}, {"broken", t.broken}};
     print_json(out, j);
     return;
   }
@@ -126,8 +131,10 @@ void print_replay(const Replay& r, std::size_t cases, bool json, std::ostream& o
   }
   for (const Replay::Times& t : r.times) {
     out << "  " << t.method << " time of impact: " << t.late.size() << " late, " << t.zero.size()
-        << " zero, " << t.broken.size() << " breaking its promise\n";
+        << " zero, " << t.early.size() << " early, " << t.broken.size()
+        << " breaking its promise\n";
     for (const std::string& w : t.late) out << "    late: " << w << "\n";
+    for (const std::string& w : t.early) out << "    early: " << w << "\n";
   }
 }
 
@@ -137,7 +144,7 @@ int run_replay(const ReplayOptions& o, const Io& io) {
   const std::vector<Query> queries = queries_of(cases);
   const RecordScope asking(cases, queries);  // a plug-in's crash names FILE:LINE
   Replay r = replay(cases, classify(queries, truths_of(cases), methods));
-  if (o.toi) replay_times(cases, queries, methods, o.width, r);
+  if (o.toi) replay_times(cases, queries, methods, o, r);
   print_replay(r, cases.size(), o.json, io.out);
   for (const std::string& w : r.twin_mismatches)
     io.err << "fdhcert: exact no longer gives the stored truth at " << w << "\n";
@@ -159,6 +166,12 @@ Command add_replay(CLI::App& app) {
   cmd->add_option("--width", o->width, "the enclosure width asked of each time (default 2^-30)")
       ->type_name("W")
       ->check(CLI::Range(0x1p-52, 1.0));
+  cmd->add_option("--toi-tolerance", o->tolerance,
+                  "with --toi: list a time as early when t* - t_lo exceeds\n"
+                  "T steps (default 0.1, as fuzz --toi)")
+      ->type_name("T")
+      ->check(CLI::Range(0.0, 1.0))
+      ->needs("--toi");
   return {cmd, [o](const Io& io) { return run_replay(*o, io); }};
 }
 

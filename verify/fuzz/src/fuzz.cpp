@@ -78,7 +78,18 @@ FuzzParams params_of(const FuzzOptions& opt, const Method& m, const Family& f) {
   if (opt.shards < 1 || opt.shard < 0 || opt.shard >= opt.shards)
     throw std::invalid_argument("--shard I/N needs 1 <= I <= N");
   if (opt.count < 0) throw std::invalid_argument("--count must not be negative");
-  return {m.name, f.name, opt.seed, opt.count, opt.shard, opt.shards, opt.metamorphic};
+  if (opt.toi && opt.metamorphic)
+    throw std::invalid_argument("--toi and --metamorphic look for different things: give one");
+  if (opt.toi && !f.moving)
+    throw std::invalid_argument("--toi needs a moving family, not '" + f.name + "'");
+  if (opt.toi &&
+      !std::all_of(m.toi.begin(), m.toi.end(), [](const QueryToi& t) { return bool(t); }))
+    throw std::invalid_argument("method '" + m.name + "' gives no time of impact");
+  if (opt.toi && !(opt.toi_width > 0 && opt.toi_width <= 1 && opt.toi_tolerance >= 0))
+    throw std::invalid_argument("--toi needs 0 < --width <= 1 and --toi-tolerance >= 0");
+  FuzzParams p{m.name, f.name, opt.seed, opt.count, opt.shard, opt.shards, opt.metamorphic};
+  if (opt.toi) p.toi = true, p.width = opt.toi_width, p.tolerance = opt.toi_tolerance;
+  return p;
 }
 
 // OUT/.fuzz, locked for the run; a run that is held by another refuses.
@@ -95,7 +106,8 @@ WorkFolder take_work_folder(const fs::path& out, double wait_seconds) {
 
 struct Run {
   const FuzzOptions& opt;
-  FuzzTarget target{select_methods({opt.method}).front(), opt.metamorphic};
+  FuzzTarget target{select_methods({opt.method}).front(), opt.metamorphic, opt.toi, opt.toi_width,
+                    opt.toi_tolerance};
   const Method& method = target.method;
   const Family& generator = any_family(opt.family);
   std::string family = generator.name;
@@ -128,10 +140,21 @@ struct Run {
     }
   }
 
-  bool fails(const Generated& g) const {
+  std::string finding(const Generated& g) const {
     const QueryRecord r = g.record();
     const RecordScope asking(r);  // a plug-in's crash names the family
-    return target.fails(g.query);
+    return target.finding(g.query);
+  }
+
+  // Case i shrunk while the method fails on it in the same class as on the case drawn (a late
+  // time stays late, not a missed contact); nullopt where it does not fail.
+  std::optional<Generated> shrunk_case(long i) const {
+    std::string drawn;  // shrunk_failure asks first about the case drawn
+    return shrunk_failure(generator, case_seed(opt.seed, i), [&](const Generated& x) {
+      const std::string f = finding(x);
+      if (drawn.empty()) drawn = f;
+      return !f.empty() && f == drawn;
+    });
   }
 
   // Runs cases [r.begin, r.end), writes their case files, then the marker; its disagreements.
@@ -139,11 +162,10 @@ struct Run {
     long disagreements = 0;
     std::vector<std::string> files;
     for (long i = r.begin; i < r.end; ++i) {
-      std::optional<Generated> g = shrunk_failure(generator, case_seed(opt.seed, i),
-                                                  [this](const Generated& x) { return fails(x); });
+      const std::optional<Generated> g = shrunk_case(i);
       if (!g) continue;
       ++disagreements;
-      const std::string name = case_hash(g->query) + ".vf";
+      const std::string name = target.case_name(g->query);
       const std::string text = target.case_text(g->query, family);
       const std::string path = (case_dir / name).string();
       // Most disagreements shrink to a case found before: one read instead of a synced write.

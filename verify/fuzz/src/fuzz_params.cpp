@@ -1,5 +1,7 @@
 #include "fuzz_params.hpp"
 
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "fdh/fuzz/fuzz.hpp"
@@ -16,6 +18,20 @@ bool parse(const std::string& text, T& value) {
   return (in >> value) && in.peek() == EOF;
 }
 
+// A double written by hex(), read whole.
+bool parse_hex(const std::string& text, double& value) {
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return !text.empty() && *end == '\0';
+}
+
+// A double exactly, as a C hexadecimal float ("0x1p-30").
+std::string hex(double v) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%a", v);
+  return text;
+}
+
 bool parse_shard(const std::string& text, FuzzParams& p) {
   std::istringstream in(text);
   char slash = 0;
@@ -28,19 +44,27 @@ bool parse_shard(const std::string& text, FuzzParams& p) {
 
 bool FuzzParams::operator==(const FuzzParams& o) const {
   return method == o.method && family == o.family && seed == o.seed && count == o.count &&
-         shard == o.shard && shards == o.shards && metamorphic == o.metamorphic;
+         shard == o.shard && shards == o.shards && metamorphic == o.metamorphic && toi == o.toi &&
+         (!toi || (width == o.width && tolerance == o.tolerance));
 }
 
 std::string FuzzParams::folder_name() const {
-  return (metamorphic ? "metamorphic." : "") + method + "." + family + ".seed" +
-         std::to_string(seed) + ".count" + std::to_string(count) + ".shard" +
-         std::to_string(shard + 1) + "of" + std::to_string(shards);
+  const std::string mode = metamorphic ? "metamorphic."
+                           : toi       ? "toi.w" + hex(width) + ".tol" + hex(tolerance) + "."
+                                       : "";
+  return mode + method + "." + family + ".seed" + std::to_string(seed) + ".count" +
+         std::to_string(count) + ".shard" + std::to_string(shard + 1) + "of" +
+         std::to_string(shards);
 }
 
 std::string FuzzParams::options() const {
-  return (metamorphic ? "--metamorphic " : "") + std::string("--method ") + method + " --family " +
-         family + " --seed " + std::to_string(seed) + " --count " + std::to_string(count) +
-         " --shard " + std::to_string(shard + 1) + "/" + std::to_string(shards);
+  const std::string mode =
+      metamorphic ? "--metamorphic "
+      : toi       ? "--toi --width " + hex(width) + " --toi-tolerance " + hex(tolerance) + " "
+                  : "";
+  return mode + std::string("--method ") + method + " --family " + family + " --seed " +
+         std::to_string(seed) + " --count " + std::to_string(count) + " --shard " +
+         std::to_string(shard + 1) + "/" + std::to_string(shards);
 }
 
 Manifest FuzzParams::manifest() const {
@@ -51,6 +75,11 @@ Manifest FuzzParams::manifest() const {
               {"count", std::to_string(count)},
               {"shard", std::to_string(shard + 1) + "/" + std::to_string(shards)}}};
   if (metamorphic) m.entries.emplace_back("mode", "metamorphic");
+  if (toi) {
+    m.entries.emplace_back("mode", "toi");
+    m.entries.emplace_back("width", hex(width));
+    m.entries.emplace_back("toi-tolerance", hex(tolerance));
+  }
   return m;
 }
 
@@ -70,12 +99,19 @@ std::optional<FuzzParams> FuzzParams::of(const Manifest& m) {
       ok[4] = parse_shard(value, p);
     } else if (key == "mode" && value == "metamorphic") {
       p.metamorphic = true;
+    } else if (key == "mode" && value == "toi") {
+      p.toi = true;
+    } else if (key == "width") {
+      if (!parse_hex(value, p.width)) return std::nullopt;
+    } else if (key == "toi-tolerance") {
+      if (!parse_hex(value, p.tolerance)) return std::nullopt;
     } else {
       return std::nullopt;
     }
   }
   for (const bool b : ok)
     if (!b) return std::nullopt;
+  if (p.toi && !(p.width > 0)) return std::nullopt;
   if (p.count < 0 || p.shards < 1 || p.shard < 0 || p.shard >= p.shards) return std::nullopt;
   return p;
 }

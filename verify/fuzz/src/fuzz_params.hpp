@@ -16,10 +16,12 @@ struct FuzzParams {
   long count = 0;
   int shard = 0, shards = 1;  // shard 0-based
   bool metamorphic = false;   // recorded only when set: older manifests stay valid
+  bool toi = false;           // so is the TOI mode, with its width and tolerance
+  double width = 0, tolerance = 0;
 
   bool operator==(const FuzzParams& o) const;
   // The run's folder under OUT/.fuzz: method.family.seedS.countN.shardIofS, prefixed
-  // "metamorphic." in that mode.
+  // "metamorphic." or "toi.wW.tolT." (W and T as C hexadecimal floats) in those modes.
   std::string folder_name() const;
   // The command-line options that give this run.
   std::string options() const;

@@ -13,19 +13,31 @@ struct FuzzTarget {
   Method method;
   // Look for metamorphic failures (check/metamorphic.hpp) instead of disagreements.
   bool metamorphic = false;
+  // Look for findings in the method's time of impact (check_time) instead of disagreements,
+  // asking for enclosures `width` wide; an early time is a finding when t* - t_lo exceeds
+  // `tolerance` (step units).
+  bool toi = false;
+  double width = kDefaultToiWidth, tolerance = 0;
 
-  // The method applies to q and disagrees with the exact twin there (the checker); or, with
-  // `metamorphic`, its verdict changes under a transform of q.
-  bool fails(const Query& q) const;
+  // The class of what the method gets wrong on q, "" for nothing: "disagrees" (the method
+  // applies to q and disagrees with the exact twin), "metamorphic" (its verdict changes under a
+  // transform of q), or with `toi` one of "missed" (a contact missed), "late" (t_lo after t*),
+  // "broken" (the time breaks the method's promise otherwise) and "early" (t_lo before t* by
+  // more than `tolerance`). Shrinking keeps the class of the case drawn.
+  std::string finding(const Query& q) const;
 
-  // The folder of the cases under OUT: <method>/<family>, or metamorphic/<method>/<family>.
+  // The folder of the cases under OUT: <method>/<family>, metamorphic/<method>/<family> or
+  // toi/<method>/<family>.
   std::string case_folder(const std::string& family) const;
+  // A case's file name: <hash>.vf, or <class>-<hash>.vf with `toi`.
+  std::string case_name(const Query& q) const;
 
   // The case file of a failing query shrunk from `family`: the twin's verdict as its truth, and
   // comments saying what the method and the twin answer, with the exact contact (kind and time
   // for a static query, the earliest CCD contact time for a moving one); a metamorphic case also
-  // names the transform and the method's verdicts before and after it. It depends on the query
-  // alone, so that any number of workers and shards write identical files.
+  // names the transform and the method's verdicts before and after it, a TOI case the method's
+  // enclosure and what the checker found in it. It depends on the query alone, so that any
+  // number of workers and shards write identical files.
   std::string case_text(const Query& q, const std::string& family) const;
 };
 

@@ -93,6 +93,10 @@ struct TimeCheck {
   bool garbage = false;   // not 0 <= t_lo <= t_hi <= 1 with a hit: breaks either promise
 };
 
+// How early a time of impact may be (t* - t_lo, step units) before fuzz --toi and replay --toi
+// call it a finding: a solver that moves to a time a tenth of the step early stalls.
+inline constexpr double kDefaultToiTolerance = 0.1;
+
 // Whether the findings of `c` keep `promise` (registry.hpp TimePromise).
 bool keeps_time_promise(TimePromise promise, const TimeCheck& c);
 

@@ -18,9 +18,9 @@
 //                   that refuses changes nothing) starts by emptying tmp/ (under the lock, so no
 //                   live run owns anything in it). A user's files,
 //                   whatever their names, are never removed.
-//   RUN/manifest    RUN is method.family.seedS.countN.shardIofS (prefixed "metamorphic." in
-//                   that mode); the manifest records those parameters and the mode, and is
-//                   written before any case.
+//   RUN/manifest    RUN is method.family.seedS.countN.shardIofS (prefixed "metamorphic." or
+//                   "toi.wW.tolT." in those modes); the manifest records those parameters and
+//                   the mode (with --toi its width and tolerance), and is written before any case.
 //   RUN/cases-B-E   done-marker of cases [B, E): `<disagreements> <case file>...`. Markers name
 //                   case ranges, not chunk numbers, so a run resumed with any --chunk or
 //                   --threads runs exactly the cases no marker covers.
@@ -43,6 +43,15 @@ struct FuzzOptions {
   // (fdh/check/metamorphic.hpp) instead of disagreements with the twin; cases go to
   // OUT/metamorphic/<method>/<family>/. Part of the run's parameters, like the method.
   bool metamorphic = false;
+  // Look instead for findings in the method's time of impact (fdh/check/checker.hpp
+  // check_time) on a moving family: a missed contact, a late time (t_lo > t*), a time that
+  // breaks the method's time promise otherwise, or one earlier than t* by more than
+  // toi_tolerance (step units). Each is shrunk keeping its class and stored as
+  // OUT/toi/<method>/<family>/<class>-<hash>.vf. The width and tolerance are part of the
+  // run's parameters.
+  bool toi = false;
+  double toi_width = 0x1p-30;     // the enclosure width asked (fdh/ccd/toi.hpp kDefaultToiWidth)
+  double toi_tolerance = 0.1;     // fdh/check/checker.hpp kDefaultToiTolerance
   std::string family = "angled";  // any family, static or moving (fdh/gen/families.hpp)
   std::uint64_t seed = 1;
   long count = 10000;  // cases in the whole run, over all shards
