@@ -1,0 +1,288 @@
+// The certifier: every promised method against the exact twin on each query, soup and box it is
+// given, and the tally of what that adds to the certificate. Private to fdh_certify: certify.cpp
+// feeds it the run's inputs stage by stage.
+#pragma once
+
+#include "fdh/certify/certify.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <sstream>
+#include "fdh/bvh.hpp"
+#include "fdh/certify/certify_metamorphic.hpp"
+#include "fdh/check/checker.hpp"
+#include "fdh/check/parallel.hpp"
+#include "fdh/check/registry.hpp"
+#include "fdh/cloth/simulation.hpp"
+#include "fdh/exact/kdop.hpp"
+#include "fdh/exact/versions.hpp"
+#include "fdh/gen/case_seed.hpp"
+#include "fdh/gen/families.hpp"
+#include "fdh/gen/soup.hpp"
+#include "fdh/io/case_files.hpp"
+#include "fdh/io/query_io.hpp"
+#include "fdh/io/record_scope.hpp"
+#include "fdh/io/scene_file.hpp"
+#include "fdh/io/scene_schema.hpp"
+#include "fdh/os/atomic_file.hpp"
+#include "fdh/run/build_info.hpp"
+#include "fdh/run/scene_report.hpp"
+#include "fdh/run/scene_run.hpp"
+
+namespace fdh::verify {
+namespace fs = std::filesystem;
+
+// What checking some queries (or soups) adds to the certificate: counts in the certificate's
+// rows, and the first violation found. Parts of a run are merged in the order of their inputs,
+// so the certificate does not depend on how the run was cut (parallel.hpp).
+struct CertifyTally {
+  std::vector<PromiseCheck> promises;
+  std::vector<TimePromiseCheck> times;
+  std::vector<BoxCheck> boxes;
+  std::vector<MetamorphicCheck> metamorphic;
+  long truths = 0, truth_violations = 0;
+  long queries = 0;  // the queries checked (certify counts them per source)
+  // The first violation: its words, and the case file that shows it (a name in out_dir and
+  // the file's text); written only when it is the certificate's first.
+  struct Found {
+    std::string what, file, text;
+  };
+  std::optional<Found> first;
+
+  void add(const CertifyTally& later) {
+    for (std::size_t i = 0; i < promises.size(); ++i) {
+      promises[i].checked += later.promises[i].checked;
+      promises[i].filter_decided += later.promises[i].filter_decided;
+      promises[i].violations += later.promises[i].violations;
+    }
+    for (std::size_t i = 0; i < times.size(); ++i) times[i].tally.merge(later.times[i].tally, 0);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const BoxCheck& b = later.boxes[i];
+      boxes[i].boxes += b.boxes, boxes[i].box_violations += b.box_violations;
+      boxes[i].soup_pairs += b.soup_pairs, boxes[i].exact_pairs += b.exact_pairs;
+      boxes[i].cull_violations += b.cull_violations;
+    }
+    for (std::size_t i = 0; i < metamorphic.size(); ++i) {
+      metamorphic[i].checked += later.metamorphic[i].checked;
+      metamorphic[i].violations += later.metamorphic[i].violations;
+    }
+    truths += later.truths, truth_violations += later.truth_violations;
+    queries += later.queries;
+    if (!first) first = later.first;
+  }
+};
+
+// Every method with a promise, on every query decision it makes and every box it builds, against
+// the exact twin through the checker (check/checker.hpp). The checks are const: each writes into
+// the CertifyTally it is given, so queries are checked on every core (check_queries) and the
+// CertifyTally merged into the certificate (record) in input order.
+class Certifier {
+ public:
+  explicit Certifier(Certificate& c) : c_(c) {
+    fs::create_directories(c.options.out_dir);
+    for (const Method& m : methods_)
+      for (const Decision d : kQueryDecisions)
+        if (m.test[std::size_t(d)]) zero_.promises.push_back({m.name, d, m.promise});
+    for (const Method& m : timed_)
+      for (const Decision d : kToiDecisions)
+        if (m.toi[toi_index(d)]) zero_.times.push_back({m.name, d, m.time_promise, {}});
+    for (const BoxMethod& b : boxes_) {
+      zero_.boxes.push_back({b.name, b.k});
+      zero_.boxes.back().tree = b.builds_tree;
+    }
+    zero_.metamorphic = metamorphic_.rows();
+    total_ = zero_;
+    write_counts();
+  }
+
+  // Every query of qs, on every core; the certificate then counts them in order.
+  void check_queries(const std::vector<QueryRecord>& qs) { record(tally(qs)); }
+
+  // What qs adds to the certificate: checked on every core, merged in order. Safe to call from
+  // several threads at once.
+  CertifyTally tally(const std::vector<QueryRecord>& qs) const {
+    const auto check_chunk = [&](std::size_t begin, std::size_t end, CertifyTally& t) {
+      for (std::size_t i = begin; i < end; ++i) check_query(qs[i], t);
+    };
+    CertifyTally sum = zero_;
+    for (const CertifyTally& t : parts_in_order(qs.size(), 16, zero_, check_chunk)) sum.add(t);
+    sum.queries = long(qs.size());
+    return sum;
+  }
+
+  const CertifyTally& zero() const { return zero_; }
+
+  // Soup pairs (a[i], b[i]), as check_queries.
+  void check_soups(const std::vector<Soup>& a, const std::vector<Soup>& b) {
+    const auto parts = parts_in_order(
+        a.size(), 1, zero_,
+        [&](std::size_t i, std::size_t, CertifyTally& t) { check_soup_pair(a[i], b[i], t); });
+    for (const CertifyTally& t : parts) record(t);
+  }
+
+  // t's counts into the certificate; its violation, if the certificate's first, saved.
+  void record(const CertifyTally& t) {
+    total_.add(t);
+    write_counts();
+    if (!t.first || !c_.first_violation.empty()) return;
+    const fs::path file = fs::path(c_.options.out_dir) / t.first->file;
+    write_file_atomically(file.string(), t.first->text);
+    c_.first_violation = t.first->what + ", saved to " + file.string();
+  }
+
+ private:
+  // The certificate's rows and counts are total_'s.
+  void write_counts() {
+    c_.promises = total_.promises, c_.boxes = total_.boxes, c_.metamorphic = total_.metamorphic;
+    c_.times = total_.times;
+    c_.truths = total_.truths, c_.truth_violations = total_.truth_violations;
+  }
+
+  void check_query(const QueryRecord& r, CertifyTally& t) const {
+    const RecordScope asking(r);  // a plug-in's crash names r
+    const Query& q = r.query;
+    check_boxes(r, std::vector<Vec3>(q.x.begin(), q.x.end()), t);
+    if (q.is_static_vf()) {
+      check_boxes(r, {q.b0(), q.b1()}, t);
+      check_boxes(r, {q.d(), q.e(), q.f()}, t);
+    }
+    const bool twin = twin_hit(q);
+    check_truth(r, twin, t);
+    if (const std::optional<std::string> broken = metamorphic_.check(q, twin, t.metamorphic))
+      violation(with_truth(r, twin), *broken, t);
+    const Decision d = decision_of(q);
+    for (std::size_t i = 0; i < t.promises.size(); ++i) {
+      PromiseCheck& p = t.promises[i];
+      if (p.decision != d) continue;
+      const Method& m = method(p.method);
+      const auto& filter = m.filter[std::size_t(d)];
+      p.filter_decided += filter && filter(q) != Filtered::Uncertain;
+      ++p.checked;
+      const Verdicts v = check(m, q, twin);
+      if (v.kept) continue;
+      ++p.violations;
+      violation(with_truth(r, twin), describe(m, v) + " (" + to_string(d) + ")", t);
+    }
+    check_times(r, twin, t);
+  }
+
+  // Each time-promised method's time of impact against the exact earliest contact.
+  void check_times(const QueryRecord& r, bool twin, CertifyTally& t) const {
+    if (t.times.empty()) return;
+    const Query& q = r.query;
+    const Decision d = toi_decision_of(q);
+    const TimeTwin exact = time_twin(q);
+    for (TimePromiseCheck& row : t.times) {
+      if (row.decision != d) continue;
+      const Method& m = named(timed_, row.method);
+      const TimeCheck c = check_time(m, q, c_.options.toi_width, exact);
+      row.tally.add(c, 0, 0);
+      if (!c.kept) violation(with_truth(r, twin), describe(m, c) + " (" + to_string(d) + ")", t);
+    }
+  }
+
+  static QueryRecord with_truth(QueryRecord r, bool twin) {
+    r.truth = truth_of(twin);
+    return r;
+  }
+
+  void check_truth(const QueryRecord& q, bool twin, CertifyTally& t) const {
+    const std::optional<bool> agrees = twin_matches_truth(stated(q.truth), twin);
+    if (!agrees) return;
+    ++t.truths;
+    if (*agrees) return;
+    ++t.truth_violations;
+    violation(q,
+              "exact says " + std::string(twin ? "hit" : "no") + ", the stored truth says " +
+                  (q.truth == Truth::Yes ? "hit" : "no"),
+              t);
+  }
+
+  // The FDH tree of each certified k culls no pair whose exact k-DOPs overlap.
+  void check_soup_pair(const Soup& a, const Soup& b, CertifyTally& t) const {
+    for (BoxCheck& box : t.boxes) {
+      if (!is_valid_k(box.k) || !box.tree) continue;
+      with_k(box.k, [&](auto kc) {
+        constexpr int K = decltype(kc)::value;
+        const Bvh<K> ta(a.tris, a.x0, a.x1), tb(b.tris, b.x0);
+        std::vector<std::pair<int, int>> found;
+        traverse(ta, tb, found);
+        const auto pairs = exact::overlapping_pairs(K, primitive_corners(a.tris, a.x0, a.x1),
+                                                    primitive_corners(b.tris, b.x0, {}));
+        ++box.soup_pairs;
+        box.exact_pairs += long(pairs.size());
+        const auto culled = culled_pairs(std::move(found), pairs);
+        if (culled.empty()) return;
+        ++box.cull_violations;
+        soup_violation(a, b, K, culled.front(), t);
+      });
+    }
+  }
+
+  static const Method& named(const std::vector<Method>& ms, const std::string& name) {
+    return *std::find_if(ms.begin(), ms.end(), [&](const Method& m) { return m.name == name; });
+  }
+  const Method& method(const std::string& name) const { return named(methods_, name); }
+
+  void check_boxes(const QueryRecord& q, const std::vector<Vec3>& pts, CertifyTally& t) const {
+    for (std::size_t i = 0; i < boxes_.size(); ++i) {
+      BoxCheck& box = t.boxes[i];
+      ++box.boxes;
+      const int s = check_box(boxes_[i], pts.data(), pts.size());
+      if (s < 0) continue;
+      ++box.box_violations;
+      violation(q,
+                "the " + box.method + " " + std::to_string(box.k) + "-DOP of " +
+                    std::to_string(pts.size()) + " of its points misses the exact extent in slab " +
+                    std::to_string(s),
+                t);
+    }
+  }
+
+  static void violation(const QueryRecord& q, const std::string& what, CertifyTally& t) {
+    if (t.first) return;
+    t.first = CertifyTally::Found{
+        what + " (query " + q.id + " from " +
+            (q.file.empty() ? "a generator" : q.file + ":" + std::to_string(q.line)) + ")",
+        "violation-" + case_hash(q.query) + ".vf", case_file_text(q, {"certify: " + what + "."})};
+  }
+
+  // A missed pair is saved as an OBJ: A at t = 0, A at t = 1 (its swept leaves), and B.
+  static void soup_violation(const Soup& a, const Soup& b, int k, std::pair<int, int> p,
+                             CertifyTally& t) {
+    if (t.first) return;
+    std::ostringstream os;
+    os << "# certify: the " << k << "-DOP tree missed the pair (" << p.first << ", " << p.second
+       << ") whose exact " << k << "-DOPs overlap\n";
+    int base = 1;
+    const auto object = [&](const char* name, const std::vector<Vec3>& x,
+                            const std::vector<Tri>& tris) {
+      char buf[128];
+      os << "o " << name << "\n";
+      for (const Vec3& v : x) {
+        std::snprintf(buf, sizeof buf, "v %a %a %a\n", v.x, v.y, v.z);
+        os << buf;
+      }
+      for (const Tri& tri : tris)
+        os << "f " << tri[0] + base << ' ' << tri[1] + base << ' ' << tri[2] + base << "\n";
+      base += int(x.size());
+    };
+    object("A_t0", a.x0, a.tris);
+    object("A_t1", a.x1, a.tris);
+    object("B", b.x0, b.tris);
+    t.first = CertifyTally::Found{"the " + std::to_string(k) + "-DOP tree missed a pair",
+                                  "violation-tree.obj", os.str()};
+  }
+
+  Certificate& c_;
+  const std::vector<Method> methods_ = promised_methods();
+  const std::vector<Method> timed_ = time_promised_methods();
+  const std::vector<BoxMethod> boxes_ = all_box_methods();
+  const MetamorphicCertifier metamorphic_;
+  CertifyTally zero_;   // every row, every count 0
+  CertifyTally total_;  // what record() has merged so far
+};
+
+}  // namespace fdh::verify
