@@ -8,6 +8,7 @@
 #include "fdh/certify/certify.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/run/json_text.hpp"
+#include "fdh/run/toi_report.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -57,20 +58,15 @@ json times_json(const Certificate& c) {
   json out = json::array();
   for (const TimePromiseCheck& p : c.times) {
     const TimeTally& t = p.tally;
-    out.push_back({{"method", p.method},
-                   {"decision", to_string(p.decision)},
-                   {"promise", to_string(p.promise)},
-                   {"width", c.options.toi_width},
-                   {"checked", t.checked},
-                   {"contacts", t.contacts},
-                   {"late", t.late},
-                   {"zero", t.zero},
-                   {"verdict_errors", t.verdict_errors},
-                   {"not_enclosed", t.not_enclosed},
-                   {"too_wide", t.too_wide},
-                   {"early_max", t.early_max()},
-                   {"early_median", t.early_median()},
-                   {"violations", t.broken}});
+    json j = {{"method", p.method},
+              {"decision", to_string(p.decision)},
+              {"promise", to_string(p.promise)},
+              {"width", c.options.toi_width}};
+    add_time_counts(j, t);
+    j["early_max"] = t.early_max();
+    j["early_median"] = t.early_median();
+    j["violations"] = t.broken;
+    out.push_back(std::move(j));
   }
   return out;
 }

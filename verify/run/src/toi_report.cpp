@@ -31,26 +31,34 @@ void print_block(std::ostream& os, const std::string& title, const ToiClassifica
   }
 }
 
+}  // namespace
+
+void add_time_counts(Json& j, const TimeTally& t) {
+  j["checked"] = t.checked;
+  j["contacts"] = t.contacts;
+  j["late"] = t.late;
+  j["zero"] = t.zero;
+  j["verdict_errors"] = t.verdict_errors;
+  j["not_enclosed"] = t.not_enclosed;
+  j["too_wide"] = t.too_wide;
+}
+
+namespace {
+
 Json methods_json(const ToiClassification& c) {
   Json methods = Json::object();
   for (const ToiResult& m : c.methods) {
     const TimeTally& t = m.tally;
     const bool any = t.checked > 0;
-    methods[m.name] = {
-        {"promise", to_string(m.promise)},
-        {"checked", t.checked},
-        {"contacts", t.contacts},
-        {"late", t.late},
-        {"zero", t.zero},
-        {"verdict_errors", t.verdict_errors},
-        {"not_enclosed", t.not_enclosed},
-        {"too_wide", t.too_wide},
-        {"broken", t.broken},
-        {"early_max", any ? Json(t.early_max()) : Json(nullptr)},
-        {"early_median", any ? Json(t.early_median()) : Json(nullptr)},
-        // Three decimals are more than the timing's precision.
-        {"toi_ns_per_query", any ? Json(std::round(m.ns_per_query * 1e3) / 1e3) : Json(nullptr)},
-        {"na", m.na}};
+    Json& j = methods[m.name];
+    j["promise"] = to_string(m.promise);
+    add_time_counts(j, t);
+    j["broken"] = t.broken;
+    j["early_max"] = any ? Json(t.early_max()) : Json(nullptr);
+    j["early_median"] = any ? Json(t.early_median()) : Json(nullptr);
+    // Three decimals are more than the timing's precision.
+    j["toi_ns_per_query"] = any ? Json(std::round(m.ns_per_query * 1e3) / 1e3) : Json(nullptr);
+    j["na"] = m.na;
   }
   return methods;
 }

@@ -27,6 +27,11 @@ void print_toi_table(std::ostream& os, const std::vector<FileToi>& files,
 //  "files": [{"file": F, "methods": {...}}, ...]}
 nlohmann::ordered_json toi_json(const std::vector<FileToi>& files, const ToiClassification& total);
 
+// Appends a time tally's counts to j, in the order every writer of them uses (classify's "toi"
+// block, the certificate's "times"): checked, contacts, late, zero, verdict_errors, not_enclosed,
+// too_wide.
+void add_time_counts(nlohmann::ordered_json& j, const TimeTally& t);
+
 // The per-query CSV's TOI columns: the header ",<m> t_lo,<m> t_hi" per method, and row i's
 // fields: each time in the fewest digits that read back exactly, "" and "" where the method
 // finds no contact, n/a where it gives no time.
