@@ -1,0 +1,113 @@
+// `fdhcert audit`'s engine: decides exactly whether a sequence of triangle-mesh frames (a cloth
+// and optional obstacles, same topology in every frame, every vertex moving linearly between
+// consecutive frames) ever penetrates:
+// - within a frame: two cloth triangles that share no vertex intersect, or a cloth triangle
+//   intersects an obstacle triangle (exact static triangle-triangle, from the segment-triangle
+//   decisions of `robust` with their exact fallback);
+// - during a step: a vertex passes through a triangle or an edge through an edge (moving
+//   vertex-face and edge-edge CCD, `robust` with its exact fallback), cloth against itself and
+//   against the obstacles (cloth vertices against obstacle triangles, obstacle vertices against
+//   cloth triangles, cloth edges against obstacle edges).
+// Frames are given one at a time (two in memory), so a long sequence streams.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "fdh/bvh.hpp"
+#include "fdh/ccd/toi.hpp"
+#include "fdh/query.hpp"
+#include "fdh/vec3.hpp"
+
+namespace fdh::audit {
+
+// The topology, fixed for the whole sequence. Indices count from 0 in file order.
+struct Topology {
+  int cloth_vertices = 0;
+  std::vector<Tri> cloth;  // triangles, indices into the cloth's vertices
+  int obstacle_vertices = 0;
+  std::vector<Tri> obstacle;  // triangles, indices into the obstacles' vertices (may be empty)
+};
+
+enum class ViolationKind {
+  SelfIntersection,      // frame: two cloth triangles sharing no vertex intersect
+  ObstacleIntersection,  // frame: a cloth triangle intersects an obstacle triangle
+  SelfVertexFace,        // step: a cloth vertex meets a cloth triangle not holding it
+  SelfEdgeEdge,          // step: two cloth edges sharing no vertex meet
+  ClothVertexObstacle,   // step: a cloth vertex meets an obstacle triangle
+  ObstacleVertexCloth,   // step: an obstacle vertex meets a cloth triangle
+  ClothEdgeObstacleEdge  // step: a cloth edge meets an obstacle edge
+};
+const char* to_string(ViolationKind k);  // "self-intersection", "self-vertex-face", ...
+bool is_step(ViolationKind k);           // a CCD contact during a step, not a frame's state
+
+struct Violation {
+  ViolationKind kind;
+  // A frame's: the frame. A step's: the frame it starts from (the step from frame to frame + 1).
+  int frame = 0;
+  // The two primitives: triangles (frame kinds, cloth first), or for a step the query's four
+  // vertices in fdh::Query's order (vertex-face: v f0 f1 f2; edge-edge: ea0 ea1 eb0 eb1), cloth
+  // vertex indices as they are, obstacle vertex indices as they are (the kind says which is
+  // which), and the triangle's index in `triangle` (vertex-face kinds; -1 otherwise).
+  std::array<int, 4> vertices{};
+  int triangle = -1;
+  std::array<int, 2> triangles{-1, -1};  // frame kinds: cloth triangle, other triangle
+  // A step's: the query (replayable by `classify` / `replay`) and its certified time of impact
+  // (robust_ccd_toi: t_lo <= t* <= t_hi, in step units). A frame's: the two triangles at the
+  // frame as a static edge-triangle query (the first edge found through the other triangle).
+  Query query;
+  Toi toi;
+};
+
+struct StepCounts {  // contacts during one step
+  long self_vertex_face = 0, self_edge_edge = 0;
+  long cloth_vertex_obstacle = 0, obstacle_vertex_cloth = 0, cloth_edge_obstacle_edge = 0;
+  long candidates = 0;  // CCD queries run
+  long total() const {
+    return self_vertex_face + self_edge_edge + cloth_vertex_obstacle + obstacle_vertex_cloth +
+           cloth_edge_obstacle_edge;
+  }
+};
+
+struct FrameReport {
+  int frame = 0;
+  long self_intersections = 0, obstacle_intersections = 0;  // within the frame
+  long static_candidates = 0;                               // triangle pairs tested
+  bool has_step = false;  // frame > 0: `step` is the step from frame - 1 to this frame
+  StepCounts step;
+  double seconds = 0;  // wall time of this frame's checks (broad and narrow phase)
+  // Up to Options::keep violations of this frame and of the step into it, earliest first (a
+  // step's before the frame it ends in; within a step by t_lo).
+  std::vector<Violation> violations;
+};
+
+struct Options {
+  int k = 18;          // the FDH's k (6, 14, 18 or 26)
+  int keep = 16;       // violations kept per frame report
+  int threads = 0;     // 0: every core
+  double toi_width = kDefaultToiWidth;
+};
+
+class Auditor {
+ public:
+  // Throws std::invalid_argument on a triangle with an index out of range or a repeated index.
+  Auditor(Topology topology, Options options = {});
+  ~Auditor();
+  Auditor(const Auditor&) = delete;
+  Auditor& operator=(const Auditor&) = delete;
+
+  // The next frame: the cloth's positions (cloth_vertices of them) and the obstacles'
+  // (obstacle_vertices; still obstacles pass the same positions every time). Checks the frame,
+  // and from the second frame on the step from the previous one. Throws std::invalid_argument
+  // on a wrong count or a coordinate that is not finite.
+  FrameReport add_frame(const std::vector<Vec3>& cloth, const std::vector<Vec3>& obstacle);
+
+  const Topology& topology() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fdh::audit
