@@ -64,8 +64,9 @@ struct AuditOptions {
   int k = 18, threads = 0, keep = 16;
 };
 
-const std::array<double, 3> kClothColour = {0.85, 0.25, 0.2}, kObstacleColour = {0.7, 0.7, 0.65},
-                            kMarkColour = {0.15, 0.45, 1.0};
+const std::array<double, 3> kAuditClothColour = {0.85, 0.25, 0.2},
+                            kAuditObstacleColour = {0.7, 0.7, 0.65},
+                            kAuditMarkColour = {0.15, 0.45, 1.0};
 
 audit::Topology topology_of(const SequenceTopology& s) {
   audit::Topology t;
@@ -123,10 +124,10 @@ struct FirstFrame {
 std::string picture(const FirstFrame& f, const audit::Violation& v, const audit::Topology& t) {
   const auto [mc, mo] = marked(v, t);
   // The marks first: the renderer keeps the first of two triangles at the same depth.
-  std::vector<SceneMesh> meshes = {{"marked", &f.cloth, &mc, kMarkColour},
-                                   {"marked obstacle", &f.obstacle, &mo, kMarkColour},
-                                   {"cloth", &f.cloth, &t.cloth, kClothColour},
-                                   {"obstacles", &f.obstacle, &t.obstacle, kObstacleColour}};
+  std::vector<SceneMesh> meshes = {{"marked", &f.cloth, &mc, kAuditMarkColour},
+                                   {"marked obstacle", &f.obstacle, &mo, kAuditMarkColour},
+                                   {"cloth", &f.cloth, &t.cloth, kAuditClothColour},
+                                   {"obstacles", &f.obstacle, &t.obstacle, kAuditObstacleColour}};
   return encode_png(render(meshes, 800, 600, frame_view({meshes[2], meshes[3]})));
 }
 
@@ -169,11 +170,15 @@ class AuditRun {
     if (first_ && !report_.kept().empty())
       write_file_atomically(dir + "/first-violation.png",
                             picture(*first_, report_.kept().front().violation, topology_));
-    for (const QueryRecord& q : report_.case_records()) {
+    for (const KeptViolation& k : report_.kept()) {
+      if (k.case_file.empty()) continue;
+      const int f = k.violation.frame;
       std::ostringstream os;
-      os << "# fdhcert audit: " << q.id << " (" << seq_.files().front() << " ...)\n";
-      write_native(os, q);
-      write_file_atomically(dir + "/" + q.file, os.str());
+      os << "# fdhcert audit: " << audit::to_string(k.violation.kind) << " in the step from "
+         << printable(seq_.files()[std::size_t(f)]) << " to "
+         << printable(seq_.files()[std::size_t(f) + 1]) << "\n";
+      write_native(os, case_record(k));
+      write_file_atomically(dir + "/" + k.case_file, os.str());
     }
   }
 

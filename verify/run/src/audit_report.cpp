@@ -142,19 +142,21 @@ void AuditReport::finish(double wall_seconds) {
   if (::getrusage(RUSAGE_SELF, &u) == 0) peak_bytes_ = long(u.ru_maxrss) * 1024;  // KiB on Linux
 }
 
+QueryRecord case_record(const KeptViolation& k) {
+  const audit::Violation& v = k.violation;
+  QueryRecord q;
+  q.query = v.query;
+  q.id = fmt::format("{}-step-{}-v{}-{}-{}-{}", audit::to_string(v.kind), v.frame, v.vertices[0],
+                     v.vertices[1], v.vertices[2], v.vertices[3]);
+  q.truth = Truth::Yes;
+  q.file = k.case_file;
+  return q;
+}
+
 std::vector<QueryRecord> AuditReport::case_records() const {
   std::vector<QueryRecord> out;
-  for (const KeptViolation& k : kept_) {
-    if (k.case_file.empty()) continue;
-    const audit::Violation& v = k.violation;
-    QueryRecord q;
-    q.query = v.query;
-    q.id = fmt::format("{}-step-{}-v{}-{}-{}-{}", audit::to_string(v.kind), v.frame, v.vertices[0],
-                       v.vertices[1], v.vertices[2], v.vertices[3]);
-    q.truth = Truth::Yes;
-    q.file = k.case_file;
-    out.push_back(std::move(q));
-  }
+  for (const KeptViolation& k : kept_)
+    if (!k.case_file.empty()) out.push_back(case_record(k));
   return out;
 }
 

@@ -42,6 +42,10 @@ struct AuditCounts {
   void add(const AuditCounts& c);
 };
 
+// A kept step violation's case: its query, an id naming the kind, the step and the vertices, the
+// exact truth 1, and `file` its case file.
+QueryRecord case_record(const KeptViolation& k);
+
 class AuditReport {
  public:
   // `keep`: the violations kept in the certificate, earliest first (at least 1);
@@ -66,7 +70,7 @@ class AuditReport {
   const std::vector<KeptViolation>& kept() const { return kept_; }
 
   // The replayable case files of the kept step violations: the query with its exact truth (1),
-  // `file` set to its name under the --out folder.
+  // `file` set to its name under the --out folder (case_record of each with a case file).
   std::vector<QueryRecord> case_records() const;
 
   // "clean: 40 frames, 39 steps, 0 violations" or "VIOLATION: ... first ... at step 3 (...)".
