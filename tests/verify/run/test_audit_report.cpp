@@ -69,7 +69,8 @@ TEST(AuditReport, CountsTheFirstViolationAndTheCap) {
   EXPECT_EQ(j["cost"]["wall_seconds"], 1.5);
   EXPECT_GT(j["cost"]["peak_memory_bytes"].get<long>(), 0);
   EXPECT_NE(r.markdown().find(r.summary_line()), std::string::npos);
-  EXPECT_NE(r.text().find("frame 1: 1 obstacle-intersection 2 cloth-vertex-obstacle"),
+  EXPECT_NE(r.text().find(
+                "frame 1: 1 obstacle-intersection; in the step from 0: 2 cloth-vertex-obstacle"),
             std::string::npos)
       << r.text();
 }

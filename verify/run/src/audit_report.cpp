@@ -98,6 +98,19 @@ std::string describe(const audit::Violation& v) {
                      v.vertices[0], v.vertices[1], v.vertices[2], v.vertices[3]);
 }
 
+// "2 self-intersection; in the step from 3: 1 self-vertex-face": a frame's nonzero counts.
+std::string frame_counts(const AuditCounts& c, std::size_t frame) {
+  std::string in_frame, in_step;
+  for (const ViolationKind k : kKinds) {
+    std::string& s = audit::is_step(k) ? in_step : in_frame;
+    if (const long n = count_of(c, k))
+      s += fmt::format("{}{} {}", s.empty() ? "" : ", ", n, audit::to_string(k));
+  }
+  if (in_step.empty()) return in_frame;
+  in_step = fmt::format("in the step from {}: {}", frame - 1, in_step);
+  return in_frame.empty() ? in_step : in_frame + "; " + in_step;
+}
+
 }  // namespace
 
 void AuditCounts::add(const AuditCounts& c) {
@@ -179,10 +192,7 @@ std::string AuditReport::text(int max_frames) const {
       continue;
     }
     ++shown;
-    std::string line = fmt::format("  frame {}:", f);
-    for (const ViolationKind k : kKinds)
-      if (const long n = count_of(c, k)) line += fmt::format(" {} {}", n, audit::to_string(k));
-    out += line + "\n";
+    out += fmt::format("  frame {}: {}\n", f, frame_counts(c, f));
   }
   if (more) out += fmt::format("  ... and {} more frames with violations\n", more);
   return out;
@@ -275,14 +285,11 @@ std::string AuditReport::markdown() const {
       md += fmt::format("| {} | {} | {} | {} |\n", i + 1, describe(kept_[i].violation), where,
                         kept_[i].case_file);
     }
-    md += "\n## Frames with violations\n\n| frame | counts |\n|---|---|\n";
+    md +=
+        "\n## Frames with violations\n\n| frame | in the frame; in the step into it |\n|---|---|\n";
     for (std::size_t f = 0; f < per_frame_.size(); ++f) {
       if (per_frame_[f].total() == 0) continue;
-      std::string line;
-      for (const ViolationKind k : kKinds)
-        if (const long n = count_of(per_frame_[f], k))
-          line += fmt::format("{}{} {}", line.empty() ? "" : ", ", n, audit::to_string(k));
-      md += fmt::format("| {} | {} |\n", f, line);
+      md += fmt::format("| {} | {} |\n", f, frame_counts(per_frame_[f], f));
     }
   }
   md += fmt::format(
