@@ -4,9 +4,60 @@
 
 namespace fdh::audit {
 
-PatchBoundaries::PatchBoundaries(const std::vector<NodeShape>& nodes, const MeshParts& mesh)
-    : start_(nodes.size(), -1), length_(nodes.size(), 0) {
+namespace {
+
+// The corner index c of t whose edge t[c] -> t[c + 1] is longest (ties: the first).
+int longest_edge(const Tri& t, const std::vector<Vec3>& x) {
+  int best = 0;
+  double longest = -1;
+  for (int c = 0; c < 3; ++c) {
+    const Vec3 d = x[t[(c + 1) % 3]] - x[t[c]];
+    const double l = dot(d, d);
+    if (l > longest) best = c, longest = l;
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<int> cell_partners(const MeshParts& mesh, const std::vector<Vec3>& x) {
+  const int n = int(mesh.tris.size());
+  // Each triangle's longest edge, undirected, with the triangle: sorted, a cell's two meet.
+  std::vector<std::array<int, 3>> longest(n);
+  for (int t = 0; t < n; ++t) {
+    const Tri& f = mesh.tris[t];
+    const int c = longest_edge(f, x), a = f[c], b = f[(c + 1) % 3];
+    longest[t] = {std::min(a, b), std::max(a, b), t};
+  }
+  std::sort(longest.begin(), longest.end());
+  std::vector<int> partner(n, -1);
+  for (int i = 0; i + 1 < n; ++i) {
+    const auto &p = longest[i], &q = longest[i + 1];
+    if (p[0] != q[0] || p[1] != q[1]) continue;
+    if ((i + 2 < n && longest[i + 2][0] == p[0] && longest[i + 2][1] == p[1]) ||
+        !mesh.oriented[p[2]] || !mesh.oriented[q[2]])
+      continue;  // a non-manifold or badly oriented edge: no cell
+    partner[p[2]] = q[2];
+    partner[q[2]] = p[2];
+  }
+  return partner;
+}
+
+PatchBoundaries::PatchBoundaries(const std::vector<NodeShape>& nodes, const MeshParts& mesh,
+                                 const std::vector<int>& partner)
+    : mesh_(&mesh), start_(nodes.size(), -1), length_(nodes.size(), 0) {
   if (nodes.empty()) return;
+  for (int t = 0; t < int(mesh.tris.size()); ++t) {
+    if (partner[t] < 0) continue;
+    const Tri &f = mesh.tris[t], &g = mesh.tris[partner[t]];
+    for (int c = 0; c < 3; ++c) {
+      const int u = f[c], v = f[(c + 1) % 3];
+      if (u != g[0] && u != g[1] && u != g[2]) continue;
+      if (v != g[0] && v != g[1] && v != g[2]) continue;
+      diagonal_.push_back({u, v, partner[t]});
+    }
+  }
+  std::sort(diagonal_.begin(), diagonal_.end());
   bool ok = true;
   boundary(nodes, mesh, 0, ok);
 }
@@ -52,7 +103,39 @@ std::vector<Edge> PatchBoundaries::boundary(const std::vector<NodeShape>& nodes,
 
 // Keeps the edges as an ordered loop when they form exactly one simple closed loop: every
 // vertex starts at most one edge, and following the edges from the first visits them all.
+// N's boundary made its cell completion's: across each boundary edge that is a cell's diagonal,
+// the partner's edges are added, and edges met both ways cancel (triangles oriented alike).
+void PatchBoundaries::complete_cells(std::vector<Edge>& edges) const {
+  const std::size_t n = edges.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto it = std::lower_bound(diagonal_.begin(), diagonal_.end(),
+                                     std::array<int, 3>{edges[i][0], edges[i][1], -1});
+    if (it == diagonal_.end() || (*it)[0] != edges[i][0] || (*it)[1] != edges[i][1]) continue;
+    const Tri& g = mesh_->tris[(*it)[2]];
+    for (int c = 0; c < 3; ++c) edges.push_back({g[c], g[(c + 1) % 3]});
+  }
+  const auto key = [](const Edge& e) {
+    return std::make_pair(std::min(e[0], e[1]), std::max(e[0], e[1]));
+  };
+  std::sort(edges.begin(), edges.end(),
+            [&](const Edge& a, const Edge& b) { return key(a) < key(b); });
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (i + 1 < edges.size() && key(edges[i]) == key(edges[i + 1])) {
+      if (edges[i] == edges[i + 1]) {  // the same way twice: no patch (never with oriented cells)
+        edges.clear();
+        return;
+      }
+      ++i;
+      continue;
+    }
+    edges[out++] = edges[i];
+  }
+  edges.resize(out);
+}
+
 void PatchBoundaries::keep_loop(int node, std::vector<Edge> edges) {
+  complete_cells(edges);
   if (edges.size() < 3) return;
   std::sort(edges.begin(), edges.end());
   for (std::size_t i = 0; i + 1 < edges.size(); ++i)

@@ -5,6 +5,7 @@
 #include "fdh/bvh.hpp"
 #include "fdh/normal_cone.hpp"
 #include "fdh/parallel/chunks.hpp"
+#include "kernel_centre.hpp"
 #include "patch_boundaries.hpp"
 
 namespace fdh::audit {
@@ -49,6 +50,30 @@ struct Task {
   bool obstacle;
 };
 
+// The positions a tree is built over: the first frame under a tiny generic shear. The tree's
+// median splits order triangles by their centres along a direction, and on a regular grid whole
+// rows of centres tie along every axis and diagonal; nth_element then cuts among the ties at
+// random, and the nodes become scattered sets of triangles whose boundary is never one loop, so
+// the normal cones cull nothing. The shear orders the ties by a second linear key, so the cuts
+// are straight lines and the nodes patches. It moves a point by at most 1e-3 of the mean edge
+// length (distinct keys keep their order) and by far more than a rounding. Only the tree's shape
+// depends on it: every pass refits the boxes from the true positions first.
+std::vector<Vec3> tie_broken(const std::vector<Tri>& tris, const std::vector<Vec3>& x) {
+  double edges = 0, extent = 0;
+  for (const Tri& t : tris) edges += norm(x[t[1]] - x[t[0]]);
+  for (const Vec3& p : x) extent = std::max(extent, max_abs(p - x[0]));
+  if (tris.empty() || edges == 0 || extent == 0) return x;
+  const double eta = 1e-3 * edges / double(tris.size()) / extent;
+  std::vector<Vec3> y(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const Vec3 p = x[i] - x[0];
+    y[i] = x[i] + eta * Vec3{0.7548776662 * p.y + 0.5698402910 * p.z,
+                             0.3247179572 * p.x + 0.8191725134 * p.z,
+                             0.6180339887 * p.x + 0.4142135624 * p.y};
+  }
+  return y;
+}
+
 // Chunks of work: about this many, whatever the thread count (results depend on sizes alone).
 constexpr std::size_t kChunks = 2048;
 
@@ -59,7 +84,10 @@ class TreesK : public Trees {
  public:
   TreesK(const MeshParts& cloth, const MeshParts& obstacle, const std::vector<Vec3>& x,
          const std::vector<Vec3>& y)
-      : cloth_(cloth), obstacle_(obstacle), ctree_(cloth.tris, x), otree_(obstacle.tris, y) {
+      : cloth_(cloth),
+        obstacle_(obstacle),
+        ctree_(cloth.tris, tie_broken(cloth.tris, x)),
+        otree_(obstacle.tris, tie_broken(obstacle.tris, y)) {
     const auto& nodes = ctree_.nodes();
     std::vector<NodeShape> shape(nodes.size());
     ends_.resize(nodes.size());
@@ -68,7 +96,8 @@ class TreesK : public Trees {
       shape[i] = n.leaf() ? NodeShape{-1, -1, ctree_.prims()[n.first]} : NodeShape{n.left, n.right};
       ends_[i] = subtree_end(nodes, int(i));
     }
-    loops_ = PatchBoundaries(shape, cloth);
+    partner_ = cell_partners(cloth, x);
+    loops_ = PatchBoundaries(shape, cloth, partner_);
     if (!nodes.empty()) cut(nodes, 0, 0, csub_);
     if (!otree_.empty()) cut(otree_.nodes(), 0, 0, osub_);
     normals_.resize(nodes.size());
@@ -113,25 +142,31 @@ class TreesK : public Trees {
         lean_[i] = lean_[n.left] + lean_[n.right];
         return;
       }
-      const Tri& f = t.tris()[t.prims()[n.first]];
-      normals_[i] = swept_normals(x0[f[1]] - x0[f[0]], y1[f[1]] - y1[f[0]], x0[f[2]] - x0[f[0]],
-                                  y1[f[2]] - y1[f[0]]);
+      // The leaf's triangle and its cell partner: flat() tests cell completions.
+      const int tri = t.prims()[n.first];
+      const auto swept = [&](const Tri& f) {
+        return swept_normals(x0[f[1]] - x0[f[0]], y1[f[1]] - y1[f[0]], x0[f[2]] - x0[f[0]],
+                             y1[f[2]] - y1[f[0]]);
+      };
+      normals_[i] = swept(t.tris()[tri]);
+      if (partner_[tri] >= 0) normals_[i] = merge(normals_[i], swept(t.tris()[partner_[tri]]));
       lean_[i] = normals_[i].lo + normals_[i].hi;  // a direction inside the box, to aim at
     });
   }
 
   // Whether the node's patch cannot touch itself during the step (normal_cone.hpp): its
-  // normals lean one way and its one boundary loop is star-shaped around its moving mean.
+  // normals lean one way and its one boundary loop is star-shaped around a moving centre.
   bool flat(int node, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) const {
     if (!loops_.has_loop(node)) return false;
     const int bit = best_direction(positive_directions(normals_[node]), lean_[node]);
     if (bit < 0) return false;
     thread_local std::vector<int> contour;
     contour.assign(loops_.begin(node), loops_.end(node));
-    Vec3 m0{}, m1{};
-    for (const int v : contour) m0 += x0[v], m1 += x1[v];
-    const double s = 1.0 / double(contour.size());
-    return contour_is_star_shaped(contour, x0, x1, s * m0, s * m1, bit);
+    // The centre: inside the projected loop's kernel at each end of the step (any moving
+    // centre is sound; this one passes where the patch is star-shaped at all).
+    const Vec3 m0 = kernel_centre(contour, x0, bit);
+    const Vec3 m1 = &x1 == &x0 ? m0 : kernel_centre(contour, x1, bit);
+    return contour_is_star_shaped(contour, x0, x1, m0, m1, bit);
   }
 
   // Top down from `node`: a flat node needs nothing, a leaf (one triangle) nothing either;
@@ -211,7 +246,8 @@ class TreesK : public Trees {
   const MeshParts& cloth_;
   const MeshParts& obstacle_;
   Bvh<K> ctree_, otree_;
-  std::vector<int> ends_;  // per cloth node: one past its subtree
+  std::vector<int> ends_;     // per cloth node: one past its subtree
+  std::vector<int> partner_;  // per cloth triangle: its cell's other one, or -1
   PatchBoundaries loops_;
   Subtrees csub_, osub_;
   std::vector<NormalBox> normals_;
