@@ -120,7 +120,7 @@ void register_audit() {
       benchmark::RegisterBenchmark(
           ("audit/" + std::string(scene) + "/grid:" + std::to_string(n)).c_str(),
           [scene, n](benchmark::State& st) { audit_sequence(st, scene, n); })
-          ->Iterations(n < 500 ? 10 : 1)
+          ->Iterations(n < 500 ? 3 : 1)
           ->UseRealTime()
           ->Unit(benchmark::kMillisecond);
 }
