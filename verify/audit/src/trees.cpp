@@ -44,6 +44,29 @@ void bottom_up(const Subtrees& s, const F& f) {
   for (auto i = s.top.rbegin(); i != s.top.rend(); ++i) f(*i);
 }
 
+// A node's axis-aligned boxes at each end of the step (merged exactly: min and max).
+struct Ends {
+  Aabb at0, at1;
+};
+inline Aabb box_of(const Tri& t, const std::vector<Vec3>& x) {
+  const Vec3 &a = x[t[0]], &b = x[t[1]], &c = x[t[2]];
+  return {{min_of(a.x, b.x, c.x), min_of(a.y, b.y, c.y), min_of(a.z, b.z, c.z)},
+          {max_of(a.x, b.x, c.x), max_of(a.y, b.y, c.y), max_of(a.z, b.z, c.z)}};
+}
+inline Aabb joined(const Aabb& a, const Aabb& b) {
+  return {{min_of(a.lo.x, b.lo.x), min_of(a.lo.y, b.lo.y), min_of(a.lo.z, b.lo.z)},
+          {max_of(a.hi.x, b.hi.x), max_of(a.hi.y, b.hi.y), max_of(a.hi.z, b.hi.z)}};
+}
+// Apart along an axis at both ends, the same way round: nothing under one node meets anything
+// under the other during the step (narrow_phase.cpp's apart_all_step, for whole subtrees).
+inline bool apart_all_step(const Ends& a, const Ends& b) {
+  for (int i = 0; i < 3; ++i)
+    if ((a.at0.lo[i] > b.at0.hi[i] && a.at1.lo[i] > b.at1.hi[i]) ||
+        (b.at0.lo[i] > a.at0.hi[i] && b.at1.lo[i] > a.at1.hi[i]))
+      return true;
+  return false;
+}
+
 // A task: two nodes whose leaf pairs are to be found, cloth with cloth or cloth with obstacle.
 struct Task {
   int a, b;
@@ -107,9 +130,9 @@ class TreesK : public Trees {
   std::vector<Part> run(const Pass& pass) override {
     const std::vector<Vec3> none;
     const bool moves = pass.ccd && *pass.c0 != *pass.c1;
-    update(ctree_, csub_, *pass.c0, moves ? *pass.c1 : none, true);
+    update(ctree_, csub_, *pass.c0, moves ? *pass.c1 : none, cends_, true);
     const bool obstacle_moves = pass.ccd && *pass.o0 != *pass.o1;
-    update(otree_, osub_, *pass.o0, obstacle_moves ? *pass.o1 : none, false);
+    update(otree_, osub_, *pass.o0, obstacle_moves ? *pass.o1 : none, oends_, false);
     const std::vector<Vec3>& x1 = moves ? *pass.c1 : *pass.c0;
     std::vector<Task> tasks = self_tasks(*pass.c0, x1);
     for (const auto& [a, b] : frontier(
@@ -128,15 +151,23 @@ class TreesK : public Trees {
  private:
   // Refit, swept over x0 -> x1 (x1 empty: still at x0), with the cloth's normal boxes.
   void update(Bvh<K>& t, const Subtrees& sub, const std::vector<Vec3>& x0,
-              const std::vector<Vec3>& x1, bool normals) {
+              const std::vector<Vec3>& x1, std::vector<Ends>& ends, bool normals) {
     if (t.empty()) return;
     const double w = Bvh<K>::widening(x0, x1);
     const std::vector<Vec3>& y1 = x1.empty() ? x0 : x1;
     const auto& nodes = t.nodes();
+    ends.resize(nodes.size());
     bottom_up(sub, [&](int i) {
       t.refit_node(i, x0, x1, w);
-      if (!normals) return;
       const auto& n = nodes[i];
+      if (n.leaf()) {
+        const Tri& f = t.tris()[t.prims()[n.first]];
+        ends[i] = {box_of(f, x0), box_of(f, y1)};
+      } else {
+        ends[i] = {joined(ends[n.left].at0, ends[n.right].at0),
+                   joined(ends[n.left].at1, ends[n.right].at1)};
+      }
+      if (!normals) return;
       if (!n.leaf()) {
         normals_[i] = merge(normals_[n.left], normals_[n.right]);
         lean_[i] = lean_[n.left] + lean_[n.right];
@@ -228,18 +259,30 @@ class TreesK : public Trees {
     out.push_back({a, b, false});
   }
 
-  // Every leaf pair under a task through the narrow phase.
+  // Every leaf pair under a task whose boxes meet (the swept k-DOPs overlap, and the boxes at
+  // the step's ends are not apart the same way round at both), through the narrow phase.
   void descend(const Task& task, const Pass& pass, Part& part) const {
-    thread_local std::vector<std::pair<int, int>> stack, pairs;
+    const Bvh<K>& b = task.obstacle ? otree_ : ctree_;
+    const std::vector<Ends>& bends = task.obstacle ? oends_ : cends_;
+    const auto* A = ctree_.nodes().data();
+    const auto* B = b.nodes().data();
+    thread_local std::vector<std::pair<int, int>> stack;
     stack.assign(1, {task.a, task.b});
-    pairs.clear();
-    const auto meet = [](const Kdop<K>& p, const Kdop<K>& q) { return overlap(p, q); };
-    if (task.obstacle) {
-      descend_pairs(ctree_, otree_, stack, pairs, meet);
-      for (const auto& [c, o] : pairs) obstacle_pair(cloth_, obstacle_, c, o, pass, part);
-    } else {
-      descend_pairs(ctree_, ctree_, stack, pairs, meet);
-      for (const auto& [a, b] : pairs) self_pair(cloth_, a, b, pass, part);
+    while (!stack.empty()) {
+      const auto [i, j] = stack.back();
+      stack.pop_back();
+      if (!overlap(A[i].box, B[j].box) || apart_all_step(cends_[i], bends[j])) continue;
+      std::pair<int, int> first, second;
+      if (split_pair(ctree_, b, i, j, first, second)) {
+        stack.push_back(second);
+        stack.push_back(first);
+        continue;
+      }
+      const int p = ctree_.prims()[A[i].first], q = b.prims()[B[j].first];
+      if (task.obstacle)
+        obstacle_pair(cloth_, obstacle_, p, q, pass, part);
+      else
+        self_pair(cloth_, p, q, pass, part);
     }
   }
 
@@ -250,6 +293,7 @@ class TreesK : public Trees {
   std::vector<int> partner_;  // per cloth triangle: its cell's other one, or -1
   PatchBoundaries loops_;
   Subtrees csub_, osub_;
+  std::vector<Ends> cends_, oends_;  // per node: its boxes at the step's ends
   std::vector<NormalBox> normals_;
   std::vector<Vec3> lean_;
   long flat_count_ = 0;
