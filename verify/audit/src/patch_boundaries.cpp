@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "fdh/parallel/chunks.hpp"
+
 namespace fdh::audit {
 
 namespace {
@@ -58,15 +60,50 @@ PatchBoundaries::PatchBoundaries(const std::vector<NodeShape>& nodes, const Mesh
     }
   }
   std::sort(diagonal_.begin(), diagonal_.end());
+  // The subtrees at depth 6 on every core, each with loops of its own, then the nodes above.
+  std::vector<int> roots;
+  subtree_roots(nodes, 0, 0, roots);
+  std::vector<Found> below(roots.size());
+  std::vector<std::vector<int>> loops(roots.size());
+  parallel::for_each_index(roots.size(), 1, [&](std::size_t r) {
+    below[r].edges = boundary(nodes, roots[r], below[r].ok, loops[r], nullptr);
+  });
+  std::vector<int> root_of(nodes.size(), -1);
+  for (std::size_t r = 0; r < roots.size(); ++r) {
+    root_of[roots[r]] = int(r);
+    const int offset = int(loops_.size());
+    loops_.insert(loops_.end(), loops[r].begin(), loops[r].end());
+    int end = roots[r];
+    while (nodes[end].left >= 0) end = nodes[end].right;
+    for (int i = roots[r]; i <= end; ++i)
+      if (start_[i] >= 0) start_[i] += offset;
+  }
+  Stop stop{&root_of, &below};
   bool ok = true;
-  boundary(nodes, mesh, 0, ok);
+  boundary(nodes, 0, ok, loops_, &stop);
+}
+
+void PatchBoundaries::subtree_roots(const std::vector<NodeShape>& nodes, int node, int depth,
+                                    std::vector<int>& out) {
+  if (depth == 6 || nodes[node].left < 0) {
+    out.push_back(node);
+    return;
+  }
+  subtree_roots(nodes, nodes[node].left, depth + 1, out);
+  subtree_roots(nodes, nodes[node].right, depth + 1, out);
 }
 
 // The node's directed boundary edges; ok false (and nothing returned) when the node holds a
 // triangle that is not oriented consistently with its neighbours. Children's boundaries are
 // merged: an edge in both, run in opposite directions, is inside the node.
-std::vector<Edge> PatchBoundaries::boundary(const std::vector<NodeShape>& nodes,
-                                            const MeshParts& mesh, int node, bool& ok) {
+std::vector<Edge> PatchBoundaries::boundary(const std::vector<NodeShape>& nodes, int node, bool& ok,
+                                            std::vector<int>& loops, const Stop* stop) {
+  if (stop && (*stop->root_of)[node] >= 0) {  // done below, on its own
+    Found& f = (*stop->below)[(*stop->root_of)[node]];
+    ok = f.ok;
+    return std::move(f.edges);
+  }
+  const MeshParts& mesh = *mesh_;
   const NodeShape& n = nodes[node];
   std::vector<Edge> edges;
   if (n.left < 0) {
@@ -76,8 +113,8 @@ std::vector<Edge> PatchBoundaries::boundary(const std::vector<NodeShape>& nodes,
     edges = {{t[0], t[1]}, {t[1], t[2]}, {t[2], t[0]}};
   } else {
     bool ok_left = true, ok_right = true;
-    edges = boundary(nodes, mesh, n.left, ok_left);
-    std::vector<Edge> right = boundary(nodes, mesh, n.right, ok_right);
+    edges = boundary(nodes, n.left, ok_left, loops, stop);
+    std::vector<Edge> right = boundary(nodes, n.right, ok_right, loops, stop);
     ok = ok_left && ok_right;
     if (!ok) return {};
     edges.insert(edges.end(), right.begin(), right.end());
@@ -97,7 +134,7 @@ std::vector<Edge> PatchBoundaries::boundary(const std::vector<NodeShape>& nodes,
     }
     edges.resize(out);
   }
-  keep_loop(node, edges);
+  keep_loop(node, edges, loops);
   return edges;
 }
 
@@ -134,7 +171,7 @@ void PatchBoundaries::complete_cells(std::vector<Edge>& edges) const {
   edges.resize(out);
 }
 
-void PatchBoundaries::keep_loop(int node, std::vector<Edge> edges) {
+void PatchBoundaries::keep_loop(int node, std::vector<Edge> edges, std::vector<int>& loops) {
   complete_cells(edges);
   if (edges.size() < 3) return;
   std::sort(edges.begin(), edges.end());
@@ -145,18 +182,18 @@ void PatchBoundaries::keep_loop(int node, std::vector<Edge> edges) {
     return it != edges.end() && (*it)[0] == v ? (*it)[1] : -1;
   };
   const int first = edges[0][0];
-  const std::size_t start = loops_.size();
+  const std::size_t start = loops.size();
   int v = first;
   for (std::size_t k = 0; k < edges.size(); ++k) {
-    loops_.push_back(v);
+    loops.push_back(v);
     v = next(v);
     if (v < 0 || (v == first && k + 1 < edges.size())) {
-      loops_.resize(start);
+      loops.resize(start);
       return;
     }
   }
   if (v != first) {
-    loops_.resize(start);
+    loops.resize(start);
     return;
   }
   start_[node] = int(start);

@@ -48,9 +48,21 @@ class PatchBoundaries {
   std::size_t size() const { return loops_.size(); }
 
  private:
-  std::vector<Edge> boundary(const std::vector<NodeShape>& nodes, const MeshParts& mesh, int node,
-                             bool& ok);
-  void keep_loop(int node, std::vector<Edge> edges);
+  // A subtree's boundary, computed on its own (on a core of its own) before the nodes above.
+  struct Found {
+    std::vector<Edge> edges;
+    bool ok = true;
+  };
+  struct Stop {  // where the pass above stops: the subtrees done below
+    const std::vector<int>* root_of;
+    std::vector<Found>* below;
+  };
+  static void subtree_roots(const std::vector<NodeShape>& nodes, int node, int depth,
+                            std::vector<int>& out);
+  // The node's directed boundary, its loop (if one) appended to `loops`.
+  std::vector<Edge> boundary(const std::vector<NodeShape>& nodes, int node, bool& ok,
+                             std::vector<int>& loops, const Stop* stop);
+  void keep_loop(int node, std::vector<Edge> edges, std::vector<int>& loops);
   void complete_cells(std::vector<Edge>& edges) const;
 
   const MeshParts* mesh_ = nullptr;
