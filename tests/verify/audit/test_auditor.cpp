@@ -140,6 +140,32 @@ TEST(Auditor, FindsAnEdgePassingThroughAnEdge) {
   EXPECT_EQ(r.violations[1].triangles, (std::array<int, 2>{0, 1}));
 }
 
+// The edge-edge case again with P as a still obstacle and Q as the cloth.
+TEST(Auditor, FindsAClothEdgePassingThroughAnObstacleEdge) {
+  Topology t;
+  t.cloth_vertices = 3;
+  t.cloth = {{0, 1, 2}};
+  t.obstacle_vertices = 3;
+  t.obstacle = {{0, 1, 2}};
+  const std::vector<Vec3> p = {{-1, 0, 0}, {1, 0, 0}, {0, 0, -1}};
+  std::vector<Vec3> q = {{0, -1, 1}, {0, 1, 1}, {0, 0, 2}};
+  Auditor audit(t);
+  EXPECT_EQ(audit.add_frame(q, p).obstacle_intersections, 0);
+  for (Vec3& x : q) x.z -= 1.5;
+  const FrameReport r = audit.add_frame(q, p);
+  EXPECT_EQ(r.step.cloth_edge_obstacle_edge, 1);
+  EXPECT_EQ(r.step.cloth_vertex_obstacle + r.step.obstacle_vertex_cloth, 0);
+  EXPECT_EQ(r.obstacle_intersections, 1);
+  ASSERT_EQ(r.violations.size(), 2u);
+  const Violation& v = r.violations[0];
+  EXPECT_EQ(v.kind, ViolationKind::ClothEdgeObstacleEdge);
+  EXPECT_EQ(v.vertices, (std::array<int, 4>{0, 1, 0, 1}));  // cloth edge, then obstacle edge
+  EXPECT_LE(v.toi.t_lo, 2.0 / 3);
+  EXPECT_GE(v.toi.t_hi, 2.0 / 3);
+  EXPECT_EQ(r.violations[1].kind, ViolationKind::ObstacleIntersection);
+  EXPECT_EQ(r.violations[1].triangles, (std::array<int, 2>{0, 0}));
+}
+
 TEST(Auditor, FindsAClothVertexThroughAStillObstacle) {
   const Mesh cloth = grid(4, 1.0, {-1.4, -1.45, 1});
   Mesh table;  // a 6 x 6 square at z = 0, two triangles
