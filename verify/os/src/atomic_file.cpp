@@ -1,5 +1,7 @@
 #include "fdh/os/atomic_file.hpp"
 
+#include "fdh/os/temporaries.hpp"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -18,11 +20,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Beside `path`, or in `temp_dir` when one is given.
+// Beside `path` (after removing what dead runs left there), or in `temp_dir` when one is given.
 std::string temp_path(const std::string& path, const std::string& temp_dir = "") {
   static std::atomic<unsigned long> serial{0};  // unique per call: threads may write at once
-  const std::string unique = std::to_string(::getpid()) + "." + std::to_string(serial++);
-  return temp_dir.empty() ? path + ".tmp." + unique : temp_dir + "/" + unique;
+  const unsigned long n = serial++;
+  if (!temp_dir.empty())
+    return temp_dir + "/" + std::to_string(::getpid()) + "." + std::to_string(n);
+  remove_dead_runs_temporaries(path);
+  return temporary_name(path, n);
 }
 
 [[noreturn]] void fail(const std::string& path, const std::string& what, int errno_value) {
@@ -128,6 +133,7 @@ void write_file_atomically(const std::string& path, const std::string& content) 
 void write_file_atomically(const std::string& path, const std::string& content,
                            const std::string& temp_dir) {
   const std::string tmp = temp_path(path, temp_dir);
+  const RecordedTemporary recorded(tmp);  // removed by SIGTERM or SIGINT until published
   const int fd = open_temp(path, tmp);
   const int err = write_all(fd, content) ? 0 : errno;
   publish(fd, tmp, path, err);
@@ -198,7 +204,8 @@ class AtomicFile::Buffer : public std::streambuf {
   std::vector<char> buf_;
 };
 
-AtomicFile::AtomicFile(std::string path) : path_(std::move(path)), tmp_(temp_path(path_)) {
+AtomicFile::AtomicFile(std::string path)
+    : path_(std::move(path)), tmp_(temp_path(path_)), recorded_(tmp_) {
   buf_ = std::make_unique<Buffer>(open_temp(path_, tmp_));
   out_ = std::make_unique<std::ostream>(buf_.get());
 }
