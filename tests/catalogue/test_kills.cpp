@@ -140,7 +140,7 @@ std::vector<std::string> kill_problems(const fs::path& out, std::vector<std::str
         problem("unexpected in .fuzz");
       }
     } else if (std::regex_match(name, m, beside) ||
-               std::regex_match(p.parent_path().filename().string(), m, chart_folder)) {
+               std::regex_match(p.parent_path().filename().string(), chart_folder)) {
       if (temporaries) temporaries->push_back(rel);
     } else if (ext == ".json") {
       try {

@@ -206,9 +206,10 @@ TEST_P(SecondProbeFullDisk, IsExit2NamingItAndKeepsThePreviousCharts) {
   const ProbeRun second = probe_run({args, dir});
   EXPECT_EQ(second.status, 2) << second.err;
   EXPECT_NE(second.err.find("No space left on device"), std::string::npos) << second.err;
-  if (GetParam() == "table1")
+  if (GetParam() == "table1") {
     EXPECT_NE(second.err.find("gnuplot failed drawing m/out/table1."), std::string::npos)
         << second.err;
+  }
   for (const auto& [name, bytes] : charts)
     EXPECT_EQ(probe_read(dir / "m" / "out" / name), bytes) << name << " changed";
   EXPECT_TRUE(probe_temporaries(dir / "m").empty()) << "a failed run left a temporary";
@@ -252,7 +253,7 @@ void probe_expect_json(const std::string& text, const std::string& what) {
     });
     EXPECT_TRUE(py.wait().ok()) << what << ": Python's json refused it";
   }
-  EXPECT_NO_THROW((void)nlohmann::json::parse(text)) << what;
+  EXPECT_TRUE(nlohmann::json::accept(text)) << what;
   EXPECT_NE(text.find(json_string(kLatin1)), std::string::npos) << what << ": no escaped name";
 }
 
@@ -262,8 +263,14 @@ TEST(SecondProbe, NamesThatAreNotUtf8GiveValidJson) {
   fs::create_directories(dir / "corpus");
   fs::copy_file(kData + "static.vf", dir / (kLatin1 + ".vf"));
   fs::copy_file(kData + "static.vf", dir / "corpus" / (kLatin1 + ".vf"));
-  std::ofstream(dir / "scenes" / (kLatin1 + ".scene"))
-      << probe_read(kProbeScene) << "\nname " << kLatin1 << "\nframes 2\ngrid 8\n";
+  {
+    std::ifstream in(kProbeScene);
+    std::ofstream scene(dir / "scenes" / (kLatin1 + ".scene"));
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("frames", 0) != 0 && line.rfind("grid", 0) != 0 && line.rfind("name", 0) != 0)
+        scene << line << "\n";
+    scene << "name " << kLatin1 << "\nframes 2\ngrid 8\n";
+  }
   const std::string scene = "scenes/" + kLatin1 + ".scene";
 
   ProbeRun r = probe_run({{"classify", "--json", kLatin1 + ".vf"}, dir});
@@ -382,7 +389,9 @@ TEST_P(SecondProbeFuzzLinks, AreRefusedAndNothingOutsideChanges) {
   std::ofstream(victim / "file") << "the victim's file\n";
   const std::vector<std::string> args = {"fuzz",    "--method", "robust", "--family", "angled",
                                          "--count", "40",       "--out",  "out"};
-  if (row.make_run_first) ASSERT_EQ(probe_run({args, dir}).status, 0);
+  if (row.make_run_first) {
+    ASSERT_EQ(probe_run({args, dir}).status, 0);
+  }
   fs::create_directories(out);
   // The path given, or the first of its kind (a run folder, a marker) the run made.
   fs::path at = out / row.link;
