@@ -215,7 +215,10 @@ TEST_P(SecondProbeFullDisk, IsExit2NamingItAndKeepsThePreviousCharts) {
   EXPECT_TRUE(probe_temporaries(dir / "m").empty()) << "a failed run left a temporary";
 }
 
-INSTANTIATE_TEST_SUITE_P(Catalogue, SecondProbeFullDisk, ::testing::Values("table1", "report"));
+INSTANTIATE_TEST_SUITE_P(Catalogue, SecondProbeFullDisk, ::testing::Values("table1", "report"),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           return info.param;
+                         });
 
 // --- Names are bytes: every JSON writer takes names and paths that are not UTF-8. -----------
 
