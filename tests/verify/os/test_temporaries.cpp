@@ -5,8 +5,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
+#include <thread>
 
 #include "fdh/os/child_process.hpp"
+#include "fdh/os/last_resort.hpp"
 #include "fdh/os/work_folder.hpp"
 #include "temp_dir.hpp"
 
@@ -51,6 +54,23 @@ TEST(Temporaries, NamesAndLiveProcesses) {
   const pid_t pid = child.pid();
   child.wait();
   EXPECT_FALSE(process_runs(pid));
+}
+
+// An exception that escapes a thread ends the process with status 3, its temporaries removed.
+TEST(LastResort, AnEscapedExceptionIsAnInternalErrorAfterTheTemporariesGo) {
+  const fs::path dir = fresh_temp_dir("last_resort");
+  const std::string temp = (dir / "out.tmp.1.0").string();
+  ChildProcess child([&] {
+    end_with_internal_error_on_terminate();
+    std::ofstream(temp) << "half";
+    const RecordedTemporary recorded(temp);
+    std::thread([] { throw std::logic_error("nobody catches this"); }).join();
+    return 0;
+  });
+  const ChildStatus s = child.wait();
+  EXPECT_TRUE(s.exited()) << s.words();
+  EXPECT_EQ(s.exit_code(), kInternalErrorStatus);
+  EXPECT_FALSE(fs::exists(temp));
 }
 
 TEST(WorkFolder, RefusesALinkAtItsTemporariesAndWritesThroughNone) {
