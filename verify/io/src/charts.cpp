@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "chart_files.hpp"
+#include "fdh/io/input_error.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/os/child_process.hpp"
 #include "fdh/os/temporaries.hpp"
@@ -125,10 +126,11 @@ GnuplotRun run_gnuplot(const std::string& script, const std::string& dir) {
   return run;
 }
 
-// The last line gnuplot printed, if any.
+// The last line gnuplot printed, if any: at most 200 bytes, control bytes escaped.
 std::string last_line(std::string text) {
   while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-  return text.substr(text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1);
+  const std::size_t from = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
+  return printable(std::string_view(text).substr(from, 200));
 }
 
 // Why a chart came out wrong: the disk's own reason when a write fails now (gnuplot ignores its
@@ -190,7 +192,8 @@ void draw_chart(const Chart& chart) {
     const std::optional<std::string> bytes = folder.read(name + "." + d.extension);
     const std::string problem = !bytes ? "gnuplot wrote no chart" : d.problem(*bytes);
     if (!problem.empty() || !run.status.ok())
-      throw std::runtime_error(fmt::format("gnuplot failed drawing {}: {}", final_path(d),
+      throw std::runtime_error(fmt::format("gnuplot failed drawing {}: {}",
+                                           printable(final_path(d)),
                                            failure_reason(run, folder, problem)));
   }
   for (const Drawing& d : kDrawings) {
