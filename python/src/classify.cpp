@@ -8,6 +8,7 @@
 #include "fdh/check/classify.hpp"
 #include "fdh/run/classification_output.hpp"
 #include "fdh/run/classify_files.hpp"
+#include "fdh/run/json_text.hpp"
 
 namespace fdh::python {
 namespace {
@@ -31,7 +32,8 @@ py::object classify_files(const std::vector<std::string>& files,
     py::gil_scoped_release release;
     c = verify::classify_files(files, ms, kind);
   }
-  return to_python(verify::classification_json(c.files, c.total, {gate}).dump());
+  return to_python(
+      verify::json_line(verify::classification_json(c.files, c.total, {gate}), "classify"));
 }
 
 // The same tallies for queries held in an array: one "file" named "<array>".
@@ -58,7 +60,7 @@ py::object classify_arrays(const Points& a, const std::string& kind, py::object 
     c = verify::classify(qs, truths, ms);
   }
   const auto j = verify::classification_json({{"<array>", c}}, c, {});
-  return to_python(j.dump());
+  return to_python(verify::json_line(j, "classify_arrays"));
 }
 
 }  // namespace

@@ -58,6 +58,7 @@ MarkerContent read_marker(const std::string& p) {
 void refuse_other_unfinished_runs(const std::string& meta, const fs::path& out,
                                   const FuzzParams& ours) {
   for (const std::string& dir : run_folders(meta, "tmp")) {
+    refuse_link(dir + "/manifest", "a run's manifest");
     const std::optional<FuzzParams> p = FuzzParams::read(dir + "/manifest");
     if (!p || *p == ours) continue;
     if (coverage_of(dir, p->first(), p->last()).todo.empty()) continue;
@@ -124,6 +125,7 @@ struct Run {
   explicit Run(const FuzzOptions& o) : opt(o), space(take_work_folder(out, o.lock_wait_seconds)) {
     refuse_other_unfinished_runs(space.dir(), out, params);
     const std::string manifest = run_dir + "/manifest";
+    refuse_link(manifest, "a run's manifest");
     const bool resumed = fs::exists(manifest);
     if (resumed) {
       const std::optional<FuzzParams> p = FuzzParams::read(manifest);
@@ -133,7 +135,7 @@ struct Run {
     }
     space.clear_stale_temporaries();
     make_folder(case_dir.string());
-    make_folder(run_dir);
+    space.make_subfolder(params.folder_name());
     if (!resumed) {
       space.write_whole(manifest, params.manifest().text());  // before any case
       sync_folder(run_dir);
