@@ -1,7 +1,8 @@
 // The catalogue of hostile plug-ins (issue 22, docs/plugins.md "When a plug-in fails"): one row
 // per way a plug-in can break fdhcert from outside its answers — a constructor that crashes, a
 // cut library, another machine's library, exit() at load or in the middle of a run (classify,
-// certify, a fuzz worker), prints on standard output, a call that never returns. Each row runs
+// certify, a fuzz worker), prints on standard output, a call that never returns (in classify and
+// in a fuzz worker, whose watchdog is its own after the fork). Each row runs
 // fdhcert as its own process (the plug-in may end it), with a deadline: it must end with the
 // documented status and message well within it, never hang.
 #include <fcntl.h>
@@ -228,6 +229,18 @@ const std::vector<Row>& rows() {
        {"fdhcert: plug-in hang-on-magic did not return within 1 s (--plugin-timeout) in "
         "vertex_face_ccd on query FILE:2\n"},
        4},
+      {"HangsInAFuzzWorker",
+       [](const fs::path& d) {
+         return Args{
+             "fuzz",     "--plugin-timeout", "1",        "--plugin",       rogue("hang-on-300"),
+             "--method", "hang-on-300",      "--family", "parallel-cross", "--count",
+             "2000",     "--threads",        "1",        "--out",          (d / "out").string()};
+       },
+       2,
+       {"fdhcert: plug-in hang-on-300 did not return within 1 s (--plugin-timeout) in "
+        "vertex_face_ccd on query 'parallel-cross': vf parallel-cross ",
+        "fuzz: a worker of method hang-on-300 ended with exit status 3 (its message is above)"},
+       10},
       {"HangsOnAQueryUnderTheDefaultLimit",
        [](const fs::path& d) {
          return Args{"classify", queries(d, 3, 2), "--plugin", rogue("hang-on-magic")};

@@ -12,6 +12,7 @@
 #define EXIT_ON_200 3   /* the 200th call of this process calls exit(0) */
 #define PRINTS 4        /* prints to standard output at load and on every call */
 #define HANG_ON_MAGIC 5 /* never returns on a query whose point starts at x = MAGIC */
+#define HANG_ON_300 6   /* never returns on the 300th call of this process (a fuzz worker's) */
 #define MAGIC 0.375     /* no probe query has it */
 
 __attribute__((constructor)) static void at_load(void) {
@@ -23,7 +24,10 @@ __attribute__((constructor)) static void at_load(void) {
 static int calls;
 
 static int vertex_face(const double x[8][3]) {
-  if (ROGUE == EXIT_ON_200 && ++calls == 200) exit(0);
+  ++calls;
+  if (ROGUE == EXIT_ON_200 && calls == 200) exit(0);
+  if (ROGUE == HANG_ON_300 && calls == 300)
+    for (;;) pause();
   if (ROGUE == PRINTS) {
     printf("printf from the plug-in\n");
     (void)!write(1, "write(1) from the plug-in\n", 26);
