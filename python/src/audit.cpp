@@ -14,14 +14,19 @@ namespace {
 
 using Faces = py::array_t<long long, py::array::c_style | py::array::forcecast>;
 
-std::vector<Tri> faces_of(const Faces& f, py::ssize_t vertices, const char* what) {
+// Faces as integers only: a float index (1.5) would be truncated into another face.
+std::vector<Tri> faces_of(const py::object& obj, py::ssize_t vertices, const char* what) {
+  const py::array a = py::array::ensure(obj);
+  if (!a || (a.dtype().kind() != 'i' && a.dtype().kind() != 'u'))
+    throw py::value_error(std::string(what) + " must be an M×3 array of integer vertex indices");
+  const Faces f = Faces::ensure(a);
   if (f.ndim() != 2 || f.shape(1) != 3)
     throw py::value_error(std::string(what) + " must be an M×3 array of vertex indices");
   std::vector<Tri> out(std::size_t(f.shape(0)));
   const auto v = f.unchecked<2>();
   for (py::ssize_t i = 0; i < f.shape(0); ++i)
     for (py::ssize_t c = 0; c < 3; ++c) {
-      const long long x = v(i, c);
+      const long long x = v(i, c);  // a uint64 beyond 2^63 wraps negative: refused below
       if (x < 0 || x >= vertices)
         throw py::value_error(std::string(what) + " " + std::to_string(i) + ": vertex index " +
                               std::to_string(x) + " is not in [0, " + std::to_string(vertices) +
@@ -52,11 +57,16 @@ py::ssize_t obstacle_vertices(const Points& o, py::ssize_t frames) {
   throw py::value_error("obstacles must be P×3 (fixed) or F×P×3 with the frames' F");
 }
 
-py::object audit(const Points& frames, const Faces& faces, const std::optional<Points>& obstacles,
-                 const std::optional<Faces>& obstacle_faces, int k, int threads, int keep) {
+py::object audit(const py::object& frames_in, const py::object& faces,
+                 const py::object& obstacles_in, const py::object& obstacle_faces, int k,
+                 int threads, int keep) {
+  // Coordinates refused where float64 would change them (arguments.cpp).
+  const Points frames = points_of(frames_in, "frames");
+  std::optional<Points> obstacles;
+  if (!obstacles_in.is_none()) obstacles = points_of(obstacles_in, "obstacles");
   if (frames.ndim() != 3 || frames.shape(2) != 3 || frames.shape(0) < 1)
     throw py::value_error("frames must be an F×N×3 array of float64 with F >= 1");
-  if (obstacles.has_value() != obstacle_faces.has_value())
+  if (obstacles.has_value() == obstacle_faces.is_none())
     throw py::value_error("obstacles and obstacle_faces go together");
   audit::Topology t;
   t.cloth_vertices = int(frames.shape(1));
@@ -64,7 +74,7 @@ py::object audit(const Points& frames, const Faces& faces, const std::optional<P
   if (obstacles) {
     const py::ssize_t p = obstacle_vertices(*obstacles, frames.shape(0));
     t.obstacle_vertices = int(p);
-    t.obstacle = faces_of(*obstacle_faces, p, "obstacle_faces");
+    t.obstacle = faces_of(obstacle_faces, p, "obstacle_faces");
   }
   audit::Options opt;
   opt.k = k, opt.threads = threads, opt.keep = keep;
@@ -72,6 +82,7 @@ py::object audit(const Points& frames, const Faces& faces, const std::optional<P
   verify::AuditReport report(t, opt, keep);
   const auto start = std::chrono::steady_clock::now();
   for (py::ssize_t f = 0; f < frames.shape(0); ++f) {
+    check_signals();  // Ctrl-C between frames
     const std::vector<Vec3> x = frame_of(frames, f);
     const std::vector<Vec3> o = obstacles ? frame_of(*obstacles, f) : std::vector<Vec3>{};
     py::gil_scoped_release release;

@@ -125,3 +125,15 @@ def test_bad_input():
     bad[1, 0, 0] = np.nan
     with pytest.raises(ValueError):
         fdhcert.audit(bad, faces)
+
+
+def test_refuses_what_it_would_change():
+    # As the other functions (docs/python.md, "What the module refuses"): no silent conversion.
+    frames, faces, _, _ = sequence(frames=2)
+    with pytest.raises(ValueError, match="complex"):
+        fdhcert.audit(frames.astype(np.complex128), faces)
+    with pytest.raises(ValueError, match="2\\^53"):
+        fdhcert.audit(np.full(frames.shape, 2**53 + 1, dtype=np.int64), faces)
+    with pytest.raises(ValueError, match="integer"):
+        fdhcert.audit(frames, faces.astype(np.float64) + 0.5)
+    assert fdhcert.audit(frames.astype(np.float32), faces)["frames"] == 2
