@@ -1,16 +1,18 @@
 """Bakes a Blender cloth scene headlessly and writes one OBJ per frame, `fdhcert audit`'s input.
 
   blender -b --factory-startup -P bake_cloth.py -- --scene drop|crumple --grid N --frames F \
-      --out DIR
+      --out DIR [--self-collision on|off]
 
 The scene is built from nothing (the factory scene's objects are deleted) with Blender's
 defaults everywhere except what the scene needs: the cloth's resolution, the frame range, the
 obstacle's Collision modifier and, for `crumple`, self-collision and the pins that crumple it.
-  drop     an N x N vertex cloth (2 m square, 1 m up) falls on a UV sphere (0.5 m, at the origin)
+  drop     an N x N vertex cloth (2 m square, 1 m up) falls on a UV sphere (0.5 m, at the origin);
+           self-collision off (Blender's default) unless --self-collision on
   crumple  an N x N vertex cloth (2 m square, 1 m up) with self-collision, its two edges at
            x = -1 and x = +1 pinned to hooks whose empties move towards each other (to
            x = -0.25 and +0.25) while turning half a turn each in opposite senses about the x
-           axis over the frames: the cloth is squeezed and twisted into folds.
+           axis over the frames: the cloth is squeezed and twisted into folds; self-collision on
+           unless --self-collision off.
 Frame f (1..F) is written to DIR/frame_0000f.obj: object `cloth`, the evaluated cloth mesh with
 the triangles Blender's collisions use (the loop triangles of frame 1, see write_frames), then for `drop` object
 `obstacles`, the sphere's, world coordinates printed with 17 significant digits. Every frame has
@@ -42,9 +44,13 @@ def parse_args(argv):
     p.add_argument("--grid", type=int, required=True, help="vertices along each side (>= 2)")
     p.add_argument("--frames", type=int, required=True, help="frames to bake and write (>= 2)")
     p.add_argument("--out", required=True, help="folder for frame_NNNNN.obj (created)")
+    p.add_argument("--self-collision", choices=("on", "off"),
+                   help="the cloth's self-collision (default: off for drop, on for crumple)")
     a = p.parse_args(args)
     if a.grid < 2 or a.frames < 2:
         p.error("--grid and --frames must be at least 2")
+    if a.self_collision is None:
+        a.self_collision = "on" if a.scene == "crumple" else "off"
     return a
 
 
@@ -68,15 +74,16 @@ def add_cloth(grid):
     return obj
 
 
-def add_cloth_modifier(obj, frames):
+def add_cloth_modifier(obj, frames, self_collision):
     mod = obj.modifiers.new("Cloth", "CLOTH")
     mod.point_cache.frame_start, mod.point_cache.frame_end = 1, frames
+    mod.collision_settings.use_self_collision = self_collision
     return mod
 
 
-def build_drop(grid, frames):
+def build_drop(grid, frames, self_collision):
     cloth = add_cloth(grid)
-    add_cloth_modifier(cloth, frames)
+    add_cloth_modifier(cloth, frames, self_collision)
     bpy.ops.mesh.primitive_uv_sphere_add(radius=SPHERE_RADIUS, location=(0.0, 0.0, 0.0))
     sphere = bpy.context.active_object
     sphere.name = "obstacles"
@@ -104,7 +111,7 @@ def add_hook(cloth, name, x, indices, frames, turn):
     empty.keyframe_insert("rotation_euler", frame=frames)
 
 
-def build_crumple(grid, frames):
+def build_crumple(grid, frames, self_collision):
     cloth = add_cloth(grid)
     half = CLOTH_SIZE / 2
     left = [v.index for v in cloth.data.vertices if v.co.x == -half]
@@ -117,9 +124,8 @@ def build_crumple(grid, frames):
     # The hooks come before the cloth in the stack: the pinned vertices follow them.
     add_hook(cloth, "hook_left", -half, left, frames, -HALF_TURN)
     add_hook(cloth, "hook_right", half, right, frames, HALF_TURN)
-    mod = add_cloth_modifier(cloth, frames)
+    mod = add_cloth_modifier(cloth, frames, self_collision)
     mod.settings.vertex_group_mass = "pin"
-    mod.collision_settings.use_self_collision = True
     return cloth, None
 
 
@@ -205,13 +211,15 @@ def main():
     a = parse_args(sys.argv)
     os.makedirs(a.out, exist_ok=True)
     scene = empty_scene(a.frames)
-    cloth, obstacle = (build_drop if a.scene == "drop" else build_crumple)(a.grid, a.frames)
+    build = build_drop if a.scene == "drop" else build_crumple
+    cloth, obstacle = build(a.grid, a.frames, a.self_collision == "on")
     seconds = bake()
     objects = [cloth] + ([obstacle] if obstacle else [])
     topology = write_frames(scene, objects, a.frames, a.out)
     shape = ", ".join(f"{name} {n} vertices {len(t)} triangles" for name, (n, t) in
                       topology.items())
-    print(f"bake_cloth: {a.scene} {a.grid}x{a.grid}, {a.frames} frames baked in {seconds:.1f} s "
+    print(f"bake_cloth: {a.scene} {a.grid}x{a.grid}, self-collision {a.self_collision}, "
+          f"{a.frames} frames baked in {seconds:.1f} s "
           f"by Blender {bpy.app.version_string}; {shape}; wrote {a.out}/frame_00001.obj .. "
           f"frame_{a.frames:05d}.obj")
 
