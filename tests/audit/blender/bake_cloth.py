@@ -129,6 +129,15 @@ def build_crumple(grid, frames, self_collision):
     return cloth, None
 
 
+def print_settings(mod, scene):
+    """The cloth's settings as baked (Blender's defaults but for self-collision), for the record."""
+    s, c = mod.settings, mod.collision_settings
+    print(f"bake_cloth: cloth settings: quality {s.quality} steps/frame at {scene.render.fps} fps, "
+          f"vertex mass {s.mass:.6g} kg, collision quality {c.collision_quality}, "
+          f"distance {c.distance_min:.6g} m, self-collision "
+          f"{'on' if c.use_self_collision else 'off'} (distance {c.self_distance_min:.6g} m)")
+
+
 def bake():
     t = time.monotonic()
     result = bpy.ops.ptcache.bake_all(bake=True)
@@ -213,6 +222,7 @@ def main():
     scene = empty_scene(a.frames)
     build = build_drop if a.scene == "drop" else build_crumple
     cloth, obstacle = build(a.grid, a.frames, a.self_collision == "on")
+    print_settings(cloth.modifiers["Cloth"], scene)
     seconds = bake()
     objects = [cloth] + ([obstacle] if obstacle else [])
     topology = write_frames(scene, objects, a.frames, a.out)
