@@ -28,6 +28,7 @@ void add_kdop(py::module_& m);
 void add_classify(py::module_& m);
 void add_scene(py::module_& m);
 void add_toi(py::module_& m);
+void add_audit(py::module_& m);
 
 // An N×8×3 array as N queries of `kind` (the order of fdh::Query: vertex-face v f0 f1 f2 at t = 0,
 // then at t = 1; edge-edge ea0 ea1 eb0 eb1, then at t = 1). ValueError for another shape or a

@@ -25,4 +25,5 @@ PYBIND11_MODULE(fdhcert, m) {
   add_kdop(m);
   add_classify(m);
   add_scene(m);
+  add_audit(m);
 }

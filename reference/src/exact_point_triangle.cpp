@@ -1,4 +1,5 @@
 #include "fdh/exact/point_triangle.hpp"
+#include "fdh/exact/triangle_triangle.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
@@ -7,6 +8,7 @@
 
 #include <array>
 #include <sstream>
+#include <variant>
 
 namespace fdh::exact {
 namespace {
@@ -189,6 +191,50 @@ bool point_triangle_hit(const Vec3& b0, const Vec3& b1, const Vec3& d, const Vec
   if (a == b) return P == Q ? P == a : S3(P, Q).has_on(a);
   const S3 hull(a, b);
   return P == Q ? hull.has_on(P) : CGAL::do_intersect(hull, S3(P, Q));
+}
+
+namespace {
+
+// A closed triangle as the simplex it spans: a proper triangle, a segment (zero area: the two
+// corners the third lies between) or a point. CGAL requires proper triangles and segments.
+using Simplex = std::variant<Epick::Triangle_3, Epick::Segment_3, Epick::Point_3>;
+
+Simplex simplex(const std::array<Vec3, 3>& t) {
+  using P3 = Epick::Point_3;
+  const P3 D = to_epick(t[0]), E = to_epick(t[1]), F = to_epick(t[2]);
+  if (!CGAL::collinear(D, E, F)) return Epick::Triangle_3(D, E, F);
+  P3 a = D, b = E;
+  if (CGAL::collinear_are_ordered_along_line(E, D, F))
+    a = E, b = F;
+  else if (CGAL::collinear_are_ordered_along_line(D, E, F))
+    a = D, b = F;
+  if (a == b && a == F) return a;
+  if (a == b) return Epick::Segment_3(a, F);  // D = E: the hull is DF
+  return Epick::Segment_3(a, b);
+}
+
+// Point against anything by has_on (or equality); the rest by do_intersect.
+bool meet(const Epick::Point_3& p, const Epick::Point_3& q) {
+  return p == q;
+}
+template <class S>
+bool meet(const S& s, const Epick::Point_3& p) {
+  return s.has_on(p);
+}
+template <class S>
+bool meet(const Epick::Point_3& p, const S& s) {
+  return s.has_on(p);
+}
+template <class S, class T>
+bool meet(const S& s, const T& t) {
+  return CGAL::do_intersect(s, t);
+}
+
+}  // namespace
+
+bool triangles_intersect(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b) {
+  return std::visit([](const auto& s, const auto& t) { return meet(s, t); }, simplex(a),
+                    simplex(b));
 }
 
 }  // namespace fdh::exact

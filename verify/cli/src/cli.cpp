@@ -59,8 +59,8 @@ class HelpFormatter : public CLI::Formatter {
 
 std::vector<Command> add_commands(CLI::App& app) {
   return {add_classify(app), add_fuzz(app),   add_replay(app),   add_generate(app),
-          add_certify(app),  add_report(app), add_simulate(app), add_table1(app),
-          add_scenes(app),   add_peers(app)};
+          add_certify(app),  add_report(app), add_simulate(app), add_audit(app),
+          add_table1(app),   add_scenes(app), add_peers(app)};
 }
 
 std::string main_help(const CLI::App& app) {

@@ -54,6 +54,7 @@ Command add_fuzz(CLI::App& app);
 Command add_replay(CLI::App& app);
 Command add_generate(CLI::App& app);
 Command add_simulate(CLI::App& app);
+Command add_audit(CLI::App& app);
 
 // --- Shared options and checks -------------------------------------------------------------
 

@@ -46,11 +46,12 @@ struct Violation {
   ViolationKind kind;
   // A frame's: the frame. A step's: the frame it starts from (the step from frame to frame + 1).
   int frame = 0;
-  // The two primitives: triangles (frame kinds, cloth first), or for a step the query's four
+  // The two primitives: triangles (frame kinds, cloth first, in `triangles`; `vertices` then
+  // all -1; two cloth triangles: the lower index first), or for a step the query's four
   // vertices in fdh::Query's order (vertex-face: v f0 f1 f2; edge-edge: ea0 ea1 eb0 eb1), cloth
   // vertex indices as they are, obstacle vertex indices as they are (the kind says which is
   // which), and the triangle's index in `triangle` (vertex-face kinds; -1 otherwise).
-  std::array<int, 4> vertices{};
+  std::array<int, 4> vertices{-1, -1, -1, -1};
   int triangle = -1;
   std::array<int, 2> triangles{-1, -1};  // frame kinds: cloth triangle, other triangle
   // A step's: the query (replayable by `classify` / `replay`) and its certified time of impact
@@ -83,9 +84,9 @@ struct FrameReport {
 };
 
 struct Options {
-  int k = 18;          // the FDH's k (6, 14, 18 or 26)
-  int keep = 16;       // violations kept per frame report
-  int threads = 0;     // 0: every core
+  int k = 18;       // the FDH's k (6, 14, 18 or 26)
+  int keep = 16;    // violations kept per frame report
+  int threads = 0;  // 0: every core
   double toi_width = kDefaultToiWidth;
 };
 

@@ -1,0 +1,130 @@
+#include "fdh/audit/auditor.hpp"
+
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "mesh_parts.hpp"
+#include "trees.hpp"
+
+namespace fdh::audit {
+
+const char* to_string(ViolationKind k) {
+  switch (k) {
+    case ViolationKind::SelfIntersection:
+      return "self-intersection";
+    case ViolationKind::ObstacleIntersection:
+      return "obstacle-intersection";
+    case ViolationKind::SelfVertexFace:
+      return "self-vertex-face";
+    case ViolationKind::SelfEdgeEdge:
+      return "self-edge-edge";
+    case ViolationKind::ClothVertexObstacle:
+      return "cloth-vertex-obstacle";
+    case ViolationKind::ObstacleVertexCloth:
+      return "obstacle-vertex-cloth";
+    case ViolationKind::ClothEdgeObstacleEdge:
+      return "cloth-edge-obstacle-edge";
+  }
+  return "?";
+}
+
+bool is_step(ViolationKind k) {
+  return k != ViolationKind::SelfIntersection && k != ViolationKind::ObstacleIntersection;
+}
+
+struct Auditor::Impl {
+  Topology topology;
+  Options options;
+  MeshParts cloth, obstacle;
+  std::unique_ptr<Trees> trees;
+  std::vector<Vec3> cloth_before, obstacle_before;  // the previous frame
+  int frames = 0;
+  std::optional<tbb::task_arena> arena;  // with Options::threads > 0
+
+  FrameReport frame(const std::vector<Vec3>& x, const std::vector<Vec3>& y);
+};
+
+namespace {
+
+void check_positions(const std::vector<Vec3>& x, int count, const char* what) {
+  if (int(x.size()) != count)
+    throw std::invalid_argument(std::string(what) + ": " + std::to_string(x.size()) +
+                                " vertices given, the topology has " + std::to_string(count));
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (!std::isfinite(x[i].x) || !std::isfinite(x[i].y) || !std::isfinite(x[i].z))
+      throw std::invalid_argument(std::string(what) + " vertex " + std::to_string(i) +
+                                  ": a coordinate is not finite");
+}
+
+}  // namespace
+
+Auditor::Auditor(Topology topology, Options options) : impl_(std::make_unique<Impl>()) {
+  if (!is_valid_k(options.k))
+    throw std::invalid_argument("k must be 6, 14, 18 or 26, not " + std::to_string(options.k));
+  if (options.threads < 0) throw std::invalid_argument("threads must be >= 0");
+  if (!(options.toi_width >= kMinToiWidth && options.toi_width <= 1))
+    throw std::invalid_argument("toi_width must be in [2^-52, 1]");
+  if (topology.cloth_vertices < 0 || topology.obstacle_vertices < 0)
+    throw std::invalid_argument("a vertex count is negative");
+  impl_->cloth = mesh_parts(topology.cloth_vertices, topology.cloth, "cloth");
+  impl_->obstacle = mesh_parts(topology.obstacle_vertices, topology.obstacle, "obstacle");
+  impl_->topology = std::move(topology);
+  impl_->options = options;
+  if (options.threads > 0) impl_->arena.emplace(options.threads);
+}
+
+Auditor::~Auditor() = default;
+
+const Topology& Auditor::topology() const {
+  return impl_->topology;
+}
+
+FrameReport Auditor::add_frame(const std::vector<Vec3>& cloth, const std::vector<Vec3>& obstacle) {
+  check_positions(cloth, impl_->topology.cloth_vertices, "cloth");
+  check_positions(obstacle, impl_->topology.obstacle_vertices, "obstacle");
+  if (impl_->arena) return impl_->arena->execute([&] { return impl_->frame(cloth, obstacle); });
+  return impl_->frame(cloth, obstacle);
+}
+
+// The frame's static check and, from the second frame on, the step into it: one pass of the
+// trees, whose parts are merged in order.
+FrameReport Auditor::Impl::frame(const std::vector<Vec3>& x, const std::vector<Vec3>& y) {
+  const auto start = std::chrono::steady_clock::now();
+  FrameReport r;
+  r.frame = frames;
+  r.has_step = frames > 0;
+  Pass pass;
+  pass.ccd = r.has_step;
+  pass.frame = frames;
+  pass.c0 = r.has_step ? &cloth_before : &x;
+  pass.c1 = &x;
+  pass.o0 = r.has_step ? &obstacle_before : &y;
+  pass.o1 = &y;
+  pass.keep = options.keep;
+  pass.toi_width = options.toi_width;
+  if (!trees) trees = make_trees(options.k, cloth, obstacle, x, y);
+  if (pass.ccd) vertex_boxes(pass);
+  std::vector<Part> parts = trees->run(pass);
+  Part all;
+  for (Part& p : parts) all.merge(p, options.keep);
+  std::sort(all.kept.begin(), all.kept.end(), earlier);
+  if (int(all.kept.size()) > options.keep) all.kept.resize(std::max(0, options.keep));
+  r.self_intersections = all.self_intersections;
+  r.obstacle_intersections = all.obstacle_intersections;
+  r.static_candidates = all.static_candidates;
+  r.step = all.step;
+  r.violations = std::move(all.kept);
+  cloth_before = x;
+  obstacle_before = y;
+  ++frames;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace fdh::audit

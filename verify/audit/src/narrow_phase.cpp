@@ -1,0 +1,216 @@
+#include "narrow_phase.hpp"
+
+#include <algorithm>
+#include <tuple>
+
+#include "fdh/ccd/robust.hpp"
+#include "fdh/exact/ccd.hpp"
+#include "fdh/exact/point_triangle.hpp"
+#include "fdh/parallel/chunks.hpp"
+#include "fdh/triangle_triangle.hpp"
+
+namespace fdh::audit {
+namespace {
+
+inline Aabb join(const Aabb& a, const Aabb& b) {
+  return {{min_of(a.lo.x, b.lo.x), min_of(a.lo.y, b.lo.y), min_of(a.lo.z, b.lo.z)},
+          {max_of(a.hi.x, b.hi.x), max_of(a.hi.y, b.hi.y), max_of(a.hi.z, b.hi.z)}};
+}
+inline bool meet(const Aabb& a, const Aabb& b) {
+  return !(a.hi.x < b.lo.x || b.hi.x < a.lo.x || a.hi.y < b.lo.y || b.hi.y < a.lo.y ||
+           a.hi.z < b.lo.z || b.hi.z < a.lo.z);
+}
+inline Aabb tri_box(const std::vector<Aabb>& box, const Tri& t) {
+  return join(join(box[t[0]], box[t[1]]), box[t[2]]);
+}
+
+long& count_of(StepCounts& c, ViolationKind k) {
+  switch (k) {
+    case ViolationKind::SelfVertexFace:
+      return c.self_vertex_face;
+    case ViolationKind::SelfEdgeEdge:
+      return c.self_edge_edge;
+    case ViolationKind::ClothVertexObstacle:
+      return c.cloth_vertex_obstacle;
+    case ViolationKind::ObstacleVertexCloth:
+      return c.obstacle_vertex_cloth;
+    default:
+      return c.cloth_edge_obstacle_edge;
+  }
+}
+
+// The four points of a query: ids into the vertex lists `a` (the first `split` of them) and `b`.
+Query query_of(QueryKind kind, const std::array<int, 4>& ids, int split,
+               const std::vector<Vec3>& a0, const std::vector<Vec3>& a1,
+               const std::vector<Vec3>& b0, const std::vector<Vec3>& b1) {
+  Query q;
+  q.kind = kind;
+  for (int i = 0; i < 4; ++i) {
+    q.x[i] = i < split ? a0[ids[i]] : b0[ids[i]];
+    q.x[i + 4] = i < split ? a1[ids[i]] : b1[ids[i]];
+  }
+  return q;
+}
+
+// One moving query: robust CCD, and for a contact its certified time of impact.
+void moving(const Query& q, ViolationKind kind, const std::array<int, 4>& ids, int tri,
+            const Pass& pass, Part& part) {
+  ++part.step.candidates;
+  if (!robust_ccd(q, exact::ccd_hit)) return;
+  ++count_of(part.step, kind);
+  Violation v;
+  v.kind = kind;
+  v.frame = pass.frame - 1;
+  v.vertices = ids;
+  v.triangle = tri;
+  v.query = q;
+  v.toi = robust_ccd_toi(q, pass.toi_width, exact::ccd_toi);
+  part.add(v, pass.keep);
+}
+
+// Triangles a (of the cloth) and b at the frame, by the robust triangle-triangle test.
+void frame_pair(const Triangle3& a, const Triangle3& b, ViolationKind kind, int ta, int tb,
+                const Pass& pass, Part& part, long& count) {
+  ++part.static_candidates;
+  const int e = robust_triangle_triangle_edge(a, b, exact::point_triangle_hit);
+  if (e < 0) return;
+  ++count;
+  Violation v;
+  v.kind = kind;
+  v.frame = pass.frame;
+  v.vertices = {-1, -1, -1, -1};
+  v.triangles = {ta, tb};
+  const Triangle3 &s = e < 3 ? a : b, &t = e < 3 ? b : a;
+  v.query.kind = QueryKind::VertexFace;
+  v.query.x = {s[e % 3], t[0], t[1], t[2], s[(e + 1) % 3], t[0], t[1], t[2]};
+  part.add(v, pass.keep);
+}
+
+Triangle3 corners(const std::vector<Vec3>& x, const Tri& t) {
+  return {x[t[0]], x[t[1]], x[t[2]]};
+}
+
+// Vertices [v, v_end) of mesh A against triangle `tri` of mesh B: split 1 in query_of.
+template <class Ids>
+void vertices_against(const int* v, const int* v_end, const std::vector<Aabb>& abox,
+                      const std::vector<Vec3>& a0, const std::vector<Vec3>& a1, const Tri& t,
+                      int tri, const Aabb& tbox, const std::vector<Vec3>& b0,
+                      const std::vector<Vec3>& b1, ViolationKind kind, const Pass& pass, Part& part,
+                      Ids same) {
+  for (; v != v_end; ++v) {
+    if (same(*v, t) || !meet(abox[*v], tbox)) continue;
+    const std::array<int, 4> ids{*v, t[0], t[1], t[2]};
+    moving(query_of(QueryKind::VertexFace, ids, 1, a0, a1, b0, b1), kind, ids, tri, pass, part);
+  }
+}
+
+}  // namespace
+
+void vertex_boxes(Pass& pass) {
+  const auto fill = [](const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
+                       std::vector<Aabb>& box) {
+    box.resize(x0.size());
+    parallel::for_chunks(x0.size(), 8192, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const Vec3 &p = x0[i], &q = x1[i];
+        box[i] = {{min_of(p.x, q.x), min_of(p.y, q.y), min_of(p.z, q.z)},
+                  {max_of(p.x, q.x), max_of(p.y, q.y), max_of(p.z, q.z)}};
+      }
+    });
+  };
+  fill(*pass.c0, *pass.c1, pass.cbox);
+  fill(*pass.o0, *pass.o1, pass.obox);
+}
+
+bool earlier(const Violation& a, const Violation& b) {
+  const bool sa = is_step(a.kind), sb = is_step(b.kind);
+  if (sa != sb) return sa;
+  if (sa)
+    return std::tie(a.toi.t_lo, a.toi.t_hi, a.kind, a.vertices) <
+           std::tie(b.toi.t_lo, b.toi.t_hi, b.kind, b.vertices);
+  return std::tie(a.kind, a.triangles) < std::tie(b.kind, b.triangles);
+}
+
+void Part::add(Violation v, int keep) {
+  if (keep <= 0) return;
+  kept.push_back(v);
+  if (kept.size() < 2 * std::size_t(keep)) return;
+  std::nth_element(kept.begin(), kept.begin() + keep, kept.end(), earlier);
+  kept.resize(keep);
+}
+
+void Part::merge(Part& other, int keep) {
+  step.self_vertex_face += other.step.self_vertex_face;
+  step.self_edge_edge += other.step.self_edge_edge;
+  step.cloth_vertex_obstacle += other.step.cloth_vertex_obstacle;
+  step.obstacle_vertex_cloth += other.step.obstacle_vertex_cloth;
+  step.cloth_edge_obstacle_edge += other.step.cloth_edge_obstacle_edge;
+  step.candidates += other.step.candidates;
+  self_intersections += other.self_intersections;
+  obstacle_intersections += other.obstacle_intersections;
+  static_candidates += other.static_candidates;
+  for (Violation& v : other.kept) add(v, keep);
+}
+
+void self_pair(const MeshParts& cloth, int a, int b, const Pass& pass, Part& part) {
+  const Tri &ta = cloth.tris[a], &tb = cloth.tris[b];
+  const auto& x0 = *pass.c0;
+  const auto& x1 = *pass.c1;
+  if (pass.ccd) {
+    const Aabb ba = tri_box(pass.cbox, ta), bb = tri_box(pass.cbox, tb);
+    if (!meet(ba, bb)) return;  // nothing of a meets anything of b, the frame's pair included
+    const auto in = [](int v, const Tri& t) { return v == t[0] || v == t[1] || v == t[2]; };
+    constexpr auto kVF = ViolationKind::SelfVertexFace;
+    vertices_against(cloth.vertices_begin(a), cloth.vertices_end(a), pass.cbox, x0, x1, tb, b, bb,
+                     x0, x1, kVF, pass, part, in);
+    vertices_against(cloth.vertices_begin(b), cloth.vertices_end(b), pass.cbox, x0, x1, ta, a, ba,
+                     x0, x1, kVF, pass, part, in);
+    for (const int* e = cloth.edges_begin(a); e != cloth.edges_end(a); ++e) {
+      const Edge& ea = cloth.edges[*e];
+      const Aabb eab = join(pass.cbox[ea[0]], pass.cbox[ea[1]]);
+      for (const int* g = cloth.edges_begin(b); g != cloth.edges_end(b); ++g) {
+        const Edge& eb = cloth.edges[*g];
+        if (ea[0] == eb[0] || ea[0] == eb[1] || ea[1] == eb[0] || ea[1] == eb[1]) continue;
+        if (!meet(eab, join(pass.cbox[eb[0]], pass.cbox[eb[1]]))) continue;
+        const std::array<int, 4> ids{ea[0], ea[1], eb[0], eb[1]};
+        moving(query_of(QueryKind::EdgeEdge, ids, 4, x0, x1, x0, x1), ViolationKind::SelfEdgeEdge,
+               ids, -1, pass, part);
+      }
+    }
+  }
+  if (shares_vertex(ta, tb)) return;
+  const int lo = std::min(a, b), hi = std::max(a, b);  // the pair named the same either way
+  frame_pair(corners(x1, cloth.tris[lo]), corners(x1, cloth.tris[hi]),
+             ViolationKind::SelfIntersection, lo, hi, pass, part, part.self_intersections);
+}
+
+void obstacle_pair(const MeshParts& cloth, const MeshParts& obstacle, int c, int o,
+                   const Pass& pass, Part& part) {
+  const Tri &tc = cloth.tris[c], &to = obstacle.tris[o];
+  if (pass.ccd) {
+    const Aabb bc = tri_box(pass.cbox, tc), bo = tri_box(pass.obox, to);
+    if (!meet(bc, bo)) return;
+    const auto never = [](int, const Tri&) { return false; };  // two meshes share no vertex
+    vertices_against(cloth.vertices_begin(c), cloth.vertices_end(c), pass.cbox, *pass.c0, *pass.c1,
+                     to, o, bo, *pass.o0, *pass.o1, ViolationKind::ClothVertexObstacle, pass, part,
+                     never);
+    vertices_against(obstacle.vertices_begin(o), obstacle.vertices_end(o), pass.obox, *pass.o0,
+                     *pass.o1, tc, c, bc, *pass.c0, *pass.c1, ViolationKind::ObstacleVertexCloth,
+                     pass, part, never);
+    for (const int* e = cloth.edges_begin(c); e != cloth.edges_end(c); ++e) {
+      const Edge& ea = cloth.edges[*e];
+      const Aabb eab = join(pass.cbox[ea[0]], pass.cbox[ea[1]]);
+      for (const int* g = obstacle.edges_begin(o); g != obstacle.edges_end(o); ++g) {
+        const Edge& eb = obstacle.edges[*g];
+        if (!meet(eab, join(pass.obox[eb[0]], pass.obox[eb[1]]))) continue;
+        const std::array<int, 4> ids{ea[0], ea[1], eb[0], eb[1]};
+        moving(query_of(QueryKind::EdgeEdge, ids, 2, *pass.c0, *pass.c1, *pass.o0, *pass.o1),
+               ViolationKind::ClothEdgeObstacleEdge, ids, -1, pass, part);
+      }
+    }
+  }
+  frame_pair(corners(*pass.c1, tc), corners(*pass.o1, to), ViolationKind::ObstacleIntersection, c,
+             o, pass, part, part.obstacle_intersections);
+}
+
+}  // namespace fdh::audit

@@ -1,0 +1,229 @@
+#include "trees.hpp"
+
+#include <algorithm>
+
+#include "fdh/bvh.hpp"
+#include "fdh/normal_cone.hpp"
+#include "fdh/parallel/chunks.hpp"
+#include "patch_boundaries.hpp"
+
+namespace fdh::audit {
+namespace {
+
+// A tree in preorder cut for passes on every core: the subtrees at depth 6 (or the leaves above
+// it), each a contiguous range of nodes, and the nodes above them.
+struct Subtrees {
+  std::vector<int> roots, ends, top;  // top in preorder
+};
+
+template <class Node>
+int subtree_end(const std::vector<Node>& nodes, int i) {
+  while (!nodes[i].leaf()) i = nodes[i].right;
+  return i + 1;
+}
+
+template <class Node>
+void cut(const std::vector<Node>& nodes, int node, int depth, Subtrees& s) {
+  if (depth == 6 || nodes[node].leaf()) {
+    s.roots.push_back(node);
+    s.ends.push_back(subtree_end(nodes, node));
+    return;
+  }
+  s.top.push_back(node);
+  cut(nodes, nodes[node].left, depth + 1, s);
+  cut(nodes, nodes[node].right, depth + 1, s);
+}
+
+// f(i) for every node, children before parents; each subtree on a core of its own.
+template <class F>
+void bottom_up(const Subtrees& s, const F& f) {
+  parallel::for_each_index(s.roots.size(), 1, [&](std::size_t r) {
+    for (int i = s.ends[r] - 1; i >= s.roots[r]; --i) f(i);
+  });
+  for (auto i = s.top.rbegin(); i != s.top.rend(); ++i) f(*i);
+}
+
+// A task: two nodes whose leaf pairs are to be found, cloth with cloth or cloth with obstacle.
+struct Task {
+  int a, b;
+  bool obstacle;
+};
+
+// Chunks of work: about this many, whatever the thread count (results depend on sizes alone).
+constexpr std::size_t kChunks = 2048;
+
+}  // namespace
+
+template <int K>
+class TreesK : public Trees {
+ public:
+  TreesK(const MeshParts& cloth, const MeshParts& obstacle, const std::vector<Vec3>& x,
+         const std::vector<Vec3>& y)
+      : cloth_(cloth), obstacle_(obstacle), ctree_(cloth.tris, x), otree_(obstacle.tris, y) {
+    const auto& nodes = ctree_.nodes();
+    std::vector<NodeShape> shape(nodes.size());
+    ends_.resize(nodes.size());
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const auto& n = nodes[i];
+      shape[i] = n.leaf() ? NodeShape{-1, -1, ctree_.prims()[n.first]} : NodeShape{n.left, n.right};
+      ends_[i] = subtree_end(nodes, int(i));
+    }
+    loops_ = PatchBoundaries(shape, cloth);
+    if (!nodes.empty()) cut(nodes, 0, 0, csub_);
+    if (!otree_.empty()) cut(otree_.nodes(), 0, 0, osub_);
+    normals_.resize(nodes.size());
+    lean_.resize(nodes.size());
+  }
+
+  std::vector<Part> run(const Pass& pass) override {
+    const std::vector<Vec3> none;
+    const bool moves = pass.ccd && *pass.c0 != *pass.c1;
+    update(ctree_, csub_, *pass.c0, moves ? *pass.c1 : none, true);
+    const bool obstacle_moves = pass.ccd && *pass.o0 != *pass.o1;
+    update(otree_, osub_, *pass.o0, obstacle_moves ? *pass.o1 : none, false);
+    const std::vector<Vec3>& x1 = moves ? *pass.c1 : *pass.c0;
+    std::vector<Task> tasks = self_tasks(*pass.c0, x1);
+    for (const auto& [a, b] : frontier(
+             ctree_, otree_, 256, [](const Kdop<K>&p, const Kdop<K>&q) { return overlap(p, q); }))
+      tasks.push_back({a, b, true});
+    const std::size_t grain = std::max<std::size_t>(1, (tasks.size() + kChunks - 1) / kChunks);
+    return parallel::parts_in_order(tasks.size(), grain, Part{},
+                                    [&](std::size_t begin, std::size_t end, Part& part) {
+                                      for (std::size_t i = begin; i < end; ++i)
+                                        descend(tasks[i], pass, part);
+                                    });
+  }
+
+  long flat_nodes() const override { return flat_count_; }
+
+ private:
+  // Refit, swept over x0 -> x1 (x1 empty: still at x0), with the cloth's normal boxes.
+  void update(Bvh<K>& t, const Subtrees& sub, const std::vector<Vec3>& x0,
+              const std::vector<Vec3>& x1, bool normals) {
+    if (t.empty()) return;
+    const double w = Bvh<K>::widening(x0, x1);
+    const std::vector<Vec3>& y1 = x1.empty() ? x0 : x1;
+    const auto& nodes = t.nodes();
+    bottom_up(sub, [&](int i) {
+      t.refit_node(i, x0, x1, w);
+      if (!normals) return;
+      const auto& n = nodes[i];
+      if (!n.leaf()) {
+        normals_[i] = merge(normals_[n.left], normals_[n.right]);
+        lean_[i] = lean_[n.left] + lean_[n.right];
+        return;
+      }
+      const Tri& f = t.tris()[t.prims()[n.first]];
+      normals_[i] = swept_normals(x0[f[1]] - x0[f[0]], y1[f[1]] - y1[f[0]], x0[f[2]] - x0[f[0]],
+                                  y1[f[2]] - y1[f[0]]);
+      lean_[i] = normals_[i].lo + normals_[i].hi;  // a direction inside the box, to aim at
+    });
+  }
+
+  // Whether the node's patch cannot touch itself during the step (normal_cone.hpp): its
+  // normals lean one way and its one boundary loop is star-shaped around its moving mean.
+  bool flat(int node, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) const {
+    if (!loops_.has_loop(node)) return false;
+    const int bit = best_direction(positive_directions(normals_[node]), lean_[node]);
+    if (bit < 0) return false;
+    thread_local std::vector<int> contour;
+    contour.assign(loops_.begin(node), loops_.end(node));
+    Vec3 m0{}, m1{};
+    for (const int v : contour) m0 += x0[v], m1 += x1[v];
+    const double s = 1.0 / double(contour.size());
+    return contour_is_star_shaped(contour, x0, x1, s * m0, s * m1, bit);
+  }
+
+  // Top down from `node`: a flat node needs nothing, a leaf (one triangle) nothing either;
+  // otherwise its children's pair and what is below them. Nodes at `stop_depth` are left in
+  // `deeper` for a pass of their own.
+  void collect(int node, int depth, int stop_depth, const std::vector<Vec3>& x0,
+               const std::vector<Vec3>& x1, std::vector<Task>& out, std::vector<int>* deeper,
+               long& flats) const {
+    const auto& n = ctree_.nodes()[node];
+    if (n.leaf()) return;
+    if (depth == stop_depth && deeper) {
+      deeper->push_back(node);
+      return;
+    }
+    if (flat(node, x0, x1)) {
+      ++flats;
+      return;
+    }
+    collect(n.left, depth + 1, stop_depth, x0, x1, out, deeper, flats);
+    collect(n.right, depth + 1, stop_depth, x0, x1, out, deeper, flats);
+    split(n.left, n.right, out);
+  }
+
+  // The cloth's sibling pairs to descend: the top of the tree on this thread, the subtrees
+  // below depth 6 on every core, joined in order.
+  std::vector<Task> self_tasks(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+    std::vector<Task> tasks;
+    flat_count_ = 0;
+    if (ctree_.empty()) return tasks;
+    std::vector<int> deeper;
+    collect(0, 0, 6, x0, x1, tasks, &deeper, flat_count_);
+    struct Found {
+      std::vector<Task> tasks;
+      long flats = 0;
+    };
+    std::vector<Found> found(deeper.size());
+    parallel::for_each_index(deeper.size(), 1, [&](std::size_t r) {
+      collect(deeper[r], 0, -1, x0, x1, found[r].tasks, nullptr, found[r].flats);
+    });
+    for (const Found& f : found) {
+      tasks.insert(tasks.end(), f.tasks.begin(), f.tasks.end());
+      flat_count_ += f.flats;
+    }
+    return tasks;
+  }
+
+  // A pair of disjoint cloth nodes as tasks: split (while their boxes meet) until each side is
+  // small enough for one chunk, so that no chunk holds most of the work.
+  void split(int a, int b, std::vector<Task>& out) const {
+    const auto& nodes = ctree_.nodes();
+    if (!overlap(nodes[a].box, nodes[b].box)) return;
+    const int limit = std::max<int>(64, int(nodes.size() / kChunks));
+    std::pair<int, int> first, second;
+    if (ends_[a] - a + ends_[b] - b > limit && split_pair(ctree_, ctree_, a, b, first, second)) {
+      split(first.first, first.second, out);
+      split(second.first, second.second, out);
+      return;
+    }
+    out.push_back({a, b, false});
+  }
+
+  // Every leaf pair under a task through the narrow phase.
+  void descend(const Task& task, const Pass& pass, Part& part) const {
+    thread_local std::vector<std::pair<int, int>> stack, pairs;
+    stack.assign(1, {task.a, task.b});
+    pairs.clear();
+    const auto meet = [](const Kdop<K>& p, const Kdop<K>& q) { return overlap(p, q); };
+    if (task.obstacle) {
+      descend_pairs(ctree_, otree_, stack, pairs, meet);
+      for (const auto& [c, o] : pairs) obstacle_pair(cloth_, obstacle_, c, o, pass, part);
+    } else {
+      descend_pairs(ctree_, ctree_, stack, pairs, meet);
+      for (const auto& [a, b] : pairs) self_pair(cloth_, a, b, pass, part);
+    }
+  }
+
+  const MeshParts& cloth_;
+  const MeshParts& obstacle_;
+  Bvh<K> ctree_, otree_;
+  std::vector<int> ends_;  // per cloth node: one past its subtree
+  PatchBoundaries loops_;
+  Subtrees csub_, osub_;
+  std::vector<NormalBox> normals_;
+  std::vector<Vec3> lean_;
+  long flat_count_ = 0;
+};
+
+std::unique_ptr<Trees> make_trees(int k, const MeshParts& cloth, const MeshParts& obstacle,
+                                  const std::vector<Vec3>& x, const std::vector<Vec3>& y) {
+  return with_k(k, [&](auto kc) -> std::unique_ptr<Trees> {
+    return std::make_unique<TreesK<decltype(kc)::value>>(cloth, obstacle, x, y);
+  });
+}
+
+}  // namespace fdh::audit

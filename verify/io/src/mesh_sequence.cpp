@@ -1,0 +1,366 @@
+#include "fdh/io/mesh_sequence.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+
+#include "fdh/io/input_error.hpp"
+
+namespace fdh::verify {
+namespace fs = std::filesystem;
+
+std::vector<std::string> frame_files(const std::vector<std::string>& args) {
+  std::vector<std::string> out;
+  for (const std::string& a : args) {
+    std::error_code ec;
+    const fs::file_status st = fs::status(a, ec);
+    if (!fs::exists(st)) throw InputError(a, 0, "no such file or folder");
+    if (!fs::is_directory(st)) {
+      out.push_back(a);
+      continue;
+    }
+    std::vector<std::string> found;
+    for (const fs::directory_entry& e : fs::directory_iterator(a, ec)) {
+      std::string ext = e.path().extension().string();
+      std::transform(ext.begin(), ext.end(), ext.begin(), [](char c) { return char(c | 0x20); });
+      if (ext == ".obj" && !e.is_directory()) found.push_back(e.path().string());
+    }
+    if (ec) throw InputError(a, 0, "cannot list the folder: " + ec.message());
+    if (found.empty()) throw InputError(a, 0, "a folder without an .obj file");
+    std::sort(found.begin(), found.end(), natural_less);
+    out.insert(out.end(), found.begin(), found.end());
+  }
+  return out;
+}
+
+namespace {
+
+bool digit(char c) {
+  return c >= '0' && c <= '9';
+}
+
+// Compares the digit runs starting at a[i] and b[j] as numbers; moves i and j past them.
+int compare_numbers(const std::string& a, std::size_t& i, const std::string& b, std::size_t& j) {
+  while (i < a.size() && a[i] == '0' && i + 1 < a.size() && digit(a[i + 1])) ++i;
+  while (j < b.size() && b[j] == '0' && j + 1 < b.size() && digit(b[j + 1])) ++j;
+  std::size_t ei = i, ej = j;
+  while (ei < a.size() && digit(a[ei])) ++ei;
+  while (ej < b.size() && digit(b[ej])) ++ej;
+  int c = ei - i < ej - j ? -1 : ei - i > ej - j ? 1 : a.compare(i, ei - i, b, j, ej - j);
+  i = ei, j = ej;
+  return c < 0 ? -1 : c > 0 ? 1 : 0;
+}
+
+}  // namespace
+
+bool natural_less(const std::string& a, const std::string& b) {
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (digit(a[i]) && digit(b[j])) {
+      if (const int c = compare_numbers(a, i, b, j)) return c < 0;
+    } else {
+      if (a[i] != b[j]) return (unsigned char)a[i] < (unsigned char)b[j];
+      ++i, ++j;
+    }
+  }
+  if (i < a.size() || j < b.size()) return j < b.size();
+  return a < b;  // equal as numbers ("02", "2"): byte order
+}
+
+void Places::add(std::string file, std::shared_ptr<const std::vector<int>> lines) {
+  total_ += int(lines->size());
+  parts_.push_back({std::move(file), std::move(lines)});
+}
+
+std::string Places::at(int index) const {
+  for (const Part& p : parts_) {
+    if (index < int(p.lines->size()))
+      return printable(p.file) + ":" + std::to_string((*p.lines)[std::size_t(index)]);
+    index -= int(p.lines->size());
+  }
+  return "?";
+}
+
+namespace {
+
+using Lines = std::shared_ptr<const std::vector<int>>;
+
+Lines gather(const std::vector<int>& lines, const std::vector<int>& at) {
+  auto out = std::make_shared<std::vector<int>>();
+  out->reserve(at.size());
+  for (const int i : at) out->push_back(lines[std::size_t(i)]);
+  return out;
+}
+
+std::vector<Vec3> gather(const std::vector<Vec3>& x, const std::vector<int>& at) {
+  std::vector<Vec3> out;
+  out.reserve(at.size());
+  for (const int i : at) out.push_back(x[std::size_t(i)]);
+  return out;
+}
+
+std::string object_list(const ObjFile& f) {
+  std::string s;
+  for (const ObjObject& o : f.objects) s += (s.empty() ? "'" : ", '") + printable(o.name) + "'";
+  return s.empty() ? "none" : s;
+}
+
+// A frame file's faces as the first frame has them: what every later frame must repeat.
+class Shape {
+ public:
+  explicit Shape(const ObjFile& first)
+      : file_(first.path), vertices_(first.x.size()), objects_(first.objects) {
+    for (ObjObject& o : objects_) o.lines.clear();
+  }
+  const std::string& file() const { return file_; }
+
+  void check(const ObjFile& f) const {
+    if (f.x.size() != vertices_)
+      throw InputError(f.path, 0,
+                       std::to_string(f.x.size()) + " vertices, and " + printable(file_) + " has " +
+                           std::to_string(vertices_) + "; every frame needs the same");
+    if (f.objects.size() != objects_.size())
+      throw InputError(f.path, 0,
+                       "objects " + object_list(f) + ", and " + printable(file_) + " has " +
+                           std::to_string(objects_.size()) + "; every frame needs the same");
+    long face = 0;
+    for (std::size_t k = 0; k < objects_.size(); ++k) check_object(f, k, face);
+  }
+
+ private:
+  void check_object(const ObjFile& f, std::size_t k, long& face) const {
+    const ObjObject &want = objects_[k], &have = f.objects[k];
+    if (want.name != have.name)
+      throw InputError(f.path, have.lines.front(),
+                       "object '" + printable(have.name) + "' where " + printable(file_) +
+                           " has '" + printable(want.name) + "'");
+    if (want.tris.size() != have.tris.size())
+      throw InputError(f.path, 0,
+                       std::to_string(have.tris.size()) + " triangles in object '" +
+                           printable(have.name) + "', and " + printable(file_) + " has " +
+                           std::to_string(want.tris.size()));
+    for (std::size_t t = 0; t < want.tris.size(); ++t, ++face)
+      if (want.tris[t] != have.tris[t])
+        throw InputError(
+            f.path, have.lines[t],
+            "face " + std::to_string(face + 1) + " differs from " + printable(file_) + "'s");
+  }
+
+  std::string file_;
+  std::size_t vertices_;
+  std::vector<ObjObject> objects_;
+};
+
+// Which of a frame file's vertices and triangles are the cloth's and which the obstacles'.
+struct Split {
+  std::vector<int> cloth_v, obstacle_v;  // file indices, in file order
+  std::vector<Tri> cloth, obstacle;      // re-indexed
+  std::vector<std::size_t> cloth_objects, obstacle_objects;
+};
+
+// The vertices the objects' faces use, in file order, and the faces re-indexed to them.
+void take_objects(const ObjFile& f, const std::vector<std::size_t>& objects,
+                  std::vector<int>& owner, int mark, std::vector<int>& used,
+                  std::vector<Tri>& tris) {
+  for (const std::size_t k : objects)
+    for (std::size_t t = 0; t < f.objects[k].tris.size(); ++t)
+      for (const int i : f.objects[k].tris[t]) {
+        int& o = owner[std::size_t(i)];
+        if (o != 0 && o != mark)
+          throw InputError(
+              f.path, f.objects[k].lines[t],
+              "vertex " + std::to_string(i + 1) + " belongs to the cloth and to an obstacle");
+        o = mark;
+      }
+  std::vector<int> index(f.x.size(), -1);
+  for (std::size_t i = 0; i < f.x.size(); ++i)
+    if (owner[i] == mark) index[i] = int(used.size()), used.push_back(int(i));
+  for (const std::size_t k : objects)
+    for (const Tri& t : f.objects[k].tris)
+      tris.push_back(
+          {index[std::size_t(t[0])], index[std::size_t(t[1])], index[std::size_t(t[2])]});
+}
+
+Split split(const ObjFile& f, const std::string& cloth) {
+  Split s;
+  if (cloth.empty()) {  // the whole file, every vertex included
+    for (std::size_t k = 0; k < f.objects.size(); ++k) s.cloth_objects.push_back(k);
+    for (std::size_t i = 0; i < f.x.size(); ++i) s.cloth_v.push_back(int(i));
+    for (const ObjObject& o : f.objects)
+      s.cloth.insert(s.cloth.end(), o.tris.begin(), o.tris.end());
+    return s;
+  }
+  for (std::size_t k = 0; k < f.objects.size(); ++k)
+    (f.objects[k].name == cloth ? s.cloth_objects : s.obstacle_objects).push_back(k);
+  std::vector<int> owner(f.x.size(), 0);
+  take_objects(f, s.cloth_objects, owner, 1, s.cloth_v, s.cloth);
+  take_objects(f, s.obstacle_objects, owner, 2, s.obstacle_v, s.obstacle);
+  return s;
+}
+
+// The lines of the faces of `objects`, in order.
+Lines face_lines(const ObjFile& f, const std::vector<std::size_t>& objects) {
+  auto out = std::make_shared<std::vector<int>>();
+  for (const std::size_t k : objects)
+    out->insert(out->end(), f.objects[k].lines.begin(), f.objects[k].lines.end());
+  return out;
+}
+
+// No edge of the cloth in more than two triangles.
+void check_manifold(const ObjFile& f, const Split& s) {
+  std::vector<std::pair<std::uint64_t, int>> edges;  // (edge, triangle)
+  edges.reserve(s.cloth.size() * 3);
+  for (std::size_t t = 0; t < s.cloth.size(); ++t)
+    for (int e = 0; e < 3; ++e) {
+      const auto a = std::uint32_t(s.cloth[t][std::size_t(e)]);
+      const auto b = std::uint32_t(s.cloth[t][std::size_t((e + 1) % 3)]);
+      edges.push_back({(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), int(t)});
+    }
+  std::sort(edges.begin(), edges.end());
+  const Lines lines = face_lines(f, s.cloth_objects);
+  for (std::size_t i = 2; i < edges.size(); ++i) {
+    if (edges[i].first != edges[i - 2].first) continue;
+    const auto a = int(edges[i].first >> 32), b = int(edges[i].first & 0xffffffffu);
+    const int va = s.cloth_v[std::size_t(a)] + 1, vb = s.cloth_v[std::size_t(b)] + 1;
+    throw InputError(f.path, (*lines)[std::size_t(edges[i].second)],
+                     "non-manifold cloth: the edge between vertices " + std::to_string(va) +
+                         " and " + std::to_string(vb) + " is in more than two triangles");
+  }
+}
+
+// An obstacle file of its own: fixed (one file), or one file per frame (a folder).
+struct ObstacleSource {
+  std::vector<std::string> files;
+  std::unique_ptr<Shape> shape;
+  std::vector<Vec3> x;  // a fixed one's
+  std::vector<Tri> tris;
+  Lines vertex_lines, tri_lines;
+
+  void take(const ObjFile& f) {
+    x = f.x;
+    vertex_lines = std::make_shared<std::vector<int>>(f.vertex_lines);
+    std::vector<std::size_t> all;
+    for (std::size_t k = 0; k < f.objects.size(); ++k) all.push_back(k);
+    tri_lines = face_lines(f, all);
+  }
+};
+
+}  // namespace
+
+struct MeshSequence::Impl {
+  std::vector<std::string> files;
+  std::string cloth_name;
+  std::unique_ptr<Shape> shape;
+  Split split;
+  SequenceTopology topology;
+  std::vector<ObstacleSource> obstacles;
+  long polygons = 0;
+
+  void read_first(const std::string& cloth);
+  void add_obstacle(const std::string& arg);
+  void add_obstacles(MeshFrame& m, int i) const;
+};
+
+void MeshSequence::Impl::read_first(const std::string& cloth) {
+  const ObjFile f = read_obj(files.front());
+  if (f.objects.empty()) throw InputError(f.path, 0, "no faces");
+  cloth_name = cloth;
+  if (cloth.empty() && f.object("cloth")) cloth_name = "cloth";
+  if (!cloth_name.empty() && !f.object(cloth_name))
+    throw InputError(
+        f.path, 0,
+        "no object named '" + printable(cloth_name) + "' (objects: " + object_list(f) + ")");
+  split = verify::split(f, cloth_name);
+  check_manifold(f, split);
+  shape = std::make_unique<Shape>(f);
+  polygons += f.polygons;
+  topology.cloth_vertices = int(split.cloth_v.size());
+  topology.cloth = split.cloth;
+  topology.obstacle_vertices = int(split.obstacle_v.size());
+  topology.obstacle = split.obstacle;
+}
+
+void MeshSequence::Impl::add_obstacle(const std::string& arg) {
+  ObstacleSource o;
+  o.files = frame_files({arg});
+  const bool per_frame = o.files.size() > 1 || fs::is_directory(arg);
+  if (per_frame && o.files.size() != files.size())
+    throw InputError(arg, 0,
+                     std::to_string(o.files.size()) + " obstacle frames for " +
+                         std::to_string(files.size()) + " cloth frames");
+  const ObjFile f = read_obj(o.files.front());
+  if (f.objects.empty()) throw InputError(f.path, 0, "no faces");
+  polygons += f.polygons;
+  const int base = topology.obstacle_vertices;
+  for (const ObjObject& ob : f.objects)
+    for (const Tri& t : ob.tris)
+      topology.obstacle.push_back({t[0] + base, t[1] + base, t[2] + base});
+  topology.obstacle_vertices += int(f.x.size());
+  if (per_frame)
+    o.shape = std::make_unique<Shape>(f);
+  else
+    o.take(f);
+  obstacles.push_back(std::move(o));
+}
+
+void MeshSequence::Impl::add_obstacles(MeshFrame& m, int i) const {
+  for (const ObstacleSource& o : obstacles) {
+    if (!o.shape) {
+      m.obstacle.insert(m.obstacle.end(), o.x.begin(), o.x.end());
+      m.obstacle_vertices.add(o.files.front(), o.vertex_lines);
+      m.obstacle_tris.add(o.files.front(), o.tri_lines);
+      continue;
+    }
+    ObstacleSource now;
+    const ObjFile f = read_obj(o.files[std::size_t(i)]);
+    o.shape->check(f);
+    now.take(f);
+    m.obstacle.insert(m.obstacle.end(), now.x.begin(), now.x.end());
+    m.obstacle_vertices.add(f.path, now.vertex_lines);
+    m.obstacle_tris.add(f.path, now.tri_lines);
+  }
+}
+
+MeshSequence::MeshSequence(const std::vector<std::string>& frames, const std::string& cloth,
+                           const std::vector<std::string>& obstacles)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->files = frame_files(frames);
+  impl_->read_first(cloth);
+  for (const std::string& o : obstacles) impl_->add_obstacle(o);
+}
+
+MeshSequence::~MeshSequence() = default;
+
+int MeshSequence::frames() const {
+  return int(impl_->files.size());
+}
+const std::vector<std::string>& MeshSequence::files() const {
+  return impl_->files;
+}
+const SequenceTopology& MeshSequence::topology() const {
+  return impl_->topology;
+}
+const std::string& MeshSequence::cloth_name() const {
+  return impl_->cloth_name;
+}
+long MeshSequence::polygons() const {
+  return impl_->polygons;
+}
+
+MeshFrame MeshSequence::read(int i) const {
+  const ObjFile f = read_obj(impl_->files[std::size_t(i)]);
+  impl_->shape->check(f);
+  const Split& s = impl_->split;
+  MeshFrame m;
+  m.index = i, m.file = f.path;
+  m.cloth = gather(f.x, s.cloth_v);
+  m.obstacle = gather(f.x, s.obstacle_v);
+  m.cloth_vertices.add(f.path, gather(f.vertex_lines, s.cloth_v));
+  m.cloth_tris.add(f.path, face_lines(f, s.cloth_objects));
+  m.obstacle_vertices.add(f.path, gather(f.vertex_lines, s.obstacle_v));
+  m.obstacle_tris.add(f.path, face_lines(f, s.obstacle_objects));
+  impl_->add_obstacles(m, i);
+  return m;
+}
+
+}  // namespace fdh::verify
