@@ -14,13 +14,15 @@ obstacle's Collision modifier and, for `crumple`, self-collision and the pins th
            axis over the frames: the cloth is squeezed and twisted into folds; self-collision on
            unless --self-collision off.
 Frame f (1..F) is written to DIR/frame_0000f.obj: object `cloth`, the evaluated cloth mesh with
-the triangles Blender's collisions use (the loop triangles of frame 1, see write_frames), then for `drop` object
-`obstacles`, the sphere's, world coordinates printed with 17 significant digits. Every frame has
-the same topology (checked). Exit status 0 on success, 1 on any failure (nothing half-written:
-each file is written to a temporary name and renamed).
+the triangles Blender's collisions use (the loop triangles of frame 1, see write_frames), then
+for `drop` object `obstacles`, the sphere's; world coordinates printed with 17 significant
+digits. Every frame has the same topology (checked). DIR must hold no frame_*.obj yet (a longer
+bake's would be read as frames of this one). Exit status 0 on success, 2 for bad arguments, 1 on
+any other failure; each file is written whole (a temporary name, then a rename).
 """
 
 import argparse
+import glob
 import math
 import os
 import sys
@@ -219,6 +221,10 @@ def write_frames(scene, objects, frames, out):
 def main():
     a = parse_args(sys.argv)
     os.makedirs(a.out, exist_ok=True)
+    if glob.glob(os.path.join(glob.escape(a.out), "frame_*.obj")):
+        print(f"bake_cloth: {a.out} already holds frame_*.obj files: remove them or choose "
+              "another folder", file=sys.stderr)
+        sys.exit(2)
     scene = empty_scene(a.frames)
     build = build_drop if a.scene == "drop" else build_crumple
     cloth, obstacle = build(a.grid, a.frames, a.self_collision == "on")
