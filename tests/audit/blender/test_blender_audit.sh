@@ -7,11 +7,11 @@
 # Skips (exit 77) where `blender` is not installed (./run installs it when run as root).
 #   test_blender_audit.sh FDHCERT REPO
 set -euo pipefail
+command -v blender >/dev/null || { echo "SKIP: no blender (./run installs it as root)"; exit 77; }
 fdhcert=$(realpath "$1")
 repo=$(realpath "$2")
 grid=20
 frames=30
-command -v blender >/dev/null || { echo "SKIP: no blender (./run installs it as root)"; exit 77; }
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/fdh-blender.XXXXXX")
 cleanup() {
