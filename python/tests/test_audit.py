@@ -94,11 +94,27 @@ def test_planted_crossing_found_by_both(tmp_path):
     assert program["first_violation"]["places"][0].endswith("frame_2.obj:28")
 
 
-def test_obstacles_per_frame_and_bad_input():
-    frames, faces, floor, floor_faces = sequence(frames=3)
-    moving = np.stack([floor + [0, 0, 0.1 * f] for f in range(3)])
+def test_obstacles_per_frame_agree_with_the_program(tmp_path):
+    """A floor rising through the falling sheet: `--obstacle DIR` (one file per frame) against
+    F×P×3 obstacles."""
+    frames, faces, floor, floor_faces = sequence(frames=4)
+    moving = np.stack([floor + [0, 0, 0.4 * f] for f in range(4)])
+    (tmp_path / "frames").mkdir()
+    (tmp_path / "floor").mkdir()
+    for f in range(4):
+        write_obj(tmp_path / "frames" / f"f{f}.obj", frames[f], faces)
+        write_obj(tmp_path / "floor" / f"f{f}.obj", moving[f], floor_faces)
+    r = subprocess.run([FDHCERT, "audit", str(tmp_path / "frames"), "--obstacle",
+                        str(tmp_path / "floor"), "--json"], capture_output=True, text=True)
+    assert r.returncode == 1, r.stderr
     d = fdhcert.audit(frames, faces, obstacles=moving, obstacle_faces=floor_faces)
+    assert comparable(d) == comparable(json.loads(r.stdout))
     assert d["obstacles"] == {"vertices": 4, "triangles": 2}
+    assert d["totals"]["obstacle-vertex-cloth"] + d["totals"]["cloth-vertex-obstacle"] > 0
+
+
+def test_bad_input():
+    frames, faces, floor, floor_faces = sequence(frames=3)
     with pytest.raises(ValueError):
         fdhcert.audit(frames, np.array([[0, 1, 99]]))
     with pytest.raises(ValueError):

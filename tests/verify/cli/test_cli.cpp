@@ -46,7 +46,7 @@ TEST(Cli, HelpNamesEveryOption) {
   const CliRun main = fdhcert({"--help"});
   EXPECT_EQ(main.status, 0);
   for (const char* cmd : {"classify", "fuzz", "replay", "generate", "certify", "report", "simulate",
-                          "table1", "peers"})
+                          "audit", "table1", "peers"})
     EXPECT_NE(main.out.find(cmd), std::string::npos) << cmd;
   EXPECT_EQ(fdhcert({"help"}).out, main.out);
   EXPECT_EQ(fdhcert({"help", "classify"}).out, r.out);
@@ -57,7 +57,7 @@ TEST(Cli, HelpNamesEveryOption) {
 // Every command's --help goes to out with status 0, even without its required arguments.
 TEST(Cli, EveryCommandHasHelp) {
   for (const char* cmd : {"classify", "fuzz", "replay", "generate", "certify", "report", "simulate",
-                          "table1", "peers"}) {
+                          "audit", "table1", "peers"}) {
     const CliRun r = fdhcert({cmd, "--help"});
     EXPECT_EQ(r.status, 0) << cmd << ": " << r.err;
     EXPECT_NE(r.out.find("--"), std::string::npos) << cmd;
@@ -89,6 +89,10 @@ TEST(Cli, UsageErrorsExitTwoWithAShortMessage) {
       {"simulate", kData + "none.scene", "--self", "maybe"},
       {"simulate", kData + "none.scene", "--narrow", "nope"},
       {"replay"},
+      {"audit"},
+      {"audit", "f.obj", "--k", "7"},
+      {"audit", "f.obj", "--keep", "0"},
+      {"audit", "f.obj", "--threads", "0"},
       {"certify", "--threads", "0"},
       {"report", "--threads", "1025"},
   };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 
 #include "fdh/io/input_error.hpp"
 
@@ -255,6 +256,7 @@ struct MeshSequence::Impl {
   SequenceTopology topology;
   std::vector<ObstacleSource> obstacles;
   long polygons = 0;
+  std::optional<ObjFile> first;  // frame 0 as read for the checks, until read(0) takes it
 
   void read_first(const std::string& cloth);
   void add_obstacle(const std::string& arg);
@@ -262,7 +264,8 @@ struct MeshSequence::Impl {
 };
 
 void MeshSequence::Impl::read_first(const std::string& cloth) {
-  const ObjFile f = read_obj(files.front());
+  first = read_obj(files.front());
+  const ObjFile& f = *first;
   if (f.objects.empty()) throw InputError(f.path, 0, "no faces");
   cloth_name = cloth;
   if (cloth.empty() && f.object("cloth")) cloth_name = "cloth";
@@ -348,7 +351,9 @@ long MeshSequence::polygons() const {
 }
 
 MeshFrame MeshSequence::read(int i) const {
-  const ObjFile f = read_obj(impl_->files[std::size_t(i)]);
+  std::optional<ObjFile> taken;
+  if (i == 0 && impl_->first) taken.swap(impl_->first);  // read once, not twice
+  const ObjFile f = taken ? std::move(*taken) : read_obj(impl_->files[std::size_t(i)]);
   impl_->shape->check(f);
   const Split& s = impl_->split;
   MeshFrame m;

@@ -277,6 +277,8 @@ std::string AuditReport::markdown() const {
   for (const ViolationKind k : kKinds)
     md += fmt::format("| {} | {} |\n", audit::to_string(k), count_of(total_, k));
   if (!kept_.empty()) {
+    // With case files the run writes the picture beside this file (`audit --out`).
+    if (case_files_) md += "\n![the first violation, its triangles in blue](first-violation.png)\n";
     md += fmt::format("\n## The first {} violations, earliest first\n\n", kept_.size());
     md += "| # | what | where | case file |\n|---|---|---|---|\n";
     for (std::size_t i = 0; i < kept_.size(); ++i) {

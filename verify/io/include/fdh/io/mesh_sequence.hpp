@@ -78,7 +78,8 @@ class MeshSequence {
   long polygons() const;
 
   // Frame i (0 <= i < frames()): read and checked against frame 0 (the same objects, vertex count
-  // and faces; InputError naming the face otherwise).
+  // and faces; InputError naming the face otherwise). The first read(0) hands over frame 0 as
+  // the constructor read it; later ones read it again.
   MeshFrame read(int i) const;
 
  private:

@@ -49,7 +49,9 @@ QueryRecord case_record(const KeptViolation& k);
 class AuditReport {
  public:
   // `keep`: the violations kept in the certificate, earliest first (at least 1);
-  // `case_files`: name a case file (cases/NNN-KIND-step-F.vf) for each kept step violation.
+  // `case_files` (a run that writes its files, `audit --out`): name a case file
+  // (cases/NNN-KIND-step-F.vf) for each kept step violation, and show first-violation.png in the
+  // Markdown.
   AuditReport(const audit::Topology& topology, const audit::Options& options, int keep,
               bool case_files = false);
 
