@@ -1,6 +1,6 @@
 // fdh_bench: `./run bench` (docs/performance.md). Google Benchmark's own options apply
 // (--benchmark_filter=REGEX, --benchmark_out=FILE --benchmark_out_format=json, ...); after the
-// run, the peers' ratios to ours.
+// run, the peers' ratios to ours and the audit's ratio of costs per vertex.
 #include <benchmark/benchmark.h>
 
 #include <iostream>
@@ -34,9 +34,11 @@ int main(int argc, char** argv) {
   fdh::bench::register_ccd_sample();
   fdh::bench::register_ccd_toi();
   fdh::bench::register_frames();
+  fdh::bench::register_audit();
   KeepTimes console;
   benchmark::RunSpecifiedBenchmarks(&console);
   fdh::bench::print_peer_ratios(console.seconds, std::cout);
+  fdh::bench::print_audit_ratio(std::cout);
   benchmark::Shutdown();
   return 0;
 }

@@ -2,6 +2,8 @@
 // benchmark sample's sets), registered by main() before the run.
 #pragma once
 
+#include <ostream>
+
 namespace fdh::bench {
 
 // narrow/<method>/<family>: ns per query, over 256 cases of each generator family.
@@ -19,5 +21,11 @@ void register_ccd_toi();
 // self-collision pass (fewer frames at large grids: a benchmark's iteration count is fixed
 // at registration).
 void register_frames();
+
+// audit/grid:<n>: `fdhcert audit`'s engine on a folded sheet falling 28 edge lengths, 2 frames
+// (first frame and step, ms and ns per vertex); print_audit_ratio() prints the step's cost per
+// vertex at 500x500 over that at 100x100 after the run.
+void register_audit();
+void print_audit_ratio(std::ostream& out);
 
 }  // namespace fdh::bench

@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,6 +35,24 @@ void add_audit(py::module_& m);
 // then at t = 1; edge-edge ea0 ea1 eb0 eb1, then at t = 1). ValueError for another shape or a
 // non-finite coordinate, naming the query.
 std::vector<Query> queries_of(const Points& a, QueryKind kind);
+
+// An array (or anything numpy makes one of) of coordinates as float64, refusing what the
+// conversion would change: integers beyond 2^53 in magnitude, complex numbers, floats longer
+// than float64 that do not fit, objects. ValueError starting with `what` (arguments.cpp).
+Points points_of(const py::handle& obj, const char* what);
+
+// N truths: none for None; else exactly 0 or 1 each (0.7 and 2^32 + 1 are refused).
+std::vector<std::optional<bool>> truths_of(const py::handle& obj, std::size_t n);
+
+// A path given as str, bytes or os.PathLike, as the bytes the system takes.
+std::string path_of(const py::handle& obj);
+
+// Lets Python act on a signal during a long call (the GIL released): raises
+// py::error_already_set (KeyboardInterrupt for Ctrl-C) if a handler raised.
+void check_signals();
+
+// How often the long loops call check_signals: every so many queries (about a millisecond).
+inline constexpr std::size_t kQueriesPerSignalCheck = 1 << 14;
 
 // "vertex-face" or "edge-edge"; ValueError naming the choices otherwise.
 QueryKind kind_named(const std::string& name);

@@ -8,6 +8,7 @@
 #include "fdh/check/classify.hpp"
 #include "fdh/run/classification_output.hpp"
 #include "fdh/run/classify_files.hpp"
+#include "fdh/run/json_text.hpp"
 
 namespace fdh::python {
 namespace {
@@ -18,10 +19,12 @@ py::object to_python(const std::string& json_text) {
 
 // `fdhcert classify --json` on the files, read and classified as the program does
 // (run/classify_files.hpp); bad input raises InputError with the program's message.
-py::object classify_files(const std::vector<std::string>& files,
+py::object classify_files(const std::vector<py::object>& paths,
                           const std::vector<std::string>& methods, const std::string& kind,
                           int gate) {
-  if (files.empty()) throw py::value_error("classify needs at least one file");
+  if (paths.empty()) throw py::value_error("classify needs at least one file");
+  std::vector<std::string> files;
+  for (const py::object& p : paths) files.push_back(path_of(p));
   if (!kind.empty() && kind != "vf" && kind != "ee")
     throw py::value_error("kind must be 'vf' or 'ee', not '" + kind + "'");
   const std::vector<verify::Method> ms =
@@ -31,25 +34,15 @@ py::object classify_files(const std::vector<std::string>& files,
     py::gil_scoped_release release;
     c = verify::classify_files(files, ms, kind);
   }
-  return to_python(verify::classification_json(c.files, c.total, {gate}).dump());
+  return to_python(
+      verify::json_line(verify::classification_json(c.files, c.total, {gate}), "classify"));
 }
 
 // The same tallies for queries held in an array: one "file" named "<array>".
-py::object classify_arrays(const Points& a, const std::string& kind, py::object truth,
+py::object classify_arrays(const py::object& a, const std::string& kind, py::object truth,
                            const std::vector<std::string>& methods) {
-  const std::vector<Query> qs = queries_of(a, kind_named(kind));
-  std::vector<std::optional<bool>> truths;
-  if (!truth.is_none()) {
-    const auto t = truth.cast<py::array_t<int, py::array::c_style | py::array::forcecast>>();
-    if (t.ndim() != 1 || std::size_t(t.shape(0)) != qs.size())
-      throw py::value_error("truth must hold one 0 or 1 per query");
-    for (std::size_t i = 0; i < qs.size(); ++i) {
-      const int v = t.at(py::ssize_t(i));
-      if (v != 0 && v != 1)
-        throw py::value_error("truth of query " + std::to_string(i) + " is not 0 or 1");
-      truths.push_back(v == 1);
-    }
-  }
+  const std::vector<Query> qs = queries_of(points_of(a, "queries"), kind_named(kind));
+  const std::vector<std::optional<bool>> truths = truths_of(truth, qs.size());
   const std::vector<verify::Method> ms =
       methods.empty() ? verify::all_methods() : verify::select_methods(methods);
   verify::Classification c;
@@ -58,7 +51,7 @@ py::object classify_arrays(const Points& a, const std::string& kind, py::object 
     c = verify::classify(qs, truths, ms);
   }
   const auto j = verify::classification_json({{"<array>", c}}, c, {});
-  return to_python(j.dump());
+  return to_python(verify::json_line(j, "classify_arrays"));
 }
 
 }  // namespace

@@ -8,7 +8,8 @@ namespace {
 
 // (lo, hi, directions): k/2 slabs each; row s of directions is slab s's integer direction d,
 // and every point p has lo[s] <= d·p <= hi[s].
-py::tuple kdop(const Points& pts, int k) {
+py::tuple kdop(const py::object& given, int k) {
+  const Points pts = points_of(given, "points");
   if (pts.ndim() != 2 || pts.shape(1) != 3 || pts.shape(0) < 1)
     throw py::value_error("points must be an N×3 array of float64 with N >= 1");
   std::vector<Vec3> p(std::size_t(pts.shape(0)));

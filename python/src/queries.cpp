@@ -36,9 +36,10 @@ std::vector<Query> queries_of(const Points& a, QueryKind kind) {
 namespace {
 
 // The verdicts of `method` on every query, as its decision `d` asks.
-py::array_t<bool> decide(const Points& a, const std::string& method, verify::Decision d) {
-  const std::vector<Query> qs = queries_of(
-      a, d == verify::Decision::EdgeEdgeCcd ? QueryKind::EdgeEdge : QueryKind::VertexFace);
+py::array_t<bool> decide(const py::object& given, const std::string& method, verify::Decision d) {
+  const std::vector<Query> qs =
+      queries_of(points_of(given, "queries"),
+                 d == verify::Decision::EdgeEdgeCcd ? QueryKind::EdgeEdge : QueryKind::VertexFace);
   const verify::Method m = verify::select_methods({method}).front();
   const auto& test = m.test[std::size_t(d)];
   if (!test) throw py::value_error(method + " does not decide " + verify::to_string(d));
@@ -50,12 +51,16 @@ py::array_t<bool> decide(const Points& a, const std::string& method, verify::Dec
   py::array_t<bool> out(py::ssize_t(qs.size()));
   auto r = out.mutable_unchecked<1>();
   py::gil_scoped_release release;
-  for (std::size_t i = 0; i < qs.size(); ++i) r(py::ssize_t(i)) = test(qs[i]);
+  for (std::size_t i = 0; i < qs.size(); ++i) {
+    if (i % kQueriesPerSignalCheck == kQueriesPerSignalCheck - 1) check_signals();
+    r(py::ssize_t(i)) = test(qs[i]);
+  }
   return out;
 }
 
 // {"hit": bool, "time": Fraction or None, "interval": (Fraction, Fraction) or None}
-py::dict contact_time(const Points& a, const std::string& kind) {
+py::dict contact_time(const py::object& given, const std::string& kind) {
+  const Points a = points_of(given, "query");
   if (a.ndim() != 2 || a.shape(0) != 8 || a.shape(1) != 3)
     throw py::value_error("contact_time takes one query: an 8×3 array");
   Points one = py::array::ensure(a);
@@ -92,7 +97,7 @@ void add_queries(py::module_& m) {
   for (const auto& d : decisions)
     m.def(
         d.name,
-        [decision = d.decision](const Points& a, const std::string& method) {
+        [decision = d.decision](const py::object& a, const std::string& method) {
           return decide(a, method, decision);
         },
         py::arg("queries"), py::arg("method") = "robust", d.doc);

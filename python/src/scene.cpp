@@ -1,4 +1,7 @@
 // A scene run from Python: the frames as arrays, with the run's summary.
+#include <chrono>
+#include <optional>
+
 #include "bindings.hpp"
 #include "fdh/io/scene_file.hpp"
 #include "fdh/run/scene_run.hpp"
@@ -26,17 +29,27 @@ py::dict summary_of(const verify::SceneRun& r) {
 // Runs the scene file (with the overrides the CLI's simulate takes) and keeps every `every`-th
 // frame's particle positions: {"positions": F×N×3, "frames": [frame numbers], "triangles":
 // M×3, "summary": {...}}.
-py::dict simulate(const std::string& path, int frames, int grid, int every,
-                  const std::string& narrow, int k, bool check) {
+py::dict simulate(const py::object& scene_path, const std::optional<int>& frames, int grid,
+                  int every, const std::string& narrow, int k, bool check) {
   if (every < 1) throw py::value_error("every must be at least 1");
+  // As the program's --frames: a count of frames; None (the default) runs the scene's.
+  if (frames && *frames < 0)
+    throw py::value_error("frames must be 0 or more (None: the scene's), not " +
+                          std::to_string(*frames));
+  const std::string path = path_of(scene_path);
   cloth::Scene scene = verify::read_scene(path);
   if (grid) scene.cloth.grid = grid, verify::check_scene(scene, path);
   verify::SceneRunOptions opt;
-  opt.narrow = narrow, opt.k = k, opt.frames = frames, opt.check = check;
+  opt.narrow = narrow, opt.k = k, opt.frames = frames.value_or(-1), opt.check = check;
   std::vector<std::vector<Vec3>> kept;
   std::vector<int> numbers;
   std::vector<Tri> tris;
+  auto last_check = std::chrono::steady_clock::now();
   opt.on_frame = [&](const cloth::Simulation& sim, int f) {
+    // Ctrl-C acts within a tenth of a second of frames, not when the run ends.
+    if (const auto now = std::chrono::steady_clock::now();
+        now - last_check > std::chrono::milliseconds(100))
+      last_check = now, check_signals();
     if (tris.empty()) tris = sim.cloth().triangles();
     if (f % every == 0) kept.push_back(sim.cloth().x()), numbers.push_back(f);
   };
@@ -66,8 +79,8 @@ py::dict simulate(const std::string& path, int frames, int grid, int every,
 }  // namespace
 
 void add_scene(py::module_& m) {
-  m.def("simulate", &simulate, py::arg("scene"), py::arg("frames") = -1, py::arg("grid") = 0,
-        py::arg("every") = 1, py::arg("narrow") = "robust", py::arg("k") = 18,
+  m.def("simulate", &simulate, py::arg("scene"), py::arg("frames") = py::none(),
+        py::arg("grid") = 0, py::arg("every") = 1, py::arg("narrow") = "robust", py::arg("k") = 18,
         py::arg("check") = false,
         "Runs a cloth scene file: every `every`-th frame's positions (F×N×3), the cloth's "
         "triangles, the last positions and the run's summary (check=True: FP/FN against the "

@@ -12,11 +12,11 @@ using Times = py::array_t<double>;
 
 // The times of `method` at `width` on every query of `kind`: (hit, t_lo, t_hi), t_lo = t_hi = 1
 // where it finds no contact.
-std::tuple<py::array_t<bool>, Times, Times> times_of(const Points& a, const std::string& method,
+std::tuple<py::array_t<bool>, Times, Times> times_of(const py::object& a, const std::string& method,
                                                      double width, QueryKind kind) {
   if (!(width > 0 && width <= 1))
     throw py::value_error("width must be in (0, 1], not " + std::to_string(width));
-  const std::vector<Query> qs = queries_of(a, kind);
+  const std::vector<Query> qs = queries_of(points_of(a, "queries"), kind);
   const verify::Method m = verify::select_methods({method}).front();
   const verify::Decision d =
       kind == QueryKind::EdgeEdge ? verify::Decision::EdgeEdgeToi : verify::Decision::VertexFaceToi;
@@ -29,6 +29,7 @@ std::tuple<py::array_t<bool>, Times, Times> times_of(const Points& a, const std:
   auto l = lo.mutable_unchecked<1>(), u = hi.mutable_unchecked<1>();
   py::gil_scoped_release release;
   for (py::ssize_t i = 0; i < n; ++i) {
+    if (std::size_t(i) % kQueriesPerSignalCheck == kQueriesPerSignalCheck - 1) check_signals();
     const Toi t = toi(qs[std::size_t(i)], width);
     h(i) = t.hit, l(i) = t.t_lo, u(i) = t.t_hi;
   }
@@ -52,7 +53,7 @@ void add_toi(py::module_& m) {
   for (const auto& d : decisions)
     m.def(
         d.name,
-        [kind = d.kind](const Points& a, const std::string& method, double width) {
+        [kind = d.kind](const py::object& a, const std::string& method, double width) {
           return times_of(a, method, width, kind);
         },
         py::arg("queries"), py::arg("method") = "robust", py::arg("width") = kDefaultToiWidth,

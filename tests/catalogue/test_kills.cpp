@@ -109,11 +109,13 @@ bool kill_ends_with(const std::string& s, const std::string& tail) {
 }
 
 // What is wrong with the files in `out` after a kill: each output must be whole. Temporaries
-// may only be fuzz's (in .fuzz/tmp/) or, beside an output, `<output>.tmp.<pid>.<n>` as the
-// atomic writer and the charts name theirs; they are listed in `temporaries`.
+// may only be fuzz's (in .fuzz/tmp/), beside an output, `<output>.tmp.<pid>.<n>` as the atomic
+// writer names them, or in a chart's private folder `<chart>.tmp.<pid>.XXXXXX`; they are listed
+// in `temporaries`.
 std::vector<std::string> kill_problems(const fs::path& out, std::vector<std::string>* temporaries) {
   std::vector<std::string> bad;
   static const std::regex beside(R"((.+)\.tmp\.[0-9]+\.[0-9]+)");
+  static const std::regex chart_folder(R"((.+)\.tmp\.[0-9]+\.[A-Za-z0-9]{6})");  // mkdtemp's
   static const std::string png_sig("\x89PNG\r\n\x1a\n", 8);
   static const std::string iend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
   std::error_code ec;
@@ -137,7 +139,8 @@ std::vector<std::string> kill_problems(const fs::path& out, std::vector<std::str
       } else {
         problem("unexpected in .fuzz");
       }
-    } else if (std::regex_match(name, m, beside)) {
+    } else if (std::regex_match(name, m, beside) ||
+               std::regex_match(p.parent_path().filename().string(), chart_folder)) {
       if (temporaries) temporaries->push_back(rel);
     } else if (ext == ".json") {
       try {

@@ -287,7 +287,7 @@ std::vector<OutFaultRow> out_fault_catalogue() {
          c.path_first = (d / "bin").string();
          return c;
        },
-       2, "gnuplot failed drawing table1",
+       2, "gnuplot failed drawing t/table1.png: gnuplot ended with exit status 3",
        [](const fs::path& d) {
          EXPECT_EQ(out_fault_read(d / "t" / "table1.png"), "old chart");
          EXPECT_FALSE(fs::exists(d / "t" / "table1.svg"));

@@ -52,9 +52,51 @@ Query query_of(QueryKind kind, const std::array<int, 4>& ids, int split,
   return q;
 }
 
+// The query's two primitives (the first `split` points and the rest) apart along an axis at
+// both ends of the step, the same way round. Each coordinate difference between a point of one
+// and a point of the other is linear in t, so one positive at t = 0 and at t = 1 is positive all
+// step: they never meet. Comparisons of the inputs themselves, hence exact. This drops the pairs
+// that move together, which swept boxes keep: two points of a sheet falling 28 edge lengths.
+bool apart_all_step(const Query& q, int split) {
+  for (int axis = 0; axis < 3; ++axis) {
+    bool a_above = true, b_above = true;  // at both ends
+    for (int end = 0; end < 2 && (a_above || b_above); ++end) {
+      const Vec3* x = q.x.data() + 4 * end;
+      double alo = x[0][axis], ahi = alo, blo = x[split][axis], bhi = blo;
+      for (int i = 1; i < split; ++i) alo = min_of(alo, x[i][axis]), ahi = max_of(ahi, x[i][axis]);
+      for (int i = split + 1; i < 4; ++i)
+        blo = min_of(blo, x[i][axis]), bhi = max_of(bhi, x[i][axis]);
+      a_above = a_above && alo > bhi;
+      b_above = b_above && blo > ahi;
+    }
+    if (a_above || b_above) return true;
+  }
+  return false;
+}
+
+// Triangles a (positions x) and b (positions y) apart along an axis at both ends of the step,
+// the same way round (as apart_all_step): nothing of one meets anything of the other, at the
+// step's end either.
+bool tris_apart_all_step(const Tri& a, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
+                         const Tri& b, const std::vector<Vec3>& y0, const std::vector<Vec3>& y1) {
+  const auto range = [](const Tri& t, const std::vector<Vec3>& x, int axis, double& lo,
+                        double& hi) {
+    lo = min_of(x[t[0]][axis], x[t[1]][axis], x[t[2]][axis]);
+    hi = max_of(x[t[0]][axis], x[t[1]][axis], x[t[2]][axis]);
+  };
+  for (int axis = 0; axis < 3; ++axis) {
+    double alo0, ahi0, alo1, ahi1, blo0, bhi0, blo1, bhi1;
+    range(a, x0, axis, alo0, ahi0), range(a, x1, axis, alo1, ahi1);
+    range(b, y0, axis, blo0, bhi0), range(b, y1, axis, blo1, bhi1);
+    if ((alo0 > bhi0 && alo1 > bhi1) || (blo0 > ahi0 && blo1 > ahi1)) return true;
+  }
+  return false;
+}
+
 // One moving query: robust CCD, and for a contact its certified time of impact.
 void moving(const Query& q, ViolationKind kind, const std::array<int, 4>& ids, int tri,
             const Pass& pass, Part& part) {
+  if (apart_all_step(q, q.kind == QueryKind::VertexFace ? 1 : 2)) return;
   ++part.step.candidates;
   if (!robust_ccd(q, exact::ccd_hit)) return;
   ++count_of(part.step, kind);
@@ -158,7 +200,8 @@ void self_pair(const MeshParts& cloth, int a, int b, const Pass& pass, Part& par
   const auto& x1 = *pass.c1;
   if (pass.ccd) {
     const Aabb ba = tri_box(pass.cbox, ta), bb = tri_box(pass.cbox, tb);
-    if (!meet(ba, bb)) return;  // nothing of a meets anything of b, the frame's pair included
+    // Nothing of a meets anything of b, the frame's pair included.
+    if (!meet(ba, bb) || tris_apart_all_step(ta, x0, x1, tb, x0, x1)) return;
     const auto in = [](int v, const Tri& t) { return v == t[0] || v == t[1] || v == t[2]; };
     constexpr auto kVF = ViolationKind::SelfVertexFace;
     vertices_against(cloth.vertices_begin(a), cloth.vertices_end(a), pass.cbox, x0, x1, tb, b, bb,
@@ -189,7 +232,8 @@ void obstacle_pair(const MeshParts& cloth, const MeshParts& obstacle, int c, int
   const Tri &tc = cloth.tris[c], &to = obstacle.tris[o];
   if (pass.ccd) {
     const Aabb bc = tri_box(pass.cbox, tc), bo = tri_box(pass.obox, to);
-    if (!meet(bc, bo)) return;
+    if (!meet(bc, bo) || tris_apart_all_step(tc, *pass.c0, *pass.c1, to, *pass.o0, *pass.o1))
+      return;
     const auto never = [](int, const Tri&) { return false; };  // two meshes share no vertex
     vertices_against(cloth.vertices_begin(c), cloth.vertices_end(c), pass.cbox, *pass.c0, *pass.c1,
                      to, o, bo, *pass.o0, *pass.o1, ViolationKind::ClothVertexObstacle, pass, part,

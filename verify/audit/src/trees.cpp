@@ -5,6 +5,7 @@
 #include "fdh/bvh.hpp"
 #include "fdh/normal_cone.hpp"
 #include "fdh/parallel/chunks.hpp"
+#include "kernel_centre.hpp"
 #include "patch_boundaries.hpp"
 
 namespace fdh::audit {
@@ -43,11 +44,58 @@ void bottom_up(const Subtrees& s, const F& f) {
   for (auto i = s.top.rbegin(); i != s.top.rend(); ++i) f(*i);
 }
 
+// A node's axis-aligned boxes at each end of the step (merged exactly: min and max).
+struct Ends {
+  Aabb at0, at1;
+};
+inline Aabb box_of(const Tri& t, const std::vector<Vec3>& x) {
+  const Vec3 &a = x[t[0]], &b = x[t[1]], &c = x[t[2]];
+  return {{min_of(a.x, b.x, c.x), min_of(a.y, b.y, c.y), min_of(a.z, b.z, c.z)},
+          {max_of(a.x, b.x, c.x), max_of(a.y, b.y, c.y), max_of(a.z, b.z, c.z)}};
+}
+inline Aabb joined(const Aabb& a, const Aabb& b) {
+  return {{min_of(a.lo.x, b.lo.x), min_of(a.lo.y, b.lo.y), min_of(a.lo.z, b.lo.z)},
+          {max_of(a.hi.x, b.hi.x), max_of(a.hi.y, b.hi.y), max_of(a.hi.z, b.hi.z)}};
+}
+// Apart along an axis at both ends, the same way round: nothing under one node meets anything
+// under the other during the step (narrow_phase.cpp's apart_all_step, for whole subtrees).
+inline bool apart_all_step(const Ends& a, const Ends& b) {
+  for (int i = 0; i < 3; ++i)
+    if ((a.at0.lo[i] > b.at0.hi[i] && a.at1.lo[i] > b.at1.hi[i]) ||
+        (b.at0.lo[i] > a.at0.hi[i] && b.at1.lo[i] > a.at1.hi[i]))
+      return true;
+  return false;
+}
+
 // A task: two nodes whose leaf pairs are to be found, cloth with cloth or cloth with obstacle.
 struct Task {
   int a, b;
   bool obstacle;
 };
+
+// The positions a tree is built over: the first frame under a tiny generic shear. The tree's
+// median splits order triangles by their centres along a direction, and on a regular grid whole
+// rows of centres tie along every axis and diagonal; nth_element then cuts among the ties at
+// random, and the nodes become scattered sets of triangles whose boundary is never one loop, so
+// the normal cones cull nothing. The shear orders the ties by a second linear key, so the cuts
+// are straight lines and the nodes patches. It moves a point by at most 1e-3 of the mean edge
+// length (distinct keys keep their order) and by far more than a rounding. Only the tree's shape
+// depends on it: every pass refits the boxes from the true positions first.
+std::vector<Vec3> tie_broken(const std::vector<Tri>& tris, const std::vector<Vec3>& x) {
+  double edges = 0, extent = 0;
+  for (const Tri& t : tris) edges += norm(x[t[1]] - x[t[0]]);
+  for (const Vec3& p : x) extent = std::max(extent, max_abs(p - x[0]));
+  if (tris.empty() || edges == 0 || extent == 0) return x;
+  const double eta = 1e-3 * edges / double(tris.size()) / extent;
+  std::vector<Vec3> y(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const Vec3 p = x[i] - x[0];
+    y[i] = x[i] + eta * Vec3{0.7548776662 * p.y + 0.5698402910 * p.z,
+                             0.3247179572 * p.x + 0.8191725134 * p.z,
+                             0.6180339887 * p.x + 0.4142135624 * p.y};
+  }
+  return y;
+}
 
 // Chunks of work: about this many, whatever the thread count (results depend on sizes alone).
 constexpr std::size_t kChunks = 2048;
@@ -59,7 +107,10 @@ class TreesK : public Trees {
  public:
   TreesK(const MeshParts& cloth, const MeshParts& obstacle, const std::vector<Vec3>& x,
          const std::vector<Vec3>& y)
-      : cloth_(cloth), obstacle_(obstacle), ctree_(cloth.tris, x), otree_(obstacle.tris, y) {
+      : cloth_(cloth),
+        obstacle_(obstacle),
+        ctree_(cloth.tris, tie_broken(cloth.tris, x)),
+        otree_(obstacle.tris, tie_broken(obstacle.tris, y)) {
     const auto& nodes = ctree_.nodes();
     std::vector<NodeShape> shape(nodes.size());
     ends_.resize(nodes.size());
@@ -68,7 +119,8 @@ class TreesK : public Trees {
       shape[i] = n.leaf() ? NodeShape{-1, -1, ctree_.prims()[n.first]} : NodeShape{n.left, n.right};
       ends_[i] = subtree_end(nodes, int(i));
     }
-    loops_ = PatchBoundaries(shape, cloth);
+    partner_ = cell_partners(cloth, x);
+    loops_ = PatchBoundaries(shape, cloth, partner_);
     if (!nodes.empty()) cut(nodes, 0, 0, csub_);
     if (!otree_.empty()) cut(otree_.nodes(), 0, 0, osub_);
     normals_.resize(nodes.size());
@@ -78,9 +130,9 @@ class TreesK : public Trees {
   std::vector<Part> run(const Pass& pass) override {
     const std::vector<Vec3> none;
     const bool moves = pass.ccd && *pass.c0 != *pass.c1;
-    update(ctree_, csub_, *pass.c0, moves ? *pass.c1 : none, true);
+    update(ctree_, csub_, *pass.c0, moves ? *pass.c1 : none, cends_, true);
     const bool obstacle_moves = pass.ccd && *pass.o0 != *pass.o1;
-    update(otree_, osub_, *pass.o0, obstacle_moves ? *pass.o1 : none, false);
+    update(otree_, osub_, *pass.o0, obstacle_moves ? *pass.o1 : none, oends_, false);
     const std::vector<Vec3>& x1 = moves ? *pass.c1 : *pass.c0;
     std::vector<Task> tasks = self_tasks(*pass.c0, x1);
     for (const auto& [a, b] : frontier(
@@ -99,39 +151,53 @@ class TreesK : public Trees {
  private:
   // Refit, swept over x0 -> x1 (x1 empty: still at x0), with the cloth's normal boxes.
   void update(Bvh<K>& t, const Subtrees& sub, const std::vector<Vec3>& x0,
-              const std::vector<Vec3>& x1, bool normals) {
+              const std::vector<Vec3>& x1, std::vector<Ends>& ends, bool normals) {
     if (t.empty()) return;
     const double w = Bvh<K>::widening(x0, x1);
     const std::vector<Vec3>& y1 = x1.empty() ? x0 : x1;
     const auto& nodes = t.nodes();
+    ends.resize(nodes.size());
     bottom_up(sub, [&](int i) {
       t.refit_node(i, x0, x1, w);
-      if (!normals) return;
       const auto& n = nodes[i];
+      if (n.leaf()) {
+        const Tri& f = t.tris()[t.prims()[n.first]];
+        ends[i] = {box_of(f, x0), box_of(f, y1)};
+      } else {
+        ends[i] = {joined(ends[n.left].at0, ends[n.right].at0),
+                   joined(ends[n.left].at1, ends[n.right].at1)};
+      }
+      if (!normals) return;
       if (!n.leaf()) {
         normals_[i] = merge(normals_[n.left], normals_[n.right]);
         lean_[i] = lean_[n.left] + lean_[n.right];
         return;
       }
-      const Tri& f = t.tris()[t.prims()[n.first]];
-      normals_[i] = swept_normals(x0[f[1]] - x0[f[0]], y1[f[1]] - y1[f[0]], x0[f[2]] - x0[f[0]],
-                                  y1[f[2]] - y1[f[0]]);
+      // The leaf's triangle and its cell partner: flat() tests cell completions.
+      const int tri = t.prims()[n.first];
+      const auto swept = [&](const Tri& f) {
+        return swept_normals(x0[f[1]] - x0[f[0]], y1[f[1]] - y1[f[0]], x0[f[2]] - x0[f[0]],
+                             y1[f[2]] - y1[f[0]]);
+      };
+      normals_[i] = swept(t.tris()[tri]);
+      if (partner_[tri] >= 0) normals_[i] = merge(normals_[i], swept(t.tris()[partner_[tri]]));
       lean_[i] = normals_[i].lo + normals_[i].hi;  // a direction inside the box, to aim at
     });
   }
 
   // Whether the node's patch cannot touch itself during the step (normal_cone.hpp): its
-  // normals lean one way and its one boundary loop is star-shaped around its moving mean.
+  // normals lean one way and its one boundary loop is star-shaped around a moving centre.
   bool flat(int node, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) const {
     if (!loops_.has_loop(node)) return false;
     const int bit = best_direction(positive_directions(normals_[node]), lean_[node]);
     if (bit < 0) return false;
     thread_local std::vector<int> contour;
     contour.assign(loops_.begin(node), loops_.end(node));
-    Vec3 m0{}, m1{};
-    for (const int v : contour) m0 += x0[v], m1 += x1[v];
-    const double s = 1.0 / double(contour.size());
-    return contour_is_star_shaped(contour, x0, x1, s * m0, s * m1, bit);
+    // The centre: inside the projected loop's kernel at each end of the step (any moving
+    // centre is sound; this one passes where the patch is star-shaped at all).
+    const Vec3 m0 = kernel_centre(contour, x0, bit);
+    const Vec3 m1 = &x1 == &x0 ? m0 : kernel_centre(contour, x1, bit);
+    return contour_is_star_shaped(contour, x0, x1, m0, m1, bit);
   }
 
   // Top down from `node`: a flat node needs nothing, a leaf (one triangle) nothing either;
@@ -193,27 +259,41 @@ class TreesK : public Trees {
     out.push_back({a, b, false});
   }
 
-  // Every leaf pair under a task through the narrow phase.
+  // Every leaf pair under a task whose boxes meet (the swept k-DOPs overlap, and the boxes at
+  // the step's ends are not apart the same way round at both), through the narrow phase.
   void descend(const Task& task, const Pass& pass, Part& part) const {
-    thread_local std::vector<std::pair<int, int>> stack, pairs;
+    const Bvh<K>& b = task.obstacle ? otree_ : ctree_;
+    const std::vector<Ends>& bends = task.obstacle ? oends_ : cends_;
+    const auto* A = ctree_.nodes().data();
+    const auto* B = b.nodes().data();
+    thread_local std::vector<std::pair<int, int>> stack;
     stack.assign(1, {task.a, task.b});
-    pairs.clear();
-    const auto meet = [](const Kdop<K>& p, const Kdop<K>& q) { return overlap(p, q); };
-    if (task.obstacle) {
-      descend_pairs(ctree_, otree_, stack, pairs, meet);
-      for (const auto& [c, o] : pairs) obstacle_pair(cloth_, obstacle_, c, o, pass, part);
-    } else {
-      descend_pairs(ctree_, ctree_, stack, pairs, meet);
-      for (const auto& [a, b] : pairs) self_pair(cloth_, a, b, pass, part);
+    while (!stack.empty()) {
+      const auto [i, j] = stack.back();
+      stack.pop_back();
+      if (!overlap(A[i].box, B[j].box) || apart_all_step(cends_[i], bends[j])) continue;
+      std::pair<int, int> first, second;
+      if (split_pair(ctree_, b, i, j, first, second)) {
+        stack.push_back(second);
+        stack.push_back(first);
+        continue;
+      }
+      const int p = ctree_.prims()[A[i].first], q = b.prims()[B[j].first];
+      if (task.obstacle)
+        obstacle_pair(cloth_, obstacle_, p, q, pass, part);
+      else
+        self_pair(cloth_, p, q, pass, part);
     }
   }
 
   const MeshParts& cloth_;
   const MeshParts& obstacle_;
   Bvh<K> ctree_, otree_;
-  std::vector<int> ends_;  // per cloth node: one past its subtree
+  std::vector<int> ends_;     // per cloth node: one past its subtree
+  std::vector<int> partner_;  // per cloth triangle: its cell's other one, or -1
   PatchBoundaries loops_;
   Subtrees csub_, osub_;
+  std::vector<Ends> cends_, oends_;  // per node: its boxes at the step's ends
   std::vector<NormalBox> normals_;
   std::vector<Vec3> lean_;
   long flat_count_ = 0;

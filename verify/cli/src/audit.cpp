@@ -147,7 +147,7 @@ class AuditRun {
     Placed prev;
     for (int i = 0; i < seq_.frames(); ++i) {
       MeshFrame m = seq_.read(i);
-      const audit::FrameReport r = auditor_->add_frame(m.cloth, m.obstacle);
+      const audit::FrameReport r = add_frame(m);
       Placed now{std::move(m.cloth_vertices), std::move(m.cloth_tris),
                  std::move(m.obstacle_vertices), std::move(m.obstacle_tris)};
       const FramePlaces before = prev.places(), here = now.places();
@@ -199,6 +199,15 @@ class AuditRun {
       return std::make_unique<audit::Auditor>(topology_, options());
     } catch (const std::invalid_argument& e) {  // the reader checks the faces: not expected
       throw InputError(seq_.files().front(), 0, e.what());
+    }
+  }
+
+  // The reader checks counts and coordinates; the engine's own check names the file if it fails.
+  audit::FrameReport add_frame(const MeshFrame& m) {
+    try {
+      return auditor_->add_frame(m.cloth, m.obstacle);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(m.file, 0, e.what());
     }
   }
 

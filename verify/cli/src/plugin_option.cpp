@@ -6,6 +6,15 @@
 namespace fdh::verify {
 
 CLI::Option* add_plugin_option(CLI::App& cmd) {
+  cmd.add_option_function<double>(
+         "--plugin-timeout", [](double seconds) { set_plugin_timeout(seconds); },
+         "seconds one plug-in call may take (default 5; 0: no limit).\n"
+         "A call over it ends the run with exit status 3, naming the\n"
+         "plug-in, the function and the query (docs/plugins.md).\n"
+         "Give it before --plugin to limit loading too")
+      ->type_name("SECONDS")
+      ->check(CLI::Range(0.0, 1e6))
+      ->trigger_on_parse();
   return cmd
       .add_option_function<std::string>(
           "--plugin",
@@ -18,11 +27,21 @@ CLI::Option* add_plugin_option(CLI::App& cmd) {
           },
           "load a plug-in: a shared library exporting fdh_plugin_v1\n"
           "(fdh/plugin.h); its methods run like the built-in ones.\n"
-          "Repeatable. A plug-in that crashes or answers garbage ends\n"
-          "the run with a message and exit status 3 (docs/plugins.md)")
+          "Repeatable. A plug-in that crashes, answers garbage, calls\n"
+          "exit() or hangs ends the run with a message and exit status 3\n"
+          "(docs/plugins.md)")
       ->type_name("FILE")
       ->trigger_on_parse()
       ->allow_extra_args(false);
+}
+
+PluginScope::PluginScope() {
+  set_plugin_timeout(kDefaultPluginTimeout);
+}
+
+PluginScope::~PluginScope() {
+  remove_added_methods();
+  end_plugin_run();
 }
 
 }  // namespace fdh::verify

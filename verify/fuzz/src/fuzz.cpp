@@ -58,6 +58,7 @@ MarkerContent read_marker(const std::string& p) {
 void refuse_other_unfinished_runs(const std::string& meta, const fs::path& out,
                                   const FuzzParams& ours) {
   for (const std::string& dir : run_folders(meta, "tmp")) {
+    refuse_link(dir + "/manifest", "a run's manifest");
     const std::optional<FuzzParams> p = FuzzParams::read(dir + "/manifest");
     if (!p || *p == ours) continue;
     if (coverage_of(dir, p->first(), p->last()).todo.empty()) continue;
@@ -124,6 +125,7 @@ struct Run {
   explicit Run(const FuzzOptions& o) : opt(o), space(take_work_folder(out, o.lock_wait_seconds)) {
     refuse_other_unfinished_runs(space.dir(), out, params);
     const std::string manifest = run_dir + "/manifest";
+    refuse_link(manifest, "a run's manifest");
     const bool resumed = fs::exists(manifest);
     if (resumed) {
       const std::optional<FuzzParams> p = FuzzParams::read(manifest);
@@ -133,7 +135,7 @@ struct Run {
     }
     space.clear_stale_temporaries();
     make_folder(case_dir.string());
-    make_folder(run_dir);
+    space.make_subfolder(params.folder_name());
     if (!resumed) {
       space.write_whole(manifest, params.manifest().text());  // before any case
       sync_folder(run_dir);
@@ -228,16 +230,17 @@ struct Tally {
   long done = 0, found = 0;
 };
 
-// Waits for every worker, reporting progress; false if one failed.
-bool wait_for_workers(const Run& run, std::vector<ChildProcess> children, int progress_fd,
-                      Tally tally) {
-  bool ok = true;
+// Waits for every worker, reporting progress; "" if all ended well, else how the first that
+// failed ended ("exit status 3").
+std::string wait_for_workers(const Run& run, std::vector<ChildProcess> children, int progress_fd,
+                             Tally tally) {
+  std::string failed;
   const Progress shape{"fuzz " + run.method.name + " on " + run.family, 0, run.last - run.first,
                        "cases"};
   while (!children.empty()) {
     for (std::size_t k = 0; k < children.size();) {
       if (const std::optional<ChildStatus> s = children[k].poll()) {
-        ok &= s->ok();
+        if (!s->ok() && failed.empty()) failed = s->words();
         children.erase(children.begin() + long(k));
       } else {
         ++k;
@@ -251,7 +254,7 @@ bool wait_for_workers(const Run& run, std::vector<ChildProcess> children, int pr
     report(run.opt.progress, p);
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
   }
-  return ok;
+  return failed;
 }
 
 // Runs the chunks still to do on `opt.threads` workers; throws if one failed.
@@ -273,9 +276,12 @@ void run_workers(const Run& run, Tally tally) {
     throw;
   }
   ::close(pipe_fd[1]);
-  const bool ok = wait_for_workers(run, std::move(children), pipe_fd[0], tally);
+  const std::string failed = wait_for_workers(run, std::move(children), pipe_fd[0], tally);
   ::close(pipe_fd[0]);
-  if (!ok) throw std::runtime_error("fuzz: a worker failed (see above)");
+  // The worker said why (a plug-in's crash, exit() or hang names the plug-in) just above.
+  if (!failed.empty())
+    throw std::runtime_error("fuzz: a worker of method " + run.method.name + " ended with " +
+                             failed + " (its message is above)");
 }
 
 }  // namespace
@@ -297,7 +303,8 @@ FuzzSummary run_fuzz(const FuzzOptions& opt) {
   const Coverage after = coverage_of(run.run_dir, run.first, run.last);
   if (!after.todo.empty())
     throw std::runtime_error("fuzz: cases " + std::to_string(after.todo.front().begin) + ".." +
-                             std::to_string(after.todo.front().end - 1) + " did not finish");
+                             std::to_string(after.todo.front().end - 1) + " of method " +
+                             run.method.name + " did not finish: their worker ended early");
   for (const DoneMarker& m : after.done) {
     const MarkerContent r = read_marker(m.path);
     sum.disagreements += r.disagreements;

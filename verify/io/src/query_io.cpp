@@ -1,6 +1,8 @@
 #include "fdh/io/query_io.hpp"
 
 #include <gmpxx.h>
+#include <locale.h>
+#include <stdlib.h>
 #include <sys/stat.h>
 
 #include <cerrno>
@@ -143,7 +145,10 @@ std::optional<double> parse_double(const std::string& token, std::string& why) {
     }
   char* end = nullptr;
   errno = 0;
-  const double v = std::strtod(s, &end);  // glibc: correctly rounded, decimal and hex-float
+  // glibc: correctly rounded, decimal and hex-float. In the C locale always: strtod follows
+  // LC_NUMERIC, which a Python program that called setlocale may have made a decimal comma.
+  static const locale_t c_locale = ::newlocale(LC_ALL_MASK, "C", locale_t(0));
+  const double v = ::strtod_l(s, &end, c_locale);
   // The whole token: a NUL byte inside it would otherwise end it early.
   if (end == s || end != s + token.size()) {
     why = quote(token) + " is not a number";

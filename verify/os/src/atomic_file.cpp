@@ -1,5 +1,7 @@
 #include "fdh/os/atomic_file.hpp"
 
+#include "fdh/os/temporaries.hpp"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -18,11 +20,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Beside `path`, or in `temp_dir` when one is given.
+// Beside `path` (after removing what dead runs left there), or in `temp_dir` when one is given.
 std::string temp_path(const std::string& path, const std::string& temp_dir = "") {
   static std::atomic<unsigned long> serial{0};  // unique per call: threads may write at once
-  const std::string unique = std::to_string(::getpid()) + "." + std::to_string(serial++);
-  return temp_dir.empty() ? path + ".tmp." + unique : temp_dir + "/" + unique;
+  const unsigned long n = serial++;
+  if (!temp_dir.empty())
+    return temp_dir + "/" + std::to_string(::getpid()) + "." + std::to_string(n);
+  remove_dead_runs_temporaries(path);
+  return temporary_name(path, n);
 }
 
 [[noreturn]] void fail(const std::string& path, const std::string& what, int errno_value) {
@@ -74,11 +79,20 @@ void check_creatable(const std::string& dir, const std::string& for_path) {
   check_writable_folder(p.string(), for_path);
 }
 
-int open_temp(const std::string& path, const std::string& tmp) {
+// A new temporary file for `path`, named in `tmp` and recorded in `recorded`. A name taken
+// already (planted there, even as a link: O_EXCL never opens through one) is passed over.
+int open_temp(const std::string& path, const std::string& temp_dir, std::string& tmp,
+              RecordedTemporary& recorded) {
   refuse_non_regular(path);
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) fail(path, "cannot write file", errno);
-  return fd;
+  for (int attempt = 0;; ++attempt) {
+    tmp = temp_path(path, temp_dir);
+    recorded = RecordedTemporary(tmp);
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) return fd;
+    const int err = errno;
+    recorded = RecordedTemporary();
+    if (err != EEXIST || attempt == 1000) fail(path, "cannot write file", err);
+  }
 }
 
 // fsync, close and rename into place (refusing a path that became a non-regular file); on any
@@ -127,8 +141,9 @@ void write_file_atomically(const std::string& path, const std::string& content) 
 
 void write_file_atomically(const std::string& path, const std::string& content,
                            const std::string& temp_dir) {
-  const std::string tmp = temp_path(path, temp_dir);
-  const int fd = open_temp(path, tmp);
+  std::string tmp;
+  RecordedTemporary recorded;  // removed by SIGTERM or SIGINT until published
+  const int fd = open_temp(path, temp_dir, tmp, recorded);
   const int err = write_all(fd, content) ? 0 : errno;
   publish(fd, tmp, path, err);
 }
@@ -198,8 +213,8 @@ class AtomicFile::Buffer : public std::streambuf {
   std::vector<char> buf_;
 };
 
-AtomicFile::AtomicFile(std::string path) : path_(std::move(path)), tmp_(temp_path(path_)) {
-  buf_ = std::make_unique<Buffer>(open_temp(path_, tmp_));
+AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+  buf_ = std::make_unique<Buffer>(open_temp(path_, "", tmp_, recorded_));
   out_ = std::make_unique<std::ostream>(buf_.get());
 }
 

@@ -1,5 +1,7 @@
 #include "fdh/os/child_process.hpp"
 
+#include "fdh/os/temporaries.hpp"
+
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -34,6 +36,7 @@ ChildProcess::ChildProcess(int (*run)(const void*), const void* arg) {
   if (pid_ > 0) return;
   // The child. A parent that died before prctl took effect would leave it running: check.
   if (::prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || ::getppid() != parent) ::_exit(3);
+  forget_recorded_temporaries();  // the parent's: a signal to the child must not remove them
   int status = 3;
   try {
     status = run(arg);

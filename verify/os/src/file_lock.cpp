@@ -11,10 +11,20 @@
 
 namespace fdh::verify {
 
-FileLock::FileLock(const std::string& path, double wait_seconds) {
-  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
+FileLock::FileLock(const std::string& path, double wait_seconds)
+    : FileLock(AT_FDCWD, path, path, wait_seconds) {}
+
+FileLock::FileLock(int dir_fd, const std::string& name, const std::string& path,
+                   double wait_seconds) {
+  fd_ = ::openat(dir_fd, name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
+  if (fd_ < 0 && errno == ELOOP)
+    throw std::runtime_error(path + ": is a symbolic link, not a lock file; refusing to follow it");
   if (fd_ < 0)
     throw std::runtime_error(path + ": cannot open the lock file: " + std::strerror(errno));
+  lock(path, wait_seconds);
+}
+
+void FileLock::lock(const std::string& path, double wait_seconds) {
   const auto deadline =
       std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_seconds);
   while (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {

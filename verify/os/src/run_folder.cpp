@@ -1,5 +1,7 @@
 #include "fdh/os/run_folder.hpp"
 
+#include "fdh/os/work_folder.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -59,8 +61,10 @@ Coverage coverage_of(const std::string& run_dir, long first, long last) {
   std::vector<DoneMarker> all;
   std::error_code ec;
   for (fs::directory_iterator it(run_dir, ec), end; !ec && it != end; it.increment(ec))
-    if (const std::optional<IndexRange> r = parse_marker_name(it->path().filename().string()))
+    if (const std::optional<IndexRange> r = parse_marker_name(it->path().filename().string())) {
+      refuse_link(it->path().string(), "a done-marker");
       if (r->begin >= first && r->end <= last) all.push_back({*r, it->path().string()});
+    }
   if (ec) throw std::runtime_error(run_dir + ": cannot list: " + ec.message());
   std::sort(all.begin(), all.end(), [](const DoneMarker& a, const DoneMarker& b) {
     return a.range.begin != b.range.begin ? a.range.begin < b.range.begin
@@ -82,8 +86,11 @@ Coverage coverage_of(const std::string& run_dir, long first, long last) {
 std::vector<std::string> run_folders(const std::string& dir, const std::string& except) {
   std::vector<std::string> out;
   std::error_code ec;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    if (it->is_directory() && it->path().filename() != except) out.push_back(it->path().string());
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path().filename() == except) continue;
+    refuse_link(it->path().string(), "a run's folder");
+    if (it->is_directory()) out.push_back(it->path().string());
+  }
   if (ec) throw std::runtime_error(dir + ": cannot list: " + ec.message());
   return out;
 }

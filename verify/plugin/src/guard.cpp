@@ -5,11 +5,13 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <string>
 
 #include "fdh/io/record_scope.hpp"
 #include "fdh/plugin/loader.hpp"
+#include "watchdog.hpp"
 
 namespace fdh::verify::plugin {
 namespace {
@@ -109,6 +111,24 @@ void add_where(SignalText& t, const CallSite& s) {
     t << " (k = " << (unsigned long)(s.k) << ") on " << (unsigned long)(s.points) << " points";
 }
 
+// The time-out's signal: one of the real-time ones, which nothing else here uses.
+int time_out_signal() {
+  return SIGRTMIN + 5;
+}
+char g_limit_text[32];  // "1.5", written before the signal is sent
+
+void on_time_out(int) {
+  const CallSite* site = t_site;
+  if (!site) return;  // the call ended meanwhile
+  SignalText t;
+  t << "fdhcert: plug-in " << site->plugin << " did not return within " << g_limit_text
+    << " s (--plugin-timeout) ";
+  add_where(t, *site);
+  t << "\n";
+  t.write_to(g_report_fd);
+  ::_exit(kPluginFailureStatus);
+}
+
 void on_crash(int sig) {
   const CallSite* site = t_site;
   if (!site) {  // not ours: the previous handler (or the default) takes it once we return
@@ -154,17 +174,34 @@ void install_crash_handlers() {
   a.sa_flags = SA_ONSTACK;
   sigemptyset(&a.sa_mask);
   for (std::size_t i = 0; i < kSignals.size(); ++i) ::sigaction(kSignals[i], &a, &g_previous[i]);
+  a.sa_handler = &on_time_out;
+  ::sigaction(time_out_signal(), &a, nullptr);
+}
+
+void report_time_out(pthread_t thread, double limit) {
+  std::snprintf(g_limit_text, sizeof g_limit_text, "%g", limit);
+  ::pthread_kill(thread, time_out_signal());
 }
 
 void set_crash_report_fd(int fd) {
   g_report_fd = fd;
 }
 
+int report_fd() {
+  return g_report_fd;
+}
+
+const CallSite* current_call() {
+  return t_site;
+}
+
 InCall::InCall(const CallSite& site) : outer_(t_site) {
   t_site = &site;
+  if (!outer_) watch_begin(&site);
 }
 
 InCall::~InCall() {
+  if (!outer_) watch_end();
   t_site = outer_;
 }
 

@@ -5,6 +5,8 @@
 // plug-in call the handlers hand the signal back to whatever handled it before.
 #pragma once
 
+#include <pthread.h>
+
 #include <cstddef>
 #include <string>
 
@@ -30,10 +32,21 @@ std::string where(const CallSite& site);
 // that a plug-in's stack overflow is reported too.
 void install_crash_handlers();
 
-// Where a crash is reported: standard error (2) unless the probe's child says otherwise.
-void set_crash_report_fd(int fd);
+// Asks `thread`, stuck in a plug-in call for `limit` seconds, to report the call and end the
+// process (a signal whose handler runs on that thread: the query's FILE:LINE is known only
+// there). Returns; the process normally ends soon after.
+void report_time_out(pthread_t thread, double limit);
 
-// Marks the calling thread as inside `site` for the object's lifetime.
+// Where a crash, a time-out or an exit() is reported: standard error (2) unless a probing child
+// says otherwise.
+void set_crash_report_fd(int fd);
+int report_fd();
+
+// The plug-in call the calling thread is in, or null.
+const CallSite* current_call();
+
+// Marks the calling thread as inside `site` for the object's lifetime, and arms the call's time
+// limit (watchdog.hpp).
 class InCall {
  public:
   explicit InCall(const CallSite& site);

@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstddef>
@@ -9,12 +10,17 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "elf_machine.hpp"
+#include "exit_catch.hpp"
 #include "fdh/check/registry.hpp"
 #include "fdh/plugin.h"
 #include "guard.hpp"
+#include "private_stdout.hpp"
 #include "probe.hpp"
+#include "watchdog.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -67,12 +73,33 @@ fdh_plugin copy_of_version(const fdh_plugin* p, const std::string& path) {
   return api;
 }
 
+// How long a probing child may take: the call limit and then some, for the watchdog in the child
+// to speak first; without a call limit, no limit.
+double limit_of_child() {
+  const double limit = plugin::call_limit();
+  return limit > 0 ? std::max(10.0, limit + 5) : 1e9;
+}
+
+// dlerror's words, or the ELF header's where dlerror misleads (another machine).
+std::string not_loaded(const std::string& file, const std::string& dlerror_words) {
+  const std::string machine = plugin::wrong_machine(file);
+  return machine.empty() ? dlerror_words : machine + " (dlerror: " + dlerror_words + ")";
+}
+
 // The struct the entry point returns, checked field by field.
 fdh_plugin entry_struct(const std::string& path) {
   // A file path, never a name for dlopen to search for.
   const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
-  void* lib = ::dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (!lib) refuse(path, std::string("cannot load: ") + ::dlerror());
+  // First in a child: a constructor or a cut file that crashes takes the child, not fdhcert.
+  if (const std::optional<std::string> why = plugin::probe_load(path, file, limit_of_child()))
+    refuse(path, "cannot load: " + not_loaded(file, *why));
+  void* lib = nullptr;
+  {
+    const CallSite loading{path.c_str(), "dlopen (its constructors)"};
+    const InCall in(loading);
+    lib = ::dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+  }
+  if (!lib) refuse(path, "cannot load: " + not_loaded(file, ::dlerror()));
   const auto [entry, entry_name] = entry_point(lib, path);
   const CallSite site{path.c_str(), entry_name};
   const fdh_plugin* returned = nullptr;
@@ -216,6 +243,8 @@ BoxMethod box_method(const LoadedPtr& p, int k) {
 
 void load_plugin(const std::string& path) {
   plugin::install_crash_handlers();
+  plugin::catch_exit(path);
+  plugin::divert_stdout();
   auto loaded = std::make_shared<Loaded>();
   loaded->path = path;
   loaded->api = entry_struct(path);
@@ -233,7 +262,16 @@ void load_plugin(const std::string& path) {
   } catch (const std::invalid_argument& e) {
     refuse(path, std::string(e.what()) + ": rename the plug-in");
   }
-  plugin::probe(p->name, methods, boxes);
+  plugin::probe(p->name, methods, boxes, limit_of_child());
+}
+
+void set_plugin_timeout(double seconds) {
+  plugin::set_call_limit(seconds);
+}
+
+void end_plugin_run() {
+  plugin::restore_stdout();
+  plugin::run_finished();
 }
 
 }  // namespace fdh::verify

@@ -1,5 +1,6 @@
 #include "probe.hpp"
 
+#include <dlfcn.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -99,39 +100,100 @@ std::optional<std::string> read_until_closed(int fd, double seconds) {
   }
 }
 
-}  // namespace
+// What a probing child said on its pipe before it closed it (nullopt: nothing within the
+// limit, and it was killed) and how it ended.
+struct Said {
+  std::optional<std::string> text;
+  ChildStatus status;
+};
 
-void probe(const std::string& plugin, const std::vector<Method>& methods,
-           const std::vector<BoxMethod>& boxes, double seconds) {
+// Runs body(fd) in a child (it must end with _exit) and listens on fd for `seconds`.
+template <class Body>
+Said talk(const std::string& what, double seconds, const Body& body) {
   int fds[2];
-  if (::pipe(fds) != 0) throw std::runtime_error("cannot probe plug-in " + plugin + ": no pipe");
+  if (::pipe(fds) != 0) throw std::runtime_error("cannot probe " + what + ": no pipe");
   std::optional<ChildProcess> process;
   try {
     process.emplace([&]() -> int {
       ::close(fds[0]);
-      child(fds[1], methods, boxes);
+      body(fds[1]);
+      return 3;  // unreachable: body ends with _exit
     });
   } catch (const std::exception&) {
     ::close(fds[0]), ::close(fds[1]);
-    throw std::runtime_error("cannot probe plug-in " + plugin + ": no process");
+    throw std::runtime_error("cannot probe " + what + ": no process");
   }
   ::close(fds[1]);
-  const std::optional<std::string> said = read_until_closed(fds[0], seconds);
+  Said said;
+  said.text = read_until_closed(fds[0], seconds);
   ::close(fds[0]);
-  if (!said) process->kill();
-  const int status = process->wait().raw;
+  if (!said.text) process->kill();
+  said.status = process->wait();
+  return said;
+}
+
+// The child's own report ("fdhcert: plug-in P crashed ...", from the crash handler, the
+// watchdog or the exit catcher, status kPluginFailureStatus), without "fdhcert: ".
+std::optional<std::string> own_report(const Said& said) {
+  const std::string prefix = "fdhcert: ";
+  if (!said.status.exited() || said.status.exit_code() != kPluginFailureStatus ||
+      said.text->rfind(prefix, 0) != 0)
+    return std::nullopt;
+  return said.text->substr(prefix.size(), said.text->find('\n') - prefix.size());
+}
+
+// The load child: dlopen (its constructors run), then the entry point; "ok" or dlerror's words.
+[[noreturn]] void load_child(int fd, const std::string& path, const std::string& file) {
+  set_crash_report_fd(fd);
+  const CallSite loading{path.c_str(), "dlopen (its constructors)"};
+  void* lib = nullptr;
+  {
+    const InCall in(loading);
+    lib = ::dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+  }
+  if (!lib) {
+    const char* why = ::dlerror();
+    write_all(fd, std::string("dlerror ") + (why ? why : "unknown error"));
+    ::_exit(0);
+  }
+  for (const char* name : {"fdh_plugin_v2", "fdh_plugin_v1"})
+    if (void* f = ::dlsym(lib, name)) {
+      const CallSite entry{path.c_str(), name};
+      const InCall in(entry);
+      reinterpret_cast<const void* (*)()>(f)();
+      break;
+    }
+  write_all(fd, "ok");
+  ::_exit(0);
+}
+
+}  // namespace
+
+std::optional<std::string> probe_load(const std::string& path, const std::string& file,
+                                      double seconds) {
+  const Said said = talk("plug-in " + path, seconds, [&](int fd) { load_child(fd, path, file); });
+  if (!said.text)
+    throw PluginLoadError("plug-in " + path + ": cannot load: it did not finish loading within " +
+                          std::to_string(int(seconds)) + " s (docs/plugins.md)");
+  if (said.status.ok() && *said.text == "ok") return std::nullopt;
+  if (said.status.ok() && said.text->rfind("dlerror ", 0) == 0) return said.text->substr(8);
+  std::string why = "it ended the process (" + said.status.words() + ") while loading";
+  const std::string own = "plug-in " + path + " ";
+  if (const std::optional<std::string> report = own_report(said))
+    why = report->rfind(own, 0) == 0 ? report->substr(own.size()) : *report;
+  throw PluginLoadError("plug-in " + path + ": cannot load: " + why + " (docs/plugins.md)");
+}
+
+void probe(const std::string& plugin, const std::vector<Method>& methods,
+           const std::vector<BoxMethod>& boxes, double seconds) {
+  const Said said = talk("plug-in " + plugin, seconds, [&](int fd) { child(fd, methods, boxes); });
   const std::string what = "plug-in " + plugin;
-  if (!said)
+  if (!said.text)
     throw PluginFailure(what + " did not answer within " + std::to_string(int(seconds)) +
                         " s when probed on built-in inputs");
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && *said == "ok") return;
-  const std::string prefix = "fdhcert: ";
-  if (WIFEXITED(status) && WEXITSTATUS(status) == kPluginFailureStatus &&
-      said->rfind(prefix, 0) == 0)
-    throw PluginFailure(said->substr(prefix.size(), said->find('\n') - prefix.size()));
-  throw PluginFailure(what + " ended the process (" +
-                      (WIFSIGNALED(status) ? "signal " + std::to_string(WTERMSIG(status))
-                                           : "exit status " + std::to_string(WEXITSTATUS(status))) +
+  if (said.status.ok() && *said.text == "ok") return;
+  if (const std::optional<std::string> report = own_report(said)) throw PluginFailure(*report);
+  throw PluginFailure(what + " ended the process (" + said.status.words() +
                       ") when probed on built-in inputs");
 }
 

@@ -3,6 +3,8 @@
 // work starts, with the words of the call that failed.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "fdh/check/registry.hpp"
@@ -14,5 +16,12 @@ namespace fdh::verify::plugin {
 // garbage, ended early or did not finish within `seconds`.
 void probe(const std::string& plugin, const std::vector<Method>& methods,
            const std::vector<BoxMethod>& boxes, double seconds = 10);
+
+// Loads `file` (plug-in `path`) in a child and calls its entry point, so that a constructor or a
+// cut file that crashes, hangs or calls exit() is a PluginLoadError ("plug-in PATH: cannot load:
+// crashed (SIGSEGV) in dlopen (its constructors)") and fdhcert lives on to say it. Returns
+// dlerror's words when dlopen failed in the child, nullopt when it loaded.
+std::optional<std::string> probe_load(const std::string& path, const std::string& file,
+                                      double seconds);
 
 }  // namespace fdh::verify::plugin

@@ -8,7 +8,8 @@
 //   vertex-face and edge-edge CCD, `robust` with its exact fallback), cloth against itself and
 //   against the obstacles (cloth vertices against obstacle triangles, obstacle vertices against
 //   cloth triangles, cloth edges against obstacle edges).
-// Frames are given one at a time (two in memory), so a long sequence streams.
+// Frames are given one at a time (two in memory), so a long sequence streams. The first frame
+// also builds the trees (verify/audit/src/trees.hpp), which later frames refit.
 #pragma once
 
 #include <array>
@@ -22,7 +23,8 @@
 
 namespace fdh::audit {
 
-// The topology, fixed for the whole sequence. Indices count from 0 in file order.
+// The topology, fixed for the whole sequence. Indices count from 0 in file order. Vertices in no
+// triangle are not part of a surface and are not tested.
 struct Topology {
   int cloth_vertices = 0;
   std::vector<Tri> cloth;  // triangles, indices into the cloth's vertices

@@ -23,11 +23,15 @@ struct Chart {
 };
 
 // Draws the chart twice, as PNG (pngcairo) and as SVG. gnuplot is started with an argument
-// list (fork and execvp, no shell), reads its script from a temporary file, draws into
-// temporary files beside the chart that are renamed into place only when it succeeded, and is
-// killed if fdhcert dies first (PR_SET_PDEATHSIG). Throws std::runtime_error when gnuplot is
-// missing or fails (its messages go to stderr) or a chart path is not a regular file; the old
-// charts are then left as they were.
+// list (fork and execvp, no shell), reads its script from a temporary file, and draws into a
+// folder of its own beside the chart (DIR/NAME.tmp.<pid>.XXXXXX: mkdtemp, mode 0700, so no
+// link can be planted at a name it opens). Both drawings are checked whole (the PNG's chunks
+// to IEND, the SVG to `</svg>`) before either is renamed into place. gnuplot is killed if
+// fdhcert dies first (PR_SET_PDEATHSIG); what a killed run left is removed by the next
+// (fdh/os/temporaries.hpp). Throws std::runtime_error when gnuplot is missing, fails or draws a
+// cut chart ("gnuplot failed drawing DIR/NAME.png: No space left on device": gnuplot ignores its
+// write errors, so a cut chart's reason is found by a probe write beside it), or a chart path
+// is not a regular file; the old charts are then left as they were, byte for byte.
 void draw_chart(const Chart& chart);
 
 }  // namespace fdh::verify

@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "fdh/os/temporaries.hpp"
+
 namespace fdh::verify {
 
 // Throws std::runtime_error naming the path and the system's reason when the file cannot be
@@ -42,9 +44,10 @@ void check_output_dir(const std::string& dir, const std::vector<std::string>& fi
 std::string system_reason(int errno_value);
 
 // A file written piece by piece but published whole: stream() writes to a temporary file
-// beside `path`; commit() renames it into place. Destroyed uncommitted, it leaves nothing.
-// Every write is checked; commit() throws std::runtime_error with the path and the system's
-// reason when any write, the flush or the close failed.
+// beside `path` (recorded, so that SIGTERM and SIGINT remove it; what a dead run left beside
+// `path` is removed first: fdh/os/temporaries.hpp); commit() renames it into place. Destroyed
+// uncommitted, it leaves nothing. Every write is checked; commit() throws std::runtime_error with
+// the path and the system's reason when any write, the flush or the close failed.
 class AtomicFile {
  public:
   explicit AtomicFile(std::string path);
@@ -58,6 +61,7 @@ class AtomicFile {
 
  private:
   std::string path_, tmp_;
+  RecordedTemporary recorded_;  // tmp_, for SIGTERM and SIGINT (fdh/os/temporaries.hpp)
   std::unique_ptr<Buffer> buf_;
   std::unique_ptr<std::ostream> out_;
   bool committed_ = false;

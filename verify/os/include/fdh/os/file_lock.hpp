@@ -18,11 +18,15 @@ class FileLock {
   // `wait_seconds` for another holder to let go. Throws LockBusy when it does not,
   // std::runtime_error naming the path when the file cannot be opened or locked.
   FileLock(const std::string& path, double wait_seconds);
+  // The same for `name` in the folder open as `dir_fd` (openat): no link on the way is followed.
+  // `path` names the file in messages.
+  FileLock(int dir_fd, const std::string& name, const std::string& path, double wait_seconds);
   ~FileLock();
   FileLock(const FileLock&) = delete;
   FileLock& operator=(const FileLock&) = delete;
 
  private:
+  void lock(const std::string& path, double wait_seconds);
   int fd_ = -1;
 };
 

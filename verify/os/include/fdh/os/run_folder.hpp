@@ -43,10 +43,12 @@ struct Coverage {
   long done_count() const;
 };
 
-// Throws std::runtime_error naming the folder when it cannot be listed.
+// Throws std::runtime_error naming the folder when it cannot be listed, or naming a marker that
+// is a symbolic link (never followed).
 Coverage coverage_of(const std::string& run_dir, long first, long last);
 
-// The folders beside one another in `dir` (each a run's), apart from `except`.
+// The folders beside one another in `dir` (each a run's), apart from `except`. A symbolic link
+// among them is refused (std::runtime_error), never followed.
 std::vector<std::string> run_folders(const std::string& dir, const std::string& except);
 
 }  // namespace fdh::verify

@@ -27,6 +27,20 @@ inline constexpr int kPluginFailureStatus = 3;
 // k it builds, all under its name), then probes its functions in a forked child on built-in
 // inputs. Throws PluginLoadError, or PluginFailure when the probe failed (the methods stay
 // added until the run ends: remove_added_methods).
+// From the first load until end_plugin_run, the run is caged (docs/plugins.md): exit() is
+// reported as the plug-in's (exit status kPluginFailureStatus), fd 1 is standard error while
+// fdhcert's own output (std::cout) goes to the real standard output, and each call has a time
+// limit (set_plugin_timeout).
 void load_plugin(const std::string& path);
+
+// The default of --plugin-timeout: seconds one plug-in call may take.
+inline constexpr double kDefaultPluginTimeout = 5;
+
+// Each plug-in call's time limit (0: none); a call over it ends the process with
+// kPluginFailureStatus, naming plug-in, function and query.
+void set_plugin_timeout(double seconds);
+
+// The run is over: standard output back on fd 1, exit() fdhcert's own again.
+void end_plugin_run();
 
 }  // namespace fdh::verify
