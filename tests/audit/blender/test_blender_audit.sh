@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# A real simulator's output through `fdhcert audit`: Blender bakes two small cloth scenes
+# (bake_cloth.py: a 20x20 cloth dropped on a sphere, and one crumpled with self-collision, 30
+# frames each) and the audit must decide every frame and step of each: exit 0 (clean) or 1 (a
+# violation), never 2 or a crash, with a certificate that has its fields. It does not demand
+# clean: Blender's cloth may pass through (docs/audit.md, "Blender's cloth").
+# Skips (exit 77) where `blender` is not installed (./run installs it when run as root).
+#   test_blender_audit.sh FDHCERT REPO
+set -euo pipefail
+command -v blender >/dev/null || { echo "SKIP: no blender (./run installs it as root)"; exit 77; }
+fdhcert=$(realpath "$1")
+repo=$(realpath "$2")
+grid=20
+frames=30
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/fdh-blender.XXXXXX")
+cleanup() {
+  if [ "${FDH_KEEP_TEST_FILES:-}" = 1 ]; then echo "FDH_KEEP_TEST_FILES: kept $work"; else rm -rf "$work"; fi
+}
+trap cleanup EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+for scene in drop crumple; do
+  frames_dir=$work/$scene-frames
+  out=$work/$scene-audit
+  blender -b --factory-startup -P "$repo/tests/audit/blender/bake_cloth.py" -- \
+    --scene "$scene" --grid "$grid" --frames "$frames" --out "$frames_dir" \
+    >"$work/$scene-bake.log" 2>&1 || { tail -n 30 "$work/$scene-bake.log"; fail "$scene: the bake failed"; }
+  grep '^bake_cloth:' "$work/$scene-bake.log"
+  written=$(find "$frames_dir" -name 'frame_*.obj' | wc -l)
+  [ "$written" -eq "$frames" ] || fail "$scene: $written frame files, expected $frames"
+
+  status=0
+  "$fdhcert" audit "$frames_dir" --json --out "$out" >"$work/$scene-audit.json" 2>"$work/$scene-audit.err" ||
+    status=$?
+  cat "$work/$scene-audit.err"
+  [ "$status" -eq 0 ] || [ "$status" -eq 1 ] || fail "$scene: fdhcert audit exited $status (0 or 1 expected)"
+  python3 "$repo/tests/audit/check_audit_json.py" "$work/$scene-audit.json" "$out" \
+    --frames "$frames" --status "$status" --cloth-vertices $((grid * grid)) ||
+    fail "$scene: the audit's certificate is not as expected"
+done
+echo "PASS"
