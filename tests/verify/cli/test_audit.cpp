@@ -131,7 +131,7 @@ TEST(AuditCommand, TheShippedScenesSimulatedOutputIsClean) {
       const CliRun r = fdhcert({"audit", dir.string(), "--json"});
       EXPECT_EQ(r.status, 0) << scene << r.out << r.err;
       const Json j = Json::parse(r.out);
-      EXPECT_EQ(j["frames"], frames) << scene;
+      EXPECT_EQ(j["frames"], frames + 1) << scene;  // frame_00000.obj: the start
       if (frames == 400) {
         EXPECT_GT(j["candidates"]["ccd"].get<long>(), 0) << scene;
       }
@@ -146,7 +146,7 @@ TEST(AuditCommand, TheShippedScenesSimulatedOutputIsClean) {
 TEST(AuditCommand, APlantedCrossingIsFoundWithItsPairAndStep) {
   const fs::path root = fresh_temp_dir("audit_planted");
   const fs::path dir = simulated("sphere.scene", root / "frames");
-  const fs::path frame = dir / "frame_00020.obj";  // the sequence's frame 19
+  const fs::path frame = dir / "frame_00020.obj";  // frame 20 (frame_00000.obj: the start)
   std::string text = read(frame);
   std::size_t at = 0;
   for (int line = 1; line < 314; ++line) at = text.find('\n', at) + 1;  // cloth vertex 312
@@ -159,10 +159,10 @@ TEST(AuditCommand, APlantedCrossingIsFoundWithItsPairAndStep) {
   EXPECT_EQ(j, Json::parse(read(out + "/audit.json")));
   const Json& v = j["first_violation"];
   EXPECT_EQ(v["kind"], "cloth-vertex-obstacle");
-  EXPECT_EQ(v["frame"], 18);
-  EXPECT_EQ(v["to_frame"], 19);
+  EXPECT_EQ(v["frame"], 19);
+  EXPECT_EQ(v["to_frame"], 20);
   EXPECT_EQ(v["vertices"][0], 312);
-  EXPECT_EQ(v["places"][0], (dir / "frame_00019.obj").string() + ":314");
+  EXPECT_EQ(v["places"][0], (dir / "frame_00019.obj").string() + ":314");  // the step's start
   EXPECT_LE(v["toi"]["t_lo"].get<double>(), v["toi"]["t_hi"].get<double>());
   EXPECT_GT(v["toi"]["t_lo"].get<double>(), 0);
   EXPECT_EQ(j["kept"].size(), 4u);

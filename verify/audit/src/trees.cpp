@@ -4,45 +4,13 @@
 
 #include "fdh/bvh.hpp"
 #include "fdh/normal_cone.hpp"
+#include "fdh/parallel/bottom_up.hpp"
 #include "fdh/parallel/chunks.hpp"
 #include "kernel_centre.hpp"
 #include "patch_boundaries.hpp"
 
 namespace fdh::audit {
 namespace {
-
-// A tree in preorder cut for passes on every core: the subtrees at depth 6 (or the leaves above
-// it), each a contiguous range of nodes, and the nodes above them.
-struct Subtrees {
-  std::vector<int> roots, ends, top;  // top in preorder
-};
-
-template <class Node>
-int subtree_end(const std::vector<Node>& nodes, int i) {
-  while (!nodes[i].leaf()) i = nodes[i].right;
-  return i + 1;
-}
-
-template <class Node>
-void cut(const std::vector<Node>& nodes, int node, int depth, Subtrees& s) {
-  if (depth == 6 || nodes[node].leaf()) {
-    s.roots.push_back(node);
-    s.ends.push_back(subtree_end(nodes, node));
-    return;
-  }
-  s.top.push_back(node);
-  cut(nodes, nodes[node].left, depth + 1, s);
-  cut(nodes, nodes[node].right, depth + 1, s);
-}
-
-// f(i) for every node, children before parents; each subtree on a core of its own.
-template <class F>
-void bottom_up(const Subtrees& s, const F& f) {
-  parallel::for_each_index(s.roots.size(), 1, [&](std::size_t r) {
-    for (int i = s.ends[r] - 1; i >= s.roots[r]; --i) f(i);
-  });
-  for (auto i = s.top.rbegin(); i != s.top.rend(); ++i) f(*i);
-}
 
 // A node's axis-aligned boxes at each end of the step (merged exactly: min and max).
 struct Ends {
@@ -117,12 +85,12 @@ class TreesK : public Trees {
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       const auto& n = nodes[i];
       shape[i] = n.leaf() ? NodeShape{-1, -1, ctree_.prims()[n.first]} : NodeShape{n.left, n.right};
-      ends_[i] = subtree_end(nodes, int(i));
+      ends_[i] = parallel::subtree_end(nodes, int(i));
     }
     partner_ = cell_partners(cloth, x);
     loops_ = PatchBoundaries(shape, cloth, partner_);
-    if (!nodes.empty()) cut(nodes, 0, 0, csub_);
-    if (!otree_.empty()) cut(otree_.nodes(), 0, 0, osub_);
+    csub_ = parallel::BottomUp(nodes);
+    osub_ = parallel::BottomUp(otree_.nodes());
     normals_.resize(nodes.size());
     lean_.resize(nodes.size());
   }
@@ -150,14 +118,14 @@ class TreesK : public Trees {
 
  private:
   // Refit, swept over x0 -> x1 (x1 empty: still at x0), with the cloth's normal boxes.
-  void update(Bvh<K>& t, const Subtrees& sub, const std::vector<Vec3>& x0,
+  void update(Bvh<K>& t, const parallel::BottomUp& sub, const std::vector<Vec3>& x0,
               const std::vector<Vec3>& x1, std::vector<Ends>& ends, bool normals) {
     if (t.empty()) return;
     const double w = Bvh<K>::widening(x0, x1);
     const std::vector<Vec3>& y1 = x1.empty() ? x0 : x1;
     const auto& nodes = t.nodes();
     ends.resize(nodes.size());
-    bottom_up(sub, [&](int i) {
+    sub.run([&](int i) {
       t.refit_node(i, x0, x1, w);
       const auto& n = nodes[i];
       if (n.leaf()) {
@@ -292,7 +260,7 @@ class TreesK : public Trees {
   std::vector<int> ends_;     // per cloth node: one past its subtree
   std::vector<int> partner_;  // per cloth triangle: its cell's other one, or -1
   PatchBoundaries loops_;
-  Subtrees csub_, osub_;
+  parallel::BottomUp csub_, osub_;   // the trees' refit passes
   std::vector<Ends> cends_, oends_;  // per node: its boxes at the step's ends
   std::vector<NormalBox> normals_;
   std::vector<Vec3> lean_;

@@ -88,12 +88,19 @@ class Outputs {
   }
   const TriMesh& obstacles() const { return obstacles_; }
 
+  void obj(const cloth::Simulation& sim, int frame) const {
+    if (o_.obj_dir.empty()) return;
+    write_obj(o_.obj_dir + fmt::format("/frame_{:05d}.obj", frame),
+              {{"cloth", &sim.cloth().x(), &sim.cloth().triangles(), kClothColour},
+               {"obstacles", &obstacles_.x, &obstacles_.tris, kObstacleColour}});
+  }
+
+  // Frame 0, the initial state: an OBJ only.
+  void start(const cloth::Simulation& sim) { obj(sim, 0); }
+
   void frame(const cloth::Simulation& sim, int frame) {
     if (movie_) movie_->frame(sim, frame);
-    if (!o_.obj_dir.empty())
-      write_obj(o_.obj_dir + fmt::format("/frame_{:05d}.obj", frame),
-                {{"cloth", &sim.cloth().x(), &sim.cloth().triangles(), kClothColour},
-                 {"obstacles", &obstacles_.x, &obstacles_.tris, kObstacleColour}});
+    obj(sim, frame);
     if (!recording_) return;
     for (const auto& q : sim.queries()) {
       QueryRecord r;
@@ -188,6 +195,7 @@ int run_simulate(SimulateOptions& o, const Io& io) {
   const int frames = o.run.frames < 0 ? scene.frames : o.run.frames;
   Outputs outputs(o, scene, frames);
   ProgressLine progress(io.err, progress_wanted(io, o.quiet));
+  o.run.on_start = [&](const cloth::Simulation& sim) { outputs.start(sim); };
   o.run.on_frame = [&](const cloth::Simulation& sim, int frame) {
     outputs.frame(sim, frame);
     progress.draw({"simulate " + scene.name, frame, frames, "frames"});
@@ -252,8 +260,9 @@ void add_scene_options(CLI::App& cmd, SimulateOptions& o) {
 
 void add_output_options(CLI::App& cmd, SimulateOptions& o) {
   cmd.add_option("--obj", o.obj_dir,
-                 "write DIR/frame_NNNNN.obj for every frame (cloth and\n"
-                 "obstacles), for Blender or ParaView")
+                 "write DIR/frame_NNNNN.obj for every frame, from 00000 (the\n"
+                 "initial state), with objects cloth and obstacles, for\n"
+                 "`fdhcert audit`, Blender or ParaView")
       ->type_name("DIR");
   cmd.add_option("--png", o.png, "render the last frame to FILE")->type_name("FILE");
   cmd.add_option("--movie", o.movie,

@@ -42,6 +42,7 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
     r.audit_last_inside = c.inside, r.audit_last_crossing = c.crossing;
   };
   r.energy_start = sim.cloth().energy();
+  if (opt.on_start) opt.on_start(sim);
   for (int f = 1; f <= r.frames; ++f) {
     sim.step();
     r.time += sim.times();

@@ -21,6 +21,9 @@ struct SceneRunOptions {
   // Audit the cloth against itself too (exact::self_crossings, every frame). On by default
   // when the scene runs the self-collision pass.
   bool audit_self = false;
+  // Called once before the first step, with the scene's initial state (frame 0), e.g. to write
+  // it as an OBJ (an audit of the frames then covers the first step too).
+  std::function<void(const cloth::Simulation&)> on_start;
   // Called after every frame (1-based), e.g. to write an OBJ or record the queries.
   std::function<void(const cloth::Simulation&, int frame)> on_frame;
 };
