@@ -22,7 +22,9 @@ const char* const kFooter =
     "Exit status: 0 success, 1 a check or certificate failed, 2 bad input or usage,\n"
     "a bound passed, or an output (standard output included) that could not be\n"
     "written; every output path is checked before a run starts (docs/limits.md);\n"
-    "3 a --plugin crashed or answered garbage (docs/plugins.md).";
+    "3 a --plugin crashed, hung past --plugin-timeout, called exit() or answered\n"
+    "garbage (docs/plugins.md), or an internal error; 128+N killed by signal N\n"
+    "(this run's temporary files removed first).";
 
 // fdhcert's help layout: the usage line first, then the description (as the help texts read
 // before CLI11); the command list shows the first line of each command's description.

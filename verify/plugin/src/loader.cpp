@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -126,12 +127,17 @@ fdh_plugin entry_struct(const std::string& path) {
 
 // `v` in the fewest digits that read back as v.
 std::string shortest(double v) {
-  char text[32];
+  // to_chars and from_chars: the C locale's digits whatever LC_NUMERIC says (a Python host).
+  char text[40];
+  std::size_t n = 0;
   for (int digits = 15; digits <= 17; ++digits) {
-    std::snprintf(text, sizeof text, "%.*g", digits, v);
-    if (std::strtod(text, nullptr) == v || std::isnan(v)) break;
+    n = std::size_t(
+        std::to_chars(text, text + sizeof text, v, std::chars_format::general, digits).ptr - text);
+    double r = 0;
+    std::from_chars(text, text + n, r);
+    if (r == v || std::isnan(v)) break;
   }
-  return text;
+  return std::string(text, n);
 }
 
 // A query function as a registry test: the 8 points in, 0 or 1 out, anything else garbage.

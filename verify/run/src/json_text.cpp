@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -160,7 +161,11 @@ std::string json_line(const json& j, const std::string& what) {
 }
 
 double six_digits(double v) {
-  return std::stod(fmt::format("{:.6g}", v));
+  // Read back with from_chars: std::stod follows LC_NUMERIC, which a Python host may set.
+  const std::string s = fmt::format("{:.6g}", v);
+  double r = v;
+  std::from_chars(s.data(), s.data() + s.size(), r);
+  return r;
 }
 
 }  // namespace fdh::verify

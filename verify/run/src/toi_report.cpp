@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -66,7 +67,9 @@ Json methods_json(const ToiClassification& c) {
 std::string exact_text(double v) {
   for (int digits = 15; digits <= 17; ++digits) {
     const std::string s = fmt::format("{:.{}g}", v, digits);
-    if (std::stod(s) == v) return s;
+    double r = 0;  // from_chars: the C locale's digits whatever LC_NUMERIC says
+    std::from_chars(s.data(), s.data() + s.size(), r);
+    if (r == v) return s;
   }
   return fmt::format("{:.17g}", v);
 }
