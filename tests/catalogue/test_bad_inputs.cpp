@@ -133,6 +133,20 @@ const std::vector<Row>& rows() {
          return Args{"classify", write_text(d / "c.vf", "vf q 1 2 3\n")};
        },
        2, "c.vf:1: expected 'vf <id> <24 numbers> [truth]', found 3 fields after the id"},
+      // A method name not in the registry: the hint that a plug-in's need --plugin.
+      {"UnknownMethodHintsAtPlugins",
+       [](const fs::path& d) {
+         return Args{"classify", write_text(d / "m.vf", kGoodLine), "--methods", "fcl-ccd"};
+       },
+       2, "linear-system); a plug-in's methods need --plugin FILE"},
+      // A '#' in an id comments out the rest of the line: the error says so.
+      {"HashInsideAnId",
+       [](const fs::path& d) {
+         return Args{"classify", write_text(d / "h.vf", "vf q#1 1 2 3\n")};
+       },
+       2,
+       "h.vf:1: expected 'vf <id> <24 numbers> [truth]', found 0 fields after the id (the '#' at "
+       "column 5 starts a comment: an id cannot hold '#')"},
       {"NulByteInsideANumber",
        [](const fs::path&) {
          return Args{"classify", kBad + "nul_in_number.vf"};

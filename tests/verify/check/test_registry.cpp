@@ -43,6 +43,7 @@ TEST(Registry, UnknownNamesListTheKnownOnes) {
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("unknown method 'nonsense' (known: "), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("--plugin FILE"), std::string::npos);  // the hint
   }
   EXPECT_THROW(narrow_phase_named("float-cubic"), std::invalid_argument);  // no static test
   EXPECT_THROW(all_methods(7), std::invalid_argument);

@@ -279,7 +279,8 @@ std::vector<Method> select_methods(const std::vector<std::string>& names, int ga
     const auto it =
         std::find_if(all.begin(), all.end(), [&](const Method& m) { return m.name == n; });
     if (it == all.end())
-      throw std::invalid_argument("unknown method '" + n + "' (known: " + joined(known) + ")");
+      throw std::invalid_argument("unknown method '" + n + "' (known: " + joined(known) +
+                                  "; a plug-in's methods are known once --plugin FILE names it)");
     out.push_back(*it);
   }
   return out;

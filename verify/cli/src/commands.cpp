@@ -26,7 +26,12 @@ std::string quoted_input(std::string_view s, std::size_t shown) {
 CLI::Validator known_method() {
   // The registry asked when the value is checked (parsing's end), not when the option is
   // declared, so that a --plugin's methods count wherever it stands.
-  return CLI::Validator([](std::string& s) { return one_of(method_names())(s); }, "");
+  return CLI::Validator(
+      [](std::string& s) {
+        const std::string why = one_of(method_names())(s);
+        return why.empty() ? why : why + "; a plug-in's methods need --plugin FILE";
+      },
+      "");
 }
 
 CLI::Option* add_methods_option(CLI::App& cmd, std::vector<std::string>& names,

@@ -184,10 +184,13 @@ std::vector<QueryRecord> read_native(const std::string& path) {
                          "a query line starts with 'vf' or 'ee', not " + quote(tok[0]));
       }
       if (tok.size() != 26 && tok.size() != 27)
-        throw InputError(path, lineno,
-                         "expected '" + tok[0] + " <id> <24 numbers> [truth]', found " +
-                             std::to_string(tok.size() < 2 ? 0 : tok.size() - 2) +
-                             " fields after the id");
+        throw InputError(
+            path, lineno,
+            "expected '" + tok[0] + " <id> <24 numbers> [truth]', found " +
+                std::to_string(tok.size() < 2 ? 0 : tok.size() - 2) + " fields after the id" +
+                (hash == std::string::npos ? std::string()
+                                           : " (the '#' at column " + std::to_string(hash + 1) +
+                                                 " starts a comment: an id cannot hold '#')"));
       if (has_control_byte(tok[1]))
         throw InputError(path, lineno, "the id " + quote(tok[1]) + " holds a control byte");
       check_query_count(out.size(), max_queries, in);
