@@ -149,6 +149,20 @@ TEST(Plugin, APlugInThatCannotBeUsedIsRefusedWithExitTwo) {
 }
 
 // The probe runs the plug-in in a child first: this process lives on and says what happened.
+// The same file twice, by two paths: refused as a duplicate, not as a taken name.
+TEST(Plugin, TheSameFileGivenTwiceIsRefusedAsADuplicate) {
+  const std::string again = std::string(FDH_EXAMPLE_PLUGIN).insert(1, "/");  // "//...": same file
+  const CliRun r =
+      fdhcert({"classify", kData + "static.vf", "--plugin", FDH_EXAMPLE_PLUGIN, "--plugin", again});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_TRUE(
+      has(r.err, "plug-in " + again + ": given twice: the same file as an earlier --plugin"))
+      << r.err;
+  // A later run in the same process may load it again.
+  EXPECT_EQ(fdhcert({"classify", kData + "static.vf", "--plugin", FDH_EXAMPLE_PLUGIN}).status, 0);
+}
+
 TEST(Plugin, AProbedCrashOrGarbageBoxIsReportedWithExitThree) {
   const CliRun crash =
       fdhcert({"classify", kData + "static.vf", "--plugin", faulty("crash-when-probed")});

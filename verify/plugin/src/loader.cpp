@@ -1,6 +1,7 @@
 #include "fdh/plugin/loader.hpp"
 
 #include <dlfcn.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cctype>
@@ -36,6 +37,13 @@ struct Loaded {
   fdh_plugin api{};
 };
 using LoadedPtr = std::shared_ptr<const Loaded>;
+
+// The files loaded in this run, by device and inode: the same file given twice (by any path) is
+// refused as such, not as a taken method name. Cleared when the run ends (end_plugin_run).
+std::vector<std::pair<dev_t, ino_t>>& loaded_files() {
+  static std::vector<std::pair<dev_t, ino_t>> files;
+  return files;
+}
 
 [[noreturn]] void refuse(const std::string& path, const std::string& why) {
   throw PluginLoadError("plug-in " + path + ": " + why + " (docs/plugins.md)");
@@ -251,6 +259,12 @@ void load_plugin(const std::string& path) {
   plugin::install_crash_handlers();
   plugin::catch_exit(path);
   plugin::divert_stdout();
+  struct stat st {};
+  const bool known = ::stat(path.c_str(), &st) == 0;  // else dlopen names the reason below
+  const std::pair<dev_t, ino_t> id{st.st_dev, st.st_ino};
+  auto& files = loaded_files();
+  if (known && std::find(files.begin(), files.end(), id) != files.end())
+    refuse(path, "given twice: the same file as an earlier --plugin");
   auto loaded = std::make_shared<Loaded>();
   loaded->path = path;
   loaded->api = entry_struct(path);
@@ -269,6 +283,7 @@ void load_plugin(const std::string& path) {
     refuse(path, std::string(e.what()) + ": rename the plug-in");
   }
   plugin::probe(p->name, methods, boxes, limit_of_child());
+  if (known) files.push_back(id);
 }
 
 void set_plugin_timeout(double seconds) {
@@ -276,6 +291,7 @@ void set_plugin_timeout(double seconds) {
 }
 
 void end_plugin_run() {
+  loaded_files().clear();
   plugin::restore_stdout();
   plugin::run_finished();
 }
