@@ -37,7 +37,7 @@ CLI::Validator known_method() {
 CLI::Option* add_methods_option(CLI::App& cmd, std::vector<std::string>& names,
                                 const std::string& help) {
   // One word per --methods (not the files after it), split at commas.
-  return cmd.add_option("--methods", names, help)
+  return cmd.add_option("--methods", names, help + "\n(a --plugin FILE adds its methods)")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->type_name("LIST")

@@ -152,7 +152,10 @@ Command add_fuzz(CLI::App& app) {
   auto o = std::make_shared<FuzzCommandOptions>();
   FuzzOptions& opt = o->run;
   CLI::App* cmd = add_command(app, "fuzz", kFuzzAbout, kFuzzFooter);
-  cmd->add_option("--method", opt.method, wrapped(method_names(), 56))->required()->type_name("M");
+  cmd->add_option("--method", opt.method,
+                  wrapped(method_names(), 56) + "\n(a --plugin FILE adds its methods)")
+      ->required()
+      ->type_name("M");
   cmd->add_option("--family", opt.family, wrapped(every_family_name(), 56))
       ->required()
       ->type_name("F")
