@@ -38,6 +38,23 @@ bool is_step(ViolationKind k) {
   return k != ViolationKind::SelfIntersection && k != ViolationKind::ObstacleIntersection;
 }
 
+long StepCounts::*counter_of(ViolationKind k) {
+  switch (k) {
+    case ViolationKind::SelfVertexFace:
+      return &StepCounts::self_vertex_face;
+    case ViolationKind::SelfEdgeEdge:
+      return &StepCounts::self_edge_edge;
+    case ViolationKind::ClothVertexObstacle:
+      return &StepCounts::cloth_vertex_obstacle;
+    case ViolationKind::ObstacleVertexCloth:
+      return &StepCounts::obstacle_vertex_cloth;
+    case ViolationKind::ClothEdgeObstacleEdge:
+      return &StepCounts::cloth_edge_obstacle_edge;
+    default:
+      return nullptr;
+  }
+}
+
 struct Auditor::Impl {
   Topology topology;
   Options options;

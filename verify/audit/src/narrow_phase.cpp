@@ -24,21 +24,6 @@ inline Aabb tri_box(const std::vector<Aabb>& box, const Tri& t) {
   return join(join(box[t[0]], box[t[1]]), box[t[2]]);
 }
 
-long& count_of(StepCounts& c, ViolationKind k) {
-  switch (k) {
-    case ViolationKind::SelfVertexFace:
-      return c.self_vertex_face;
-    case ViolationKind::SelfEdgeEdge:
-      return c.self_edge_edge;
-    case ViolationKind::ClothVertexObstacle:
-      return c.cloth_vertex_obstacle;
-    case ViolationKind::ObstacleVertexCloth:
-      return c.obstacle_vertex_cloth;
-    default:
-      return c.cloth_edge_obstacle_edge;
-  }
-}
-
 // The four points of a query: ids into the vertex lists `a` (the first `split` of them) and `b`.
 Query query_of(QueryKind kind, const std::array<int, 4>& ids, int split,
                const std::vector<Vec3>& a0, const std::vector<Vec3>& a1,
@@ -99,7 +84,7 @@ void moving(const Query& q, ViolationKind kind, const std::array<int, 4>& ids, i
   if (apart_all_step(q, q.kind == QueryKind::VertexFace ? 1 : 2)) return;
   ++part.step.candidates;
   if (!robust_ccd(q, exact::ccd_hit)) return;
-  ++count_of(part.step, kind);
+  ++(part.step.*counter_of(kind));
   Violation v;
   v.kind = kind;
   v.frame = pass.frame - 1;

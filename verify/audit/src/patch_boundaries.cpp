@@ -20,6 +20,28 @@ int longest_edge(const Tri& t, const std::vector<Vec3>& x) {
   return best;
 }
 
+// Sorts the edges by their ends (either way round) and drops every edge met twice: a boundary's
+// interior edges, each run once by either of its two triangles. Returns false if an edge is met
+// twice the same way and same_way_fails (edges then unspecified).
+bool drop_interior_edges(std::vector<Edge>& edges, bool same_way_fails) {
+  const auto key = [](const Edge& e) {
+    return std::make_pair(std::min(e[0], e[1]), std::max(e[0], e[1]));
+  };
+  std::sort(edges.begin(), edges.end(),
+            [&](const Edge& a, const Edge& b) { return key(a) < key(b); });
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (i + 1 < edges.size() && key(edges[i]) == key(edges[i + 1])) {
+      if (same_way_fails && edges[i] == edges[i + 1]) return false;
+      ++i;
+      continue;
+    }
+    edges[out++] = edges[i];
+  }
+  edges.resize(out);
+  return true;
+}
+
 }  // namespace
 
 std::vector<int> cell_partners(const MeshParts& mesh, const std::vector<Vec3>& x) {
@@ -118,21 +140,8 @@ std::vector<Edge> PatchBoundaries::boundary(const std::vector<NodeShape>& nodes,
     ok = ok_left && ok_right;
     if (!ok) return {};
     edges.insert(edges.end(), right.begin(), right.end());
-    const auto key = [](const Edge& e) {
-      return std::make_pair(std::min(e[0], e[1]), std::max(e[0], e[1]));
-    };
-    std::sort(edges.begin(), edges.end(),
-              [&](const Edge& a, const Edge& b) { return key(a) < key(b); });
-    std::size_t out = 0;
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-      // Oriented triangles: an edge met twice is run both ways, and is interior.
-      if (i + 1 < edges.size() && key(edges[i]) == key(edges[i + 1])) {
-        ++i;
-        continue;
-      }
-      edges[out++] = edges[i];
-    }
-    edges.resize(out);
+    // Oriented triangles: an edge met twice is run both ways, and is interior.
+    drop_interior_edges(edges, false);
   }
   keep_loop(node, edges, loops);
   return edges;
@@ -151,24 +160,8 @@ void PatchBoundaries::complete_cells(std::vector<Edge>& edges) const {
     const Tri& g = mesh_->tris[(*it)[2]];
     for (int c = 0; c < 3; ++c) edges.push_back({g[c], g[(c + 1) % 3]});
   }
-  const auto key = [](const Edge& e) {
-    return std::make_pair(std::min(e[0], e[1]), std::max(e[0], e[1]));
-  };
-  std::sort(edges.begin(), edges.end(),
-            [&](const Edge& a, const Edge& b) { return key(a) < key(b); });
-  std::size_t out = 0;
-  for (std::size_t i = 0; i < edges.size(); ++i) {
-    if (i + 1 < edges.size() && key(edges[i]) == key(edges[i + 1])) {
-      if (edges[i] == edges[i + 1]) {  // the same way twice: no patch (never with oriented cells)
-        edges.clear();
-        return;
-      }
-      ++i;
-      continue;
-    }
-    edges[out++] = edges[i];
-  }
-  edges.resize(out);
+  // The same way twice: no patch (never with oriented cells).
+  if (!drop_interior_edges(edges, true)) edges.clear();
 }
 
 void PatchBoundaries::keep_loop(int node, std::vector<Edge> edges, std::vector<int>& loops) {

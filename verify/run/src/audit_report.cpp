@@ -21,23 +21,8 @@ constexpr ViolationKind kKinds[] = {
     ViolationKind::ClothEdgeObstacleEdge};
 
 long count_of(const AuditCounts& c, ViolationKind k) {
-  switch (k) {
-    case ViolationKind::SelfIntersection:
-      return c.self_intersections;
-    case ViolationKind::ObstacleIntersection:
-      return c.obstacle_intersections;
-    case ViolationKind::SelfVertexFace:
-      return c.step.self_vertex_face;
-    case ViolationKind::SelfEdgeEdge:
-      return c.step.self_edge_edge;
-    case ViolationKind::ClothVertexObstacle:
-      return c.step.cloth_vertex_obstacle;
-    case ViolationKind::ObstacleVertexCloth:
-      return c.step.obstacle_vertex_cloth;
-    case ViolationKind::ClothEdgeObstacleEdge:
-      return c.step.cloth_edge_obstacle_edge;
-  }
-  return 0;
+  if (const auto counter = audit::counter_of(k)) return c.step.*counter;
+  return k == ViolationKind::SelfIntersection ? c.self_intersections : c.obstacle_intersections;
 }
 
 AuditCounts counts_of(const audit::FrameReport& r) {

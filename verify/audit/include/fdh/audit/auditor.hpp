@@ -72,6 +72,9 @@ struct StepCounts {  // contacts during one step
            cloth_edge_obstacle_edge;
   }
 };
+// The counter of a step kind in StepCounts; nullptr for a frame kind (the one map from kinds to
+// counters, for the engine and the certificate).
+long StepCounts::*counter_of(ViolationKind k);
 
 struct FrameReport {
   int frame = 0;
