@@ -1,5 +1,5 @@
 /* A plug-in of ABI version 2 that promises to be conservative and breaks it on one query, for
-   the messages by promise (tests/verify/cli/test_cli_promises.cpp): it says hit everywhere (a
+   the messages by promise (tests/verify/cli/test_promise_messages.cpp): it says hit everywhere (a
    false alarm wherever exact says no, which its promise allows) except on a query whose point
    starts at x = MAGIC, where it says no (a missed hit there breaks the promise). */
 #include <fdh/plugin.h>
