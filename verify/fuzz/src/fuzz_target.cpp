@@ -70,7 +70,7 @@ std::string FuzzTarget::case_text(const Query& q, const std::string& family) con
                                   contact_words(contact) + ".",
                               "Shrunk by fdhcert fuzz --toi from family " + family + "."});
   }
-  // The id names the direction too (M/F/fp), so that a replay's per-query lines say it.
+  // The id names the direction too (M/F/fp): classify --per-query rows carry it.
   const Verdicts v = check(method, q, contact.hit);
   const std::string d = direction(v);
   QueryRecord named = r;
