@@ -20,9 +20,10 @@ struct FuzzTarget {
   double width = kDefaultToiWidth, tolerance = 0;
 
   // The class of what the method gets wrong on q, "" for nothing: "disagrees" (the method
-  // applies to q and disagrees with the exact twin), "metamorphic" (its verdict changes under a
-  // transform of q), or with `toi` one of "missed" (a contact missed), "late" (t_lo after t*),
-  // "broken" (the time breaks the method's promise otherwise) and "early" (t_lo before t* by
+  // applies to q and disagrees with the exact twin), "broken-promise" (its answer on a transform of
+  // q breaks its promise against the twin's verdict on q), "metamorphic" (its verdict changes
+  // under a transform of q), or with `toi` one of "missed" (a contact missed), "late" (t_lo after
+  // t*), "broken" (the time breaks the method's promise otherwise) and "early" (t_lo before t* by
   // more than `tolerance`). Shrinking keeps the class of the case drawn.
   std::string finding(const Query& q) const;
 
