@@ -164,11 +164,12 @@ std::string table1_headline(const Table1& t) {
       g == Table1Paper::grids.end()
           ? ""
           : fmt::format("; the paper's: {} {}, {} {}", kTraditional,
-                        Table1Paper::traditional[std::size_t(g - Table1Paper::grids.begin())],
-                        kOwn, Table1Paper::own[std::size_t(g - Table1Paper::grids.begin())]);
-  return fmt::format("Table 1 at {}x{}, k = 18, ms per frame{}\n  {}; audit of every run: {} "
-                     "inside, {} crossing\n",
-                     grid, grid, paper, fmt::join(runs, ", "), inside, crossing);
+                        Table1Paper::traditional[std::size_t(g - Table1Paper::grids.begin())], kOwn,
+                        Table1Paper::own[std::size_t(g - Table1Paper::grids.begin())]);
+  return fmt::format(
+      "Table 1 at {}x{}, k = 18, ms per frame{}\n  {}; audit of every run: {} "
+      "inside, {} crossing\n",
+      grid, grid, paper, fmt::join(runs, ", "), inside, crossing);
 }
 
 nlohmann::ordered_json table1_json(const Table1& t) {
