@@ -202,9 +202,10 @@ TEST(Report, AtAGlanceCountsEachMethodsFpAndFnOverTheFamilies) {
                           {"paper-literal", "a", 10, 5, 0.5, 0.2},
                           {"paper-literal", "b", 20, 7, 0.25, 0}};
   const std::string md = glance_markdown(r);
-  EXPECT_NE(md.find("| `paper-literal` | none | 10 | 2 | 7 | n/a | n/a | n/a |"), std::string::npos)
+  EXPECT_NE(md.find("| `paper-literal` | none | 30 | 10 | 2 | 7 | 0 | – | – | – |"),
+            std::string::npos)
       << md;
-  EXPECT_NE(md.find("| `robust` | exact | 0 | 0 | 20 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| `robust` | exact | 10 | 0 | 0 | 20 |"), std::string::npos) << md;
   const std::string summary = report_summary(r);
   EXPECT_EQ(lines(summary), 3u) << summary;  // no peers: no bounding-volume line
   EXPECT_EQ(summary.rfind("VIOLATED: ", 0), 0u) << summary;

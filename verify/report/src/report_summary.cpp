@@ -40,8 +40,8 @@ KindTotal kind_total(const std::vector<SpeedAccuracyRow>& rows, const std::strin
 }
 
 std::string kind_cells(const KindTotal& t) {
-  if (!t.measured()) return "n/a | n/a | n/a";
-  return fmt::format("{} | {} | {:.0f}", t.fp, t.fn, t.median_ns);
+  if (!t.measured()) return "0 | – | – | –";
+  return fmt::format("{} | {} | {} | {:.0f}", t.queries, t.fp, t.fn, t.median_ns);
 }
 
 // The promise a method of the registry makes ("exact twin" for the twin itself).
@@ -53,9 +53,10 @@ std::string promise_of(const std::string& method) {
 
 void method_table(Out to, const Report& r) {
   const auto& speed = r.measurements.speed;
-  fmt::format_to(to,
-                 "| method | promise | static: FP | FN | ns/query | moving: FP | FN | ns/query "
-                 "|\n|---|---|---|---|---|---|---|---|\n");
+  fmt::format_to(
+      to,
+      "| method | promise | static: queries | FP | FN | ns/query | moving: queries | FP | "
+      "FN | ns/query |\n|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::string> methods;
   for (const SpeedAccuracyRow& row : speed)
     if (std::find(methods.begin(), methods.end(), row.method) == methods.end())
@@ -123,8 +124,9 @@ std::string glance_markdown(const Report& report) {
   const auto to = std::back_inserter(out);
   fmt::format_to(to,
                  "Every method on the same {} queries of each generator family ({} static and "
-                 "{} moving families): FP and FN against the exact twin, summed over the "
-                 "families, and the median over the families of ns per query (this run).\n\n",
+                 "{} moving families): the queries each method applies to, its FP and FN "
+                 "against the exact twin summed over the families, and the median over the "
+                 "families of its ns per query (this run).\n\n",
                  report.measurements.per_family, report.certificate.families.size(),
                  report.certificate.moving_families.size());
   method_table(to, report);
