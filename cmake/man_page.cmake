@@ -2,6 +2,10 @@
 # `help COMMAND` for every command it lists and turns them into one page (a section per
 # command), so that page and program cannot drift. Built with the program (target fdhcert_man),
 # gzipped as Debian installs manual pages, installed into share/man/man1.
+# Any python3 does (the script uses the standard library alone); Debian's first, as for the module.
+if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
+  set(Python3_EXECUTABLE /usr/bin/python3)
+endif()
 find_package(Python3 COMPONENTS Interpreter)
 if(NOT Python3_Interpreter_FOUND)
   message(STATUS "fdhcert(1): no python3, no manual page")

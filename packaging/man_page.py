@@ -96,7 +96,7 @@ def man_page(program, version):
     about = next(l for l in blocks(main_help) if not l[0].startswith("Usage:"))[0]
     about = about.split(": ", 1)[-1]
     page = [f'.TH FDHCERT 1 "" "fdhcert {version}" "User Commands"',
-            ".nh", ".SH NAME", f"fdhcert \\- {roff(about)}",
+            ".nh", ".ad l", ".SH NAME", f"fdhcert \\- {roff(about)}",
             ".SH SYNOPSIS", ".B fdhcert", ".I command", ".RI [ options ]", ".br",
             ".B fdhcert help", ".RI [ command ]",
             ".SH DESCRIPTION", *body(main_help)]

@@ -43,7 +43,8 @@ files = {str(f) for f in metadata.files("fdhcert")}
 assert "fdhcert-stubs/__init__.pyi" in files and "fdhcert-stubs/py.typed" in files, files
 print("installed", fdhcert.__file__, version)
 PY
-"$vpy" -m pip show fdhcert | grep -qx "Version: $version" || fail "pip show: no Version: $version"
+shown=$("$vpy" -m pip show fdhcert) || fail "pip show"
+grep -qx "Version: $version" <<<"$shown" || fail "pip show: no Version: $version in $shown"
 # The stubs as installed, and a part of the module's pytest suite, against the venv's module.
 FDHCERT_STUBS=$site/fdhcert-stubs/__init__.pyi FDHCERT_BIN=$program FDH_SOURCE_DIR=$src \
   "$vpy" -m pytest -q -p no:cacheprovider "$src/tests/package/test_stubs.py" \
