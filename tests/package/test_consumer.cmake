@@ -61,5 +61,12 @@ if(DEFINED PLUGIN)
     message(FATAL_ERROR "the installed fdhcert did not certify from an empty folder with the "
                         "installed corpus ${corpus}")
   endif()
+  # The build folder's program has no installed corpus beside it: certify says where it looked.
+  execute_process(COMMAND ${BUILD}/verify/cli/fdhcert certify --quick WORKING_DIRECTORY ${empty}
+                  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  if(NOT status EQUAL 2 OR NOT out MATCHES "no corpus folder: looked for ./corpus .* and .*share/fdhcert/corpus")
+    message(FATAL_ERROR "certify without a corpus: exit ${status}, not 2 naming where it looked:\n${out}")
+  endif()
+  message(STATUS "certify without a corpus: ${out}")
 endif()
 file(REMOVE_RECURSE ${WORK})
