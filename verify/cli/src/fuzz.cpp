@@ -20,18 +20,25 @@ Draws N queries from generator family F (static or moving, vertex-face or
 edge-edge) and checks method M against the exact twin on each it applies to.
 Every disagreement is shrunk to a minimal case: RapidCheck's shrink tree, then
 a greedy pass that stops motion, moves the case toward the origin and
-shortens coordinates while M still fails. Distinct cases are written to
-DIR/M/F/<hash>.vf in the native format, with the twin's verdict as the truth
-and a comment saying what M answered and the exact contact (its time, for a
-moving query).
+shortens coordinates while M still fails in the same direction (a false alarm
+stays a false alarm, a miss a miss) on a query of the same kind (static,
+moving vertex-face or edge-edge, as drawn, no triangle or edge drawn whole
+collapsed to a point). Distinct cases are written to
+DIR/M/F/<direction>-<hash>.vf (direction fp: a false alarm, fn: a miss) in
+the native format, with the twin's verdict as the truth and a comment saying
+what M answered, the exact contact (its time, for a moving query) and the
+direction. The summary counts the disagreements by direction.
 
 With --metamorphic it looks instead for queries where M's verdict changes
 under a transform that keeps the truth (time reversal, axis order, mirror,
 dyadic translation or velocity, power-of-two scale, relabelled corners or
 ends; docs/methods.md): no oracle needed, so any method, the exact twin
-included. Such a query is shrunk while some transform still changes M's
-verdict, and stored in DIR/metamorphic/M/F/<hash>.vf with the twin's verdict
-as the truth and a comment naming the transform and both verdicts.
+included. A method with a promise (conservative or exact) is also judged on
+each transform against the twin's verdict, which the transforms keep: a
+broken promise there is found first. Such a query is shrunk while some
+transform still breaks M's promise (or changes its verdict), and stored in
+DIR/metamorphic/M/F/<hash>.vf with the twin's verdict as the truth and a
+comment naming the transform and both verdicts, or the promise broken.
 
 With --toi (moving families only) it checks M's time of impact instead: a
 finding is a contact missed, a time after the exact earliest contact t*
@@ -93,6 +100,21 @@ CLI::Validator shard_validator() {
       "");
 }
 
+// The raw findings by direction, every class of the mode named (0 included): "971 FP (false
+// alarms), 1029 FN (misses)", or with --toi "1 missed, 2 late, 0 broken, 3 early". Cases of a
+// run resumed from before classes were named are added as "N unclassed".
+std::string by_direction(const FuzzOptions& opt, const FuzzSummary& s) {
+  const auto n = [&s](const char* c) {
+    const auto it = s.by_class.find(c);
+    return std::to_string(it == s.by_class.end() ? 0 : it->second);
+  };
+  std::string text = opt.toi ? n("missed") + " missed, " + n("late") + " late, " + n("broken") +
+                                   " broken, " + n("early") + " early"
+                             : n("fp") + " FP (false alarms), " + n("fn") + " FN (misses)";
+  if (s.by_class.count("disagrees")) text += ", " + n("disagrees") + " unclassed";
+  return text;
+}
+
 void print_summary(const FuzzOptions& opt, const FuzzSummary& s, bool json, std::ostream& out) {
   const std::string shard = std::to_string(opt.shard + 1) + "/" + std::to_string(opt.shards);
   if (json) {
@@ -107,6 +129,7 @@ void print_summary(const FuzzOptions& opt, const FuzzSummary& s, bool json, std:
                      {"cases", s.cases},
                      {"resumed", s.resumed},
                      {"disagreements", s.disagreements},
+                     {"by_direction", s.by_class},
                      {"distinct", s.distinct.size()},
                      {"files", s.distinct}});
     return;
@@ -122,6 +145,7 @@ void print_summary(const FuzzOptions& opt, const FuzzSummary& s, bool json, std:
       << ".." << s.last - 1 << " (shard " << shard << ")\n"
       << s.cases << " cases (" << s.resumed << " done by an earlier run), " << s.disagreements
       << found << s.distinct.size() << " distinct shrunk cases\n";
+  if (!opt.metamorphic) out << opt.method << " by direction: " << by_direction(opt, s) << "\n";
   for (const std::string& f : s.distinct) out << "  " << f << "\n";
 }
 
