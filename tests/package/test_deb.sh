@@ -3,11 +3,13 @@
 # then the package unpacked into a temporary root (dpkg -x) and tried there: the program
 # (--version, a classify, its manual page), `import fdhcert` from the root's dist-packages, the
 # corpus, and examples/consumer built against the root (test_consumer.cmake); lintian, when
-# installed, must report no error. Skipped (77) without dpkg-deb.
+# installed, must report no error. Skipped (77) without dpkg-deb or dpkg-shlibdeps.
 #   test_deb.sh SOURCE BUILD VERSION GENERATOR
 set -euo pipefail
 src=$1 build=$2 version=$3 generator=$4
-command -v dpkg-deb >/dev/null || { echo "skipped: no dpkg-deb"; exit 77; }
+for tool in dpkg-deb dpkg-shlibdeps; do
+  command -v $tool >/dev/null || { echo "skipped: no $tool (dpkg-dev; ./run installs it as root)"; exit 77; }
+done
 fail() { echo "FAIL: $*" >&2; exit 1; }
 work=$(mktemp -d "${TMPDIR:-/tmp}/fdh-deb.XXXXXX")
 trap 'rm -rf "$work"' EXIT
