@@ -31,7 +31,12 @@ def contact_time(
 ) -> Dict[str, Union[bool, Optional[Fraction], Tuple[Fraction, Fraction]]]: ...
 def kdop(points: npt.ArrayLike, k: int = 18) -> Tuple[_Floats, _Floats, npt.NDArray[np.int32]]: ...
 def classify(
-    files: Sequence[_Path], methods: Sequence[str] = [], kind: str = "", gate: int = 0
+    files: Sequence[_Path],
+    methods: Sequence[str] = [],
+    kind: str = "",
+    gate: int = 0,
+    time: bool = False,
+    rounds: int = 7,
 ) -> Dict[str, Any]: ...
 def classify_arrays(
     queries: npt.ArrayLike,
