@@ -44,3 +44,20 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/fdhcertConfigVersion.cmak
 install(FILES ${PROJECT_BINARY_DIR}/fdhcertConfig.cmake
               ${PROJECT_BINARY_DIR}/fdhcertConfigVersion.cmake
         DESTINATION ${FDH_CMAKE_DIR})
+
+# The corpus that `certify` and `report` read, installed as data (issue 24): their --corpus
+# default finds it from the program's folder when ./corpus is not there
+# (verify/cli/src/corpus_option.cpp), so an installed fdhcert certifies from any folder.
+if(FDH_BUILD_VERIFY)
+  set(FDH_CORPUS_INSTALL_DIR ${CMAKE_INSTALL_DATADIR}/fdhcert/corpus)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/corpus/ DESTINATION ${FDH_CORPUS_INSTALL_DIR})
+  if(IS_ABSOLUTE ${CMAKE_INSTALL_BINDIR} OR IS_ABSOLUTE ${FDH_CORPUS_INSTALL_DIR})
+    set(fdh_corpus_from_bindir ${CMAKE_INSTALL_FULL_DATADIR}/fdhcert/corpus)
+  else()
+    file(RELATIVE_PATH fdh_corpus_from_bindir /${CMAKE_INSTALL_BINDIR} /${FDH_CORPUS_INSTALL_DIR})
+  endif()
+  target_compile_definitions(fdh_cli PRIVATE FDH_CORPUS_FROM_BINDIR="${fdh_corpus_from_bindir}")
+  if(NOT FDH_FUZZERS)
+    include(man_page)
+  endif()
+endif()

@@ -3,6 +3,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "corpus_option.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "plugin_option.hpp"
 #include "progress.hpp"
@@ -74,6 +75,8 @@ void print_metamorphic(const Certificate& c, std::ostream& out) {
 int run_certify(const CertifyCommand& cmd, const Io& io) {
   CertifyOptions opt = cmd.options;
   check_output_dir(opt.out_dir, {"certificate.json", "certificate.md"});
+  opt.corpus_dir = corpus_or_default(opt.corpus_dir);
+  io.out << "corpus: " << opt.corpus_dir << "\n";
   const ThreadLimit threads(cmd.threads);
   ProgressLine progress(io.err, progress_wanted(io, cmd.quiet));
   opt.progress = progress.sink("certify: ");
@@ -100,7 +103,10 @@ void add_certify_options(CLI::App& cmd, CertifyCommand& c) {
   cmd.add_flag("--quick", opt.quick, "200 queries per family and 30 soup pairs: under a minute");
   cmd.add_option("--out", opt.out_dir, "where the output goes (default: " + opt.out_dir + ")")
       ->type_name("DIR");
-  cmd.add_option("--corpus", opt.corpus_dir, "the corpus folder (default: corpus)")
+  opt.corpus_dir.clear();  // not given: corpus_or_default finds one
+  cmd.add_option("--corpus", opt.corpus_dir,
+                 "the corpus folder (default: ./corpus in a source checkout, else the one "
+                 "installed with fdhcert, BINDIR/../share/fdhcert/corpus)")
       ->type_name("DIR");
   add_seed_option(cmd, opt.seed, "seed of the fuzzed queries and soups (default 1)");
   cmd.add_option("--per-family", opt.per_family,

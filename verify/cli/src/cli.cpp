@@ -99,6 +99,9 @@ std::optional<int> parse(CLI::App& app, const std::vector<std::string>& args, co
   } catch (const CLI::CallForHelp&) {
     io.out << app.help();  // the help of the command named, if any
     return 0;
+  } catch (const CLI::CallForVersion& e) {
+    io.out << e.what() << "\n";
+    return 0;
   } catch (const CLI::ParseError& e) {
     io.err << "fdhcert: " << usage_message(app, e, args) << "\n";
     return 2;
@@ -135,6 +138,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   app.formatter(std::make_shared<HelpFormatter>());
   app.get_formatter()->column_width(24);
   app.require_subcommand(1);
+  app.set_version_flag("--version", "fdhcert " FDH_VERSION, "print the version and exit");
   app.footer(kFooter);
   app.add_subcommand("help", "this text")->group("")->allow_extras();  // hidden
   const PluginScope plugins;  // --plugin's methods, for this run only

@@ -5,6 +5,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "corpus_option.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/report/report_document.hpp"
 #include "fdh/report/report_summary.hpp"
@@ -69,6 +70,7 @@ void print_outcome(const ReportCommand& cmd, const Report& report, const Io& io)
 int run_report(const ReportCommand& cmd, const Io& io) {
   CertifyOptions opt = cmd.options;
   check_output_dir(opt.out_dir, report_outputs());
+  opt.corpus_dir = corpus_or_default(opt.corpus_dir);
   const ThreadLimit threads(cmd.threads);
   ProgressLine progress(io.err, progress_wanted(io, cmd.quiet));
   opt.progress = progress.sink("report: certify: ");
