@@ -190,7 +190,8 @@ class Certifier {
       const Method& m = named(timed_, row.method);
       const TimeCheck c = check_time(m, q, c_.options.toi_width, exact);
       row.tally.add(c, 0, 0);
-      if (!c.kept) violation(with_truth(r, twin), describe(m, c) + " (" + to_string(d) + ")", t);
+      if (!c.kept)
+        violation(with_truth(r, twin), judged_time_words(m, c) + " (" + to_string(d) + ")", t);
     }
   }
 

@@ -22,7 +22,8 @@ Every disagreement is shrunk to a minimal case: RapidCheck's shrink tree, then
 a greedy pass that stops motion, moves the case toward the origin and
 shortens coordinates while M still fails in the same direction (a false alarm
 stays a false alarm, a miss a miss) on a query of the same kind (static,
-moving vertex-face or edge-edge, as drawn). Distinct cases are written to
+moving vertex-face or edge-edge, as drawn, no triangle or edge drawn whole
+collapsed to a point). Distinct cases are written to
 DIR/M/F/<direction>-<hash>.vf (direction fp: a false alarm, fn: a miss) in
 the native format, with the twin's verdict as the truth and a comment saying
 what M answered, the exact contact (its time, for a moving query) and the

@@ -23,16 +23,6 @@ std::string time_finding(const TimeCheck& c, double tolerance) {
   return "";
 }
 
-// A metamorphic case: the transform, and the method's verdicts or the promise it broke there.
-std::string metamorphic_case_text(const Method& m, const QueryRecord& r, const TwinContact& contact,
-                                  const std::string& family) {
-  const MetamorphicFailure f = *metamorphic_finding_failure(m, r.query);
-  const std::string broken = f.kept ? "" : " (breaks " + std::string(to_string(m.promise)) + ")";
-  return case_file_text(r,
-                        {describe(m, f) + broken + "; exact says " + contact_words(contact) + ".",
-                         "Shrunk by fdhcert fuzz --metamorphic from family " + family + "."});
-}
-
 // The direction of a disagreement: "fp" (a false alarm: hit where the twin says no) or "fn" (a
 // miss: no where the twin says hit), "" where the two agree.
 std::string direction(const Verdicts& v) {
@@ -43,6 +33,16 @@ std::string direction(const Verdicts& v) {
 // The direction in words, for the case file's comment.
 std::string direction_words(const std::string& d) {
   return d == "fp" ? "a false alarm (FP)" : "a miss (FN)";
+}
+
+// A metamorphic case: the transform, and the method's verdicts or the promise it broke there.
+std::string metamorphic_case_text(const Method& m, const QueryRecord& r, const TwinContact& contact,
+                                  const std::string& family) {
+  const MetamorphicFailure f = *metamorphic_finding_failure(m, r.query);
+  const std::string broken = f.kept ? "" : " (breaks " + std::string(to_string(m.promise)) + ")";
+  return case_file_text(r,
+                        {describe(m, f) + broken + "; exact says " + contact_words(contact) + ".",
+                         "Shrunk by fdhcert fuzz --metamorphic from family " + family + "."});
 }
 
 }  // namespace
