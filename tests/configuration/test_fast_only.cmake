@@ -1,4 +1,4 @@
-# The fast-only configuration (ctest fast_only_configuration; README, "Building parts"):
+# The fast-only configuration (ctest fast_only_configuration; docs/building.md, "Building parts"):
 #   cmake -S SRC -B WORK -DFDH_BUILD_VERIFY=OFF -DFDH_BUILD_PYTHON=OFF -DFDH_WITH_PEERS=OFF
 #         -DBUILD_TESTING=OFF
 # configured with --trace-expand into a file, built (fdh_fast and fdh_cloth alone), and checked

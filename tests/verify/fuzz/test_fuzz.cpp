@@ -285,6 +285,32 @@ std::vector<fs::path> fuzz_markers_in(const fs::path& out) {
 // fuzz --metamorphic: cases where the method's verdict changes under a transform, shrunk and
 // stored apart (metamorphic/<method>/<family>) with the transform named; the mode is part of
 // the run's manifest.
+// A run stored before directions were named (markers listing <hash>.vf) still reads: resumed
+// with its options, it runs nothing and counts its disagreements as unclassed.
+TEST(Fuzz, ARunStoredBeforeDirectionsReadsAsUnclassed) {
+  const fs::path d = fuzz_dir("fuzz_unclassed");
+  FuzzOptions o = options(d, 1);
+  o.count = 200;
+  const FuzzSummary first = run_fuzz(o);
+  ASSERT_GT(first.disagreements, 0);
+  for (const fs::path& m : fuzz_markers_in(d)) {  // as the older fuzz wrote them
+    std::string text = [&] {
+      std::ifstream in(m);
+      std::stringstream ss;
+      ss << in.rdbuf();
+      return ss.str();
+    }();
+    for (std::size_t at; (at = text.find("/fp-")) != std::string::npos ||
+                         (at = text.find("/fn-")) != std::string::npos;)
+      text.erase(at + 1, 3);
+    std::ofstream(m) << text;
+  }
+  const FuzzSummary again = run_fuzz(o);
+  EXPECT_EQ(again.resumed, 200);
+  EXPECT_EQ(again.disagreements, first.disagreements);
+  EXPECT_EQ(again.by_class, (std::map<std::string, long>{{"disagrees", first.disagreements}}));
+}
+
 TEST(Fuzz, MetamorphicRunStoresVerdictChangesApart) {
   const std::set<std::string> found =
       cases_found("fuzz_metamorphic", "linear-system", "parallel-land", 300, true);

@@ -16,6 +16,8 @@
 #include "fdh/check/registry.hpp"
 #include "fdh/report/measurements.hpp"
 #include "fdh/report/report_document.hpp"
+#include "fdh/report/report_html.hpp"
+#include "fdh/report/report_summary.hpp"
 #include "fdh/run/build_info.hpp"
 #include "fdh/run/scene_report.hpp"
 #include "fdh/table1/table1.hpp"
@@ -191,6 +193,57 @@ TEST(Report, TablesComeFromTheRows) {
   EXPECT_NE(md.find("| angle | never wrong | wrong from p = 1, worst 0.5 |"), std::string::npos);
   EXPECT_NE(md.find("| 18 | 30×30 | 1682 / 2304 | 1 | 0.5 | 0.25 | 6000 |"), std::string::npos);
   EXPECT_NE(md.find("at commit `abc`"), std::string::npos);
+}
+
+TEST(Report, AtAGlanceCountsEachMethodsFpAndFnOverTheFamilies) {
+  Report r;
+  r.certificate = two_promises();
+  r.measurements.speed = {{"robust", "a", 10, 20, 0, 0},
+                          {"paper-literal", "a", 10, 5, 0.5, 0.2},
+                          {"paper-literal", "b", 20, 7, 0.25, 0}};
+  const std::string md = glance_markdown(r);
+  EXPECT_NE(md.find("| `paper-literal` | none | 30 | 10 | 2 | 7 | 0 | – | – | – |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| `robust` | exact | 10 | 0 | 0 | 20 |"), std::string::npos) << md;
+  const std::string summary = report_summary(r);
+  EXPECT_EQ(lines(summary), 3u) << summary;  // no peers: no bounding-volume line
+  EXPECT_EQ(summary.rfind("VIOLATED: ", 0), 0u) << summary;
+  EXPECT_NE(summary.find("robust edge-edge-ccd 2/40"), std::string::npos) << summary;
+}
+
+// index.html: the gnuplot charts inline with their ids apart, a titled circle per speed row, a
+// file named in the text linked relative to the page, nothing from the network.
+TEST(Report, ThePageInlinesTheChartsAndLinksTheCases) {
+  const std::filesystem::path dir = fresh_temp_dir("report_page");
+  for (const char* chart : {"toi_speed", "stability", "toi_stability", "kdop_k"})
+    std::ofstream(dir / (std::string(chart) + ".svg"))
+        << "<?xml version=\"1.0\"?>\n<svg viewBox='0 0 9 9'><title>Gnuplot</title><defs><path "
+           "id='gpPt1' d='M0,0'/></defs><use xlink:href='#gpPt1'/></svg>\n";
+  std::filesystem::create_directories(dir / "peers");
+  std::ofstream(dir / "peers" / "case.txt") << "x\n";
+  Report r;
+  r.certificate = two_promises();
+  r.certificate.options.out_dir = dir.string();
+  r.certificate.first_violation = "saved to " + (dir / "peers" / "case.txt").string() + ".";
+  r.measurements.speed = {{"robust", "a&b", 10, 20, 0, 0}, {"paper-literal", "a", 10, 5, 0.5, 0}};
+  const std::string html = report_html(r, dir.string());
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find("<a href=\"peers/case.txt\">"), std::string::npos) << html;
+  for (const char* id : {"id='c1-gpPt1'", "href='#c1-gpPt1'", "id='c4-gpPt1'"})
+    EXPECT_NE(html.find(id), std::string::npos) << id;
+  EXPECT_EQ(html.find("<?xml"), std::string::npos);
+  EXPECT_NE(html.find("<title>robust on a&amp;b (static): FP rate 0, FN rate 0 of 10 queries; "
+                      "20.0 ns per query</title>"),
+            std::string::npos);
+  std::size_t points = 0;
+  for (std::size_t at = 0; (at = html.find("<circle class=\"point\"", at)) != std::string::npos;
+       ++at)
+    ++points;
+  EXPECT_EQ(points, 2u);
+  EXPECT_EQ(html.find("src=\"http"), std::string::npos);
+  std::filesystem::remove(dir / "kdop_k.svg");
+  EXPECT_THROW(report_html(r, dir.string()), std::runtime_error);
 }
 
 Table1 one_cell() {

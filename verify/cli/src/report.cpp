@@ -7,6 +7,7 @@
 
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/report/report_document.hpp"
+#include "fdh/report/report_summary.hpp"
 #include "plugin_option.hpp"
 #include "progress.hpp"
 #include "suite_commands.hpp"
@@ -35,7 +36,10 @@ The verification report, as `./run verify` makes it (into docs/report):
   DIR/kdop_k.png/svg          FDH tree build, refit and traversal time against
                               candidate pairs, k = 6, 14, 18, 26
   DIR/report.md               all of it, with tables
-When done, prints the certificate's tables.
+  DIR/index.html              the same as one page to browse: the charts inline
+                              (hover a point for its method, family, FP, FN
+                              and ns), the counterexamples linked
+When done, prints the certificate's tables, or with --summary four lines.
 )";
 
 const char* const kReportFooter =
@@ -44,7 +48,25 @@ finds a violation (the report is written all the same). --quick takes smaller
 samples (a quick certificate, 100 queries per family and point): for a first
 look, not for the committed report.)";
 
-int run_report(const CertifyCommand& cmd, const Io& io) {
+struct ReportCommand : CertifyCommand {
+  bool summary = false;
+};
+
+// What run_report prints when done: the certificate's tables, or its summary lines.
+void print_outcome(const ReportCommand& cmd, const Report& report, const Io& io) {
+  const Certificate& c = report.certificate;
+  const std::filesystem::path dir(cmd.options.out_dir);
+  if (cmd.summary) {
+    io.out << report_summary(report) << "report: wrote " << (dir / "report.md").string() << " and "
+           << (dir / "index.html").string() << " (charts " << (dir / "*.svg").string() << ")\n";
+    return;
+  }
+  io.out << "\n"
+         << certificate_section(c) << "\nreport: wrote " << (dir / "report.md").string()
+         << "; certificate " << (c.certified() ? "certified" : "VIOLATED") << "\n";
+}
+
+int run_report(const ReportCommand& cmd, const Io& io) {
   CertifyOptions opt = cmd.options;
   check_output_dir(opt.out_dir, report_outputs());
   const ThreadLimit threads(cmd.threads);
@@ -55,18 +77,15 @@ int run_report(const CertifyCommand& cmd, const Io& io) {
     if (p.stage != step) {
       step = p.stage;
       progress.clear();
-      io.out << "report: " << step << " ..." << std::endl;
+      if (!cmd.summary) io.out << "report: " << step << " ..." << std::endl;
     }
     progress.draw({"report: " + p.stage, p.done, p.total, p.unit, p.detail});
   });
   progress.clear();
-  io.out << "report: charts ..." << std::endl;
+  if (!cmd.summary) io.out << "report: charts ..." << std::endl;
   write_report(report);
+  print_outcome(cmd, report, io);
   const Certificate& c = report.certificate;
-  io.out << "\n"
-         << certificate_section(c) << "\nreport: wrote "
-         << (std::filesystem::path(opt.out_dir) / "report.md").string() << "; certificate "
-         << (c.certified() ? "certified" : "VIOLATED") << "\n";
   if (c.certified()) return 0;
   io.err << "fdhcert: certify: " << c.first_violation << "\n";
   return 1;
@@ -75,10 +94,14 @@ int run_report(const CertifyCommand& cmd, const Io& io) {
 }  // namespace
 
 Command add_report(CLI::App& app) {
-  auto c = std::make_shared<CertifyCommand>();
+  auto c = std::make_shared<ReportCommand>();
   c->options.out_dir = "report";
   CLI::App* cmd = add_command(app, "report", kReportAbout, kReportFooter);
   add_certify_options(*cmd, *c);
+  cmd->add_flag("--summary", c->summary,
+                "print four lines when done (certified or not, the promises, the\n"
+                "metamorphic and the bounding-volume counts) instead of the\n"
+                "certificate's tables, and no line per step (./run verify)");
   add_plugin_option(*cmd);  // its methods join the certificate, the charts and the tables
   return {cmd, [c](const Io& io) { return run_report(*c, io); }};
 }

@@ -8,6 +8,8 @@
 #include <map>
 
 #include "fdh/os/atomic_file.hpp"
+#include "fdh/report/report_html.hpp"
+#include "fdh/report/report_summary.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -242,9 +244,9 @@ std::string report_markdown(const Report& report) {
                  "# fdhcert verification report\n\nWritten by `./run verify` (`fdhcert report "
                  "--out {}`) at commit `{}`{}. Every number here is measured by that run; times "
                  "vary between runs and machines, so compare rows within this report. Data: "
-                 "`data/*.csv`.\n\n## Certificate\n\n{}\n",
+                 "`data/*.csv`.\n\n## At a glance\n\n{}\n## Certificate\n\n{}\n",
                  c.options.out_dir, c.commit, c.options.quick ? ", quick samples" : "",
-                 certificate_section(c));
+                 glance_markdown(report), certificate_section(c));
   measurement_sections(to, report.measurements);
   return fmt::to_string(out);
 }
@@ -268,7 +270,8 @@ std::vector<std::string> report_outputs() {
           "toi_stability.svg",
           "kdop_k.png",
           "kdop_k.svg",
-          "report.md"};
+          "report.md",
+          "index.html"};
 }
 
 void write_report(const Report& report) {
@@ -286,6 +289,7 @@ void write_report(const Report& report) {
   write_file_atomically((dir / "data/kdop_tree.csv").string(), kdop_tree_csv(m.kdop));
   draw_report_charts(dir.string(), m);
   write_file_atomically((dir / "report.md").string(), report_markdown(report));
+  write_file_atomically((dir / "index.html").string(), report_html(report, dir.string()));
 }
 
 }  // namespace fdh::verify

@@ -147,6 +147,31 @@ std::string table1_text(const Table1& t) {
   return fmt::to_string(out);
 }
 
+std::string table1_headline(const Table1& t) {
+  int grid = 0;
+  long inside = 0, crossing = 0;
+  for (const Table1Cell& c : t.cells) {
+    grid = std::max(grid, c.grid);
+    inside += c.run.audit.inside, crossing += c.run.audit.crossing;
+  }
+  std::vector<std::string> runs;
+  for (const Table1Cell& c : t.cells)
+    if (c.grid == grid && c.k == 18)
+      runs.push_back(fmt::format("{} {:.4f} (FP {}, FN {})", c.method, c.run.ms_per_frame(),
+                                 c.run.fp, c.run.fn));
+  const auto g = std::find(Table1Paper::grids.begin(), Table1Paper::grids.end(), grid);
+  const std::string paper =
+      g == Table1Paper::grids.end()
+          ? ""
+          : fmt::format("; the paper's: {} {}, {} {}", kTraditional,
+                        Table1Paper::traditional[std::size_t(g - Table1Paper::grids.begin())], kOwn,
+                        Table1Paper::own[std::size_t(g - Table1Paper::grids.begin())]);
+  return fmt::format(
+      "Table 1 at {}x{}, k = 18, ms per frame{}\n  {}; audit of every run: {} "
+      "inside, {} crossing\n",
+      grid, grid, paper, fmt::join(runs, ", "), inside, crossing);
+}
+
 nlohmann::ordered_json table1_json(const Table1& t) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (const Table1Cell& c : t.cells) rows.push_back(cell_json(c));

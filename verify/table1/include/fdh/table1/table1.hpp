@@ -45,6 +45,11 @@ Table1 measure_table1(const cloth::Scene& scene, const std::string& scene_path, 
 // The text `fdhcert table1` prints: ms per frame beside the paper's, then each run's accuracy.
 std::string table1_text(const Table1& t);
 
+// Two lines: the largest grid's ms per frame of the k = 18 rows (the paper's two and robust)
+// beside the paper's, with their FP and FN; the exact audit summed over every run
+// (`fdhcert table1 --summary`, `./run verify`).
+std::string table1_headline(const Table1& t);
+
 // {"scene", "frames", "rows": [...], "paper": {...}} (docs/formats.md, "table1 output").
 nlohmann::ordered_json table1_json(const Table1& t);
 
