@@ -93,7 +93,10 @@ TEST(Certify, AMetamorphicChangeBreaksOnlyAPromise) {
   ASSERT_TRUE(broken);
   // The promised method's answer after the axis swap breaks its promise (the twin, which the
   // transform keeps, says hit): judged first, the transformed query saved.
-  EXPECT_EQ(broken->what.rfind("promised says no, the exact twin says hit after axes-", 0), 0u)
+  EXPECT_EQ(broken->what.rfind("promised says no, the exact twin says hit: misses a hit (breaks "
+                               "EXACT) on the query after axes-",
+                               0),
+            0u)
       << broken->what;
   EXPECT_NE(broken->saved.x, q.x);
   EXPECT_GT(rows[0].violations, 0);

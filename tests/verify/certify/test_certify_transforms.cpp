@@ -68,7 +68,10 @@ TEST(CertifyTransforms, CatchesAPlugInThatMissesHitsBeyond2To33ThroughTheScalesA
   const CliRun r = quick_certify(FDH_FAR_MISS_PLUGIN, out, "0", {small_hits().string()});
   EXPECT_EQ(r.status, 1) << r.out << r.err;
   // Named with the transform that shows it, and the query it was drawn as.
-  EXPECT_TRUE(has(r.err, "far-miss says no, the exact twin says hit after scale-2^")) << r.err;
+  EXPECT_TRUE(has(r.err,
+                  "far-miss says no, the exact twin says hit: misses a hit (breaks CONSERVATIVE) "
+                  "on the query after scale-2^"))
+      << r.err;
   EXPECT_TRUE(has(r.err, "(metamorphic, ")) << r.err;
   EXPECT_TRUE(has(r.err, "(query static from ")) << r.err;  // the first query, as drawn
   // The transformed query is saved, with the exact truth, and replays as a broken promise.
@@ -135,9 +138,12 @@ TEST(CertifyTransforms, FuzzMetamorphicFindsTheBrokenPromiseAndStoresIt) {
   long broken = 0;
   for (const auto& f : s["files"]) {
     const std::string text = text_of(f.get<std::string>());
-    if (!has(text, "(breaks conservative)")) continue;  // a false alarm that comes and goes
+    if (!has(text, "(breaks CONSERVATIVE)")) continue;  // a false alarm that comes and goes
     ++broken;
-    EXPECT_TRUE(has(text, "far-miss says no, the exact twin says hit after ")) << text;
+    EXPECT_TRUE(has(text,
+                    "far-miss says no, the exact twin says hit: misses a hit (breaks "
+                    "CONSERVATIVE) on the query after "))
+        << text;
     EXPECT_EQ(read_native(f.get<std::string>()).at(0).truth, Truth::Yes);
   }
   EXPECT_GT(broken, 0) << r.out;
@@ -163,7 +169,8 @@ TEST(CertifyTransforms, TheCertifierJudgesAPromiseUnderTheTransforms) {
   const auto broken = cert.check(q, true, rows, counts);
   ASSERT_TRUE(broken);
   EXPECT_EQ(broken->what,
-            "near says no, the exact twin says hit after scale-2^40 (metamorphic, point-triangle)");
+            "near says no, the exact twin says hit: misses a hit (breaks CONSERVATIVE) on the "
+            "query after scale-2^40 (metamorphic, point-triangle)");
   EXPECT_EQ(broken->saved.x[0].x, 0x1p38);  // the transformed query
   EXPECT_EQ(broken->transform, "scale-2^40");
   EXPECT_EQ(rows[0].broken, 3);  // scale-2^40, scale-2^60 and translate-2^40

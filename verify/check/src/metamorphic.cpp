@@ -230,7 +230,7 @@ std::string describe(const Method& m, const MetamorphicFailure& f) {
   if (!f.kept && f.twin) {
     Verdicts v;
     v.said = f.after, v.twin = *f.twin, v.kept = false;
-    return describe(m, v) + " after " + f.transform;
+    return describe(m, v) + " on the query after " + f.transform;
   }
   const auto word = [](bool hit) { return hit ? "hit" : "no"; };
   return m.name + " says " + word(f.before) + " here and " + word(f.after) + " after " +

@@ -39,10 +39,8 @@ std::string direction_words(const std::string& d) {
 std::string metamorphic_case_text(const Method& m, const QueryRecord& r, const TwinContact& contact,
                                   const std::string& family) {
   const MetamorphicFailure f = *metamorphic_finding_failure(m, r.query);
-  const std::string broken = f.kept ? "" : " (breaks " + std::string(to_string(m.promise)) + ")";
-  return case_file_text(r,
-                        {describe(m, f) + broken + "; exact says " + contact_words(contact) + ".",
-                         "Shrunk by fdhcert fuzz --metamorphic from family " + family + "."});
+  return case_file_text(r, {describe(m, f) + "; exact says " + contact_words(contact) + ".",
+                            "Shrunk by fdhcert fuzz --metamorphic from family " + family + "."});
 }
 
 }  // namespace

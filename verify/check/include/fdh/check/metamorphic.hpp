@@ -104,8 +104,9 @@ MetamorphicCount count_metamorphic(const Method& m, bool before,
 MetamorphicCount count_metamorphic(const Method& m, const Query& q,
                                    std::optional<MetamorphicFailure>* first = nullptr);
 
-// "float-cubic says hit here and no after time-reversal", or for a broken promise "aabb says no,
-// the exact twin says hit after scale-2^40": the words of a failure.
+// "float-cubic says hit here and no after time-reversal", or for a broken promise the checker's
+// words and the transform ("aabb says no, the exact twin says hit: misses a hit (breaks
+// CONSERVATIVE) on the query after scale-2^40"): the words of a failure.
 std::string describe(const Method& m, const MetamorphicFailure& f);
 
 // What fuzz --metamorphic looks for in q: "broken-promise" (m judged_under_transforms and its
