@@ -22,9 +22,10 @@ class MetamorphicCertifier {
   // Counts every method on q into `rows` (rows()'s order); `twin` is the twin's verdict on q,
   // known already. Returns the words of the first verdict change of a method held to invariance
   // (MetamorphicCheck::held), if there is one. Safe to call from several threads at once (each
-  // with its own rows) when the methods are (registry.hpp).
-  std::optional<std::string> check(const Query& q, bool twin,
-                                   std::vector<MetamorphicCheck>& rows) const;
+  // with its own rows) when the methods are (registry.hpp). Once `budget` is spent, stops
+  // between two transformed queries (fdh/os/budget.hpp).
+  std::optional<std::string> check(const Query& q, bool twin, std::vector<MetamorphicCheck>& rows,
+                                   const Budget& budget = {}) const;
 
  private:
   std::vector<Method> methods_;

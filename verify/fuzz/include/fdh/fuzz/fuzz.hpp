@@ -33,6 +33,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "fdh/os/budget.hpp"
 #include "fdh/os/progress.hpp"
 
 namespace fdh::verify {
@@ -64,6 +65,10 @@ struct FuzzOptions {
   // How long to wait for OUT's lock before refusing: a killed run's workers die within
   // moments of it, and hold the lock until they have.
   double lock_wait_seconds = 3;
+  // Once spent, shrinking stops (the case is stored as far as it shrank) and the workers stop
+  // after the case in hand; the cases done are marked, so the same command resumes the rest.
+  // Not part of the run's parameters.
+  Budget budget;
 };
 
 struct FuzzSummary {
@@ -72,6 +77,10 @@ struct FuzzSummary {
   long resumed = 0;                // of which were done before this run started
   long disagreements = 0;          // raw disagreements before shrinking
   std::set<std::string> distinct;  // file paths of the distinct shrunk cases
+  // The budget ran out: cases [first, last) were not all run (`cases` counts those that were),
+  // and `shrink_cut` cases were stored less shrunk than they could have been.
+  bool cut = false;
+  long shrink_cut = 0;
 };
 
 // The run cannot start on this OUT: another run holds it, or OUT holds an unfinished run with
