@@ -299,9 +299,10 @@ TEST(Cli, FuzzJsonSummary) {
                             "--count", "100", "--threads", "1", "--shard", "1/2", "--json"});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::ordered_json::parse(r.out);
-  EXPECT_EQ(keys(j), (std::vector<std::string>{"method", "metamorphic", "toi", "family", "seed",
-                                               "shard", "first", "last", "cases", "resumed",
-                                               "disagreements", "distinct", "files"}));
+  EXPECT_EQ(keys(j),
+            (std::vector<std::string>{"method", "metamorphic", "toi", "family", "seed", "shard",
+                                      "first", "last", "cases", "resumed", "disagreements",
+                                      "by_direction", "distinct", "files"}));
   EXPECT_EQ(j["method"], "paper-literal");
   EXPECT_EQ(j["shard"], "1/2");
   EXPECT_EQ(j["first"], 0);

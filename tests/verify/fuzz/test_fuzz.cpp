@@ -237,6 +237,42 @@ TEST(Fuzz, MovingCasesCarryTheExactContactTime) {
   }
 }
 
+// Shrinking keeps the direction of a disagreement: linear-system's false alarms and misses on
+// sliver are both stored, each as <direction>-<hash>.vf whose query still fails that way, named
+// in its comment and id; the summary's counts by direction add up to the disagreements.
+TEST(Fuzz, FalseAlarmsAndMissesAreStoredApart) {
+  FuzzOptions o = options(fuzz_dir("fuzz_directions"), 2);
+  o.method = "linear-system";
+  o.family = "sliver";
+  o.count = 300;
+  const FuzzSummary s = run_fuzz(o);
+  const Method m = select_methods({"linear-system"}).front();
+  std::map<std::string, int> stored;
+  for (const std::string& f : s.distinct) {
+    SCOPED_TRACE(f);
+    const std::string name = fs::path(f).filename().string();
+    const std::string dir = name.substr(0, name.find('-'));
+    ++stored[dir];
+    const QueryRecord r = read_native(f).at(0);
+    EXPECT_TRUE(r.query.is_static_vf());  // the family's kind
+    const Verdicts v = check(m, r.query);
+    EXPECT_EQ(dir, v.said && !v.twin ? "fp" : !v.said && v.twin ? "fn" : "agree");
+    EXPECT_EQ(r.id, "linear-system/sliver/" + dir);
+    EXPECT_NE(first_line(f).find(dir == "fp" ? ": a false alarm (FP)." : ": a miss (FN)."),
+              std::string::npos)
+        << first_line(f);
+  }
+  EXPECT_GT(stored["fp"], 0);
+  EXPECT_GT(stored["fn"], 0);
+  long counted = 0;
+  for (const auto& [cls, n] : s.by_class) {
+    EXPECT_TRUE(cls == "fp" || cls == "fn") << cls;
+    EXPECT_GE(n, stored[cls]);
+    counted += n;
+  }
+  EXPECT_EQ(counted, s.disagreements);
+}
+
 // The markers of the run in `out` (names cases-B-E), as paths.
 std::vector<fs::path> fuzz_markers_in(const fs::path& out) {
   std::vector<fs::path> v;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "fdh/gen/case_kind.hpp"
 #include "fdh/gen/families.hpp"
 
 namespace fdh::verify {
@@ -82,6 +83,26 @@ TEST(Simplify, ShrunkFailureOfAMovingFamily) {
     EXPECT_EQ(g->truth, Truth::Unknown);
   }
   EXPECT_GT(shrunk, 0);
+}
+
+// A shrink step that leaves the kind of the case drawn is refused: with a predicate that every
+// query meets, a moving vertex-face family's case stays a moving triangle (not the all-zero
+// static query), a static family's stays static, an edge-edge family's stays edge-edge.
+TEST(Simplify, ShrunkFailureKeepsTheKindOfTheCaseDrawn) {
+  const auto always = [](const Generated&) { return true; };
+  for (const char* name : {"hourglass", "generic-moving", "angled", "parallel-edges"}) {
+    SCOPED_TRACE(name);
+    const Family& f = *family_named(name);
+    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+      const CaseKind drawn = case_kind_of(generate(f, seed).query);
+      const std::optional<Generated> g = shrunk_failure(f, seed, always);
+      ASSERT_TRUE(g);
+      EXPECT_EQ(to_string(case_kind_of(g->query)), to_string(drawn));
+    }
+  }
+  EXPECT_EQ(case_kind_of(generate(*family_named("hourglass"), 1).query),
+            CaseKind::MovingVertexFace);
+  EXPECT_EQ(case_kind_of(generate(*family_named("angled"), 1).query), CaseKind::Static);
 }
 
 }  // namespace

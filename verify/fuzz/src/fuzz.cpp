@@ -154,9 +154,10 @@ struct Run {
     return target.finding(g.query);
   }
 
-  // Case i shrunk while the method fails on it in the same class as on the case drawn (a late
-  // time stays late, not a missed contact); nullopt where it does not fail. Once the budget is
-  // spent no simpler case is taken (`cut`): the case stays as far as it shrank.
+  // Case i shrunk while the method fails on it in the same class as on the case drawn (a false
+  // alarm stays a false alarm, a late time stays late, not a missed contact); nullopt where it
+  // does not fail. shrunk_failure keeps the case's kind besides. Once the budget is spent no
+  // simpler case is taken (`cut`): the case stays as far as it shrank.
   std::optional<Generated> shrunk_case(long i, bool& cut) const {
     std::string drawn;  // shrunk_failure asks first about the case drawn
     return shrunk_failure(generator, case_seed(opt.seed, i), [&](const Generated& x) {
@@ -330,7 +331,10 @@ FuzzSummary run_fuzz(const FuzzOptions& opt) {
   for (const DoneMarker& m : after.done) {
     const MarkerContent r = read_marker(m.path);
     sum.disagreements += r.disagreements;
-    for (const std::string& f : r.files) sum.distinct.insert((run.out / f).string());
+    for (const std::string& f : r.files) {
+      sum.distinct.insert((run.out / f).string());
+      ++sum.by_class[class_of_case_file(f, opt.metamorphic)];
+    }
   }
   sum.cases = sum.cut ? after.done_count() : sum.last - sum.first;
   return sum;

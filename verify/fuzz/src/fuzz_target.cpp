@@ -23,12 +23,24 @@ std::string time_finding(const TimeCheck& c, double tolerance) {
   return "";
 }
 
+// The direction of a disagreement: "fp" (a false alarm: hit where the twin says no) or "fn" (a
+// miss: no where the twin says hit), "" where the two agree.
+std::string direction(const Verdicts& v) {
+  if (v.agree()) return "";
+  return v.said ? "fp" : "fn";
+}
+
+// The direction in words, for the case file's comment.
+std::string direction_words(const std::string& d) {
+  return d == "fp" ? "a false alarm (FP)" : "a miss (FN)";
+}
+
 }  // namespace
 
 std::string FuzzTarget::finding(const Query& q) const {
   if (metamorphic) return metamorphic_failure(method, q) ? "metamorphic" : "";
   if (toi) return method.gives_toi(q) ? time_finding(check_time(method, q, width), tolerance) : "";
-  return method.applies_to(q) && !check(method, q).agree() ? "disagrees" : "";
+  return method.applies_to(q) ? direction(check(method, q)) : "";
 }
 
 std::string FuzzTarget::case_folder(const std::string& family) const {
@@ -36,7 +48,7 @@ std::string FuzzTarget::case_folder(const std::string& family) const {
 }
 
 std::string FuzzTarget::case_name(const Query& q) const {
-  return (toi ? finding(q) + "-" : "") + case_hash(q) + ".vf";
+  return (metamorphic ? "" : finding(q) + "-") + case_hash(q) + ".vf";
 }
 
 // The exact contact, computed once, gives the twin's verdict (the case's truth) and its words.
@@ -58,10 +70,22 @@ std::string FuzzTarget::case_text(const Query& q, const std::string& family) con
                                   contact_words(contact) + ".",
                               "Shrunk by fdhcert fuzz --toi from family " + family + "."});
   }
+  // The id names the direction too (M/F/fp): classify --per-query rows carry it.
   const Verdicts v = check(method, q, contact.hit);
-  return case_file_text(r, {method.name + " says " + (v.said ? "hit" : "no") + ", exact says " +
-                                contact_words(contact) + ".",
-                            "Shrunk by fdhcert fuzz from family " + family + "."});
+  const std::string d = direction(v);
+  QueryRecord named = r;
+  named.id += "/" + d;
+  return case_file_text(named, {method.name + " says " + (v.said ? "hit" : "no") + ", exact says " +
+                                    contact_words(contact) + ": " + direction_words(d) + ".",
+                                "Shrunk by fdhcert fuzz from family " + family + "."});
+}
+
+std::string class_of_case_file(const std::string& path, bool metamorphic) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::size_t dash = name.find('-');
+  if (dash != std::string::npos && dash > 0) return name.substr(0, dash);
+  return metamorphic ? "metamorphic" : "disagrees";
 }
 
 }  // namespace fdh::verify

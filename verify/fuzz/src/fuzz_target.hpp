@@ -19,26 +19,34 @@ struct FuzzTarget {
   bool toi = false;
   double width = kDefaultToiWidth, tolerance = 0;
 
-  // The class of what the method gets wrong on q, "" for nothing: "disagrees" (the method
-  // applies to q and disagrees with the exact twin), "metamorphic" (its verdict changes under a
-  // transform of q), or with `toi` one of "missed" (a contact missed), "late" (t_lo after t*),
-  // "broken" (the time breaks the method's promise otherwise) and "early" (t_lo before t* by
-  // more than `tolerance`). Shrinking keeps the class of the case drawn.
+  // The class of what the method gets wrong on q, "" for nothing: the direction of a
+  // disagreement with the exact twin, "fp" (a false alarm) or "fn" (a miss), where the method
+  // applies to q; "metamorphic" (its verdict changes under a transform of q); or with `toi` one
+  // of "missed" (a contact missed), "late" (t_lo after t*), "broken" (the time breaks the
+  // method's promise otherwise) and "early" (t_lo before t* by more than `tolerance`).
+  // Shrinking keeps the class of the case drawn: a false alarm shrinks to a false alarm.
   std::string finding(const Query& q) const;
 
   // The folder of the cases under OUT: <method>/<family>, metamorphic/<method>/<family> or
   // toi/<method>/<family>.
   std::string case_folder(const std::string& family) const;
-  // A case's file name: <hash>.vf, or <class>-<hash>.vf with `toi`.
+  // A case's file name: <class>-<hash>.vf (fp-, fn-, or a TOI class), or <hash>.vf with
+  // `metamorphic`.
   std::string case_name(const Query& q) const;
 
   // The case file of a failing query shrunk from `family`: the twin's verdict as its truth, and
   // comments saying what the method and the twin answer, with the exact contact (kind and time
   // for a static query, the earliest CCD contact time for a moving one); a metamorphic case also
   // names the transform and the method's verdicts before and after it, a TOI case the method's
-  // enclosure and what the checker found in it. It depends on the query alone, so that any
+  // enclosure and what the checker found in it; a disagreement's case names its direction in
+  // its first comment and its id (M/F/fp, M/F/fn). It depends on the query alone, so that any
   // number of workers and shards write identical files.
   std::string case_text(const Query& q, const std::string& family) const;
 };
+
+// The class a stored case's path names (case_name): "fp" for .../fp-<hash>.vf; for a name with
+// no class (<hash>.vf: a metamorphic case, or a disagreement stored before classes were named)
+// "metamorphic" or "disagrees" after `metamorphic`.
+std::string class_of_case_file(const std::string& path, bool metamorphic);
 
 }  // namespace fdh::verify

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "constructions.hpp"
+#include "fdh/gen/case_kind.hpp"
 #include "fdh/gen/rapidcheck.hpp"
 #include "fdh/gen/shrink.hpp"
 #include "fdh/gen/simplify.hpp"
@@ -52,12 +53,15 @@ std::optional<Generated> shrunk_failure(const Family& f, std::uint64_t seed,
                                         const std::function<bool(const Generated&)>& fails) {
   const rc::Shrinkable<Generated> s = gen_family(f)(rc::Random(seed));
   if (!fails(s.value())) return std::nullopt;
-  Generated g = shrink_failure(s, fails);
+  // A step that leaves the kind of the case drawn is refused, as one that no longer fails is.
+  const CaseKind kind = case_kind_of(s.value().query);
+  const auto keeps = [&](const Generated& h) { return case_kind_of(h.query) == kind && fails(h); };
+  Generated g = shrink_failure(s, keeps);
   const Query shrunk = g.query;
-  g.query = simplify_failure(shrunk, [&g, &fails](const Query& q) {
+  g.query = simplify_failure(shrunk, [&g, &keeps](const Query& q) {
     Generated h = g;
     h.query = q;
-    return fails(h);
+    return keeps(h);
   });
   // A changed query is no longer the construction's: what it guaranteed no longer holds.
   if (!(g.query.x == shrunk.x)) g.truth = Truth::Unknown, g.kind.clear(), g.time.clear();

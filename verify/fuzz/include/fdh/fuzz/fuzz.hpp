@@ -1,6 +1,8 @@
 // fdhcert fuzz: search a generator family (static or moving, vertex-face or edge-edge) for
 // queries where a method disagrees with the exact twin of its decision, shrink each to a minimal
-// case (fdh/gen/families.hpp: shrunk_failure), and store the distinct ones.
+// case (fdh/gen/families.hpp: shrunk_failure) of the same class (a false alarm stays a false
+// alarm, a miss a miss; the case's kind stays the family's), and store the distinct ones: at
+// least one per (method, family, class) found.
 //
 // Case i of a run is drawn from its own seed (seed, i), so a run is the same whatever the
 // number of workers, and a shard is a contiguous range of i. Work goes in chunks; a chunk's
@@ -29,6 +31,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -77,6 +80,11 @@ struct FuzzSummary {
   long resumed = 0;                // of which were done before this run started
   long disagreements = 0;          // raw disagreements before shrinking
   std::set<std::string> distinct;  // file paths of the distinct shrunk cases
+  // The raw disagreements by class, which each shrunk case keeps and its file name starts
+  // with: "fp" (false alarms) and "fn" (misses); with --toi "missed", "late", "broken",
+  // "early"; with --metamorphic "metamorphic". Cases of a run resumed from before classes were
+  // named count as "disagrees".
+  std::map<std::string, long> by_class;
   // The budget ran out: cases [first, last) were not all run (`cases` counts those that were),
   // and `shrink_cut` cases were stored less shrunk than they could have been.
   bool cut = false;
