@@ -123,6 +123,7 @@ TEST(PluginSettings, MalformedOrRefusedSettingsExitTwo) {
   const std::string file = (queries("plugin_refused", 1) / "hits.vf").string();
   const std::vector<std::pair<std::string, std::string>> cases = {
       {kTunable + ":colour=red", "cannot take colour=red (it takes delay"},
+      {kTunable + ":answer=3", "cannot take answer=3"},
       {kTunable + ":delay=-1", "fdh_plugin_init refused its settings"},
       {kTunable + ":delay", "has no '='"},
       {kTunable + ":=3", "has an empty key"},
@@ -148,6 +149,15 @@ TEST(PluginSettings, ReachTheInitFunctionAndTheCertificate) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(w.status, 1) << w.err;  // "no" to three hits breaks its conservative promise
   EXPECT_EQ(nlohmann::json::parse(w.out)["methods"]["tunable"]["fn"], 3);
+  // The probe's child has the settings too: told to answer garbage, it is refused there.
+  Args garbage = base;
+  garbage.push_back(kTunable + ":answer=2");
+  const CliRun g = fdhcert(garbage);
+  EXPECT_EQ(g.status, 3) << g.err;
+  EXPECT_TRUE(has(g.err,
+                  "plug-in tunable returned 2 (garbage: not 0 or 1) in vertex_face_ccd on "
+                  "query 'probe/"))
+      << g.err;
 
   const fs::path out = fresh_temp_dir("plugin_settings_cert");
   const Args args = small_certify(dir, out, kTunable + ":answer=1,thread_safe=1");

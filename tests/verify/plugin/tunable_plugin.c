@@ -4,6 +4,7 @@
    told otherwise:
      delay=SECONDS     each call sleeps that long first (a slow library; default 0)
      answer=0          it says "no" to every query instead (and so breaks its promise)
+     answer=2          it answers 2, garbage (the probe's child refuses it)
      thread_safe=1     fdh_plugin_flags declares FDH_PLUGIN_THREAD_SAFE
    Any other key, or a value it cannot read, is refused. tunable_threads_seen() counts the
    threads its query functions were called from since the last fdh_plugin_init. */
@@ -63,13 +64,13 @@ const char* fdh_plugin_init(size_t n, const char* const* keys, const char* const
   for (size_t i = 0; i < n; ++i) {
     if (strcmp(keys[i], "delay") == 0 && read_number(values[i], 0, 60, &v)) {
       delay = v;
-    } else if (strcmp(keys[i], "answer") == 0 && read_number(values[i], 0, 1, &v)) {
+    } else if (strcmp(keys[i], "answer") == 0 && read_number(values[i], 0, 2, &v)) {
       answer = (int)v;
     } else if (strcmp(keys[i], "thread_safe") == 0 && read_number(values[i], 0, 1, &v)) {
       flags = v == 1 ? FDH_PLUGIN_THREAD_SAFE : 0;
     } else {
       snprintf(why, sizeof why,
-               "cannot take %s=%s (it takes delay=0..60, answer=0|1, "
+               "cannot take %s=%s (it takes delay=0..60, answer=0|1|2, "
                "thread_safe=0|1)",
                keys[i], values[i]);
       return why;
