@@ -37,7 +37,8 @@ TEST(Progress, NothingWhenNotShown) {
   }
   EXPECT_EQ(err.str(), "");
   std::ostringstream out;
-  EXPECT_FALSE(progress_wanted({out, err}, false));  // not the process's own stderr
+  EXPECT_EQ(progress_wanted({out, err}, false),
+            ProgressShow::None);  // not the process's own stderr
 }
 
 TEST(Progress, LongCommandsTakeQuietAndPrintNoProgressOffATerminal) {

@@ -188,7 +188,75 @@ void metamorphic_markdown(Out to, const Certificate& c) {
     fmt::format_to(to, "| `{}` | {} | {} |\n", t.transform, t.applied, t.skipped);
 }
 
+// 180000 as "180,000".
+std::string grouped(long n) {
+  std::string digits = std::to_string(n < 0 ? -n : n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return (n < 0 ? "-" : "") + out;
+}
+
+json budget_json(const Certificate& c) {
+  json cuts = json::array();
+  for (const BudgetCut& cut : c.cut_short)
+    cuts.push_back({{"stage", cut.stage},
+                    {"done", cut.done},
+                    {"total", cut.total},
+                    {"unit", cut.unit},
+                    {"words", cut_words(cut)}});
+  return {{"seconds", c.options.budget.seconds()}, {"cut_short", cuts}};
+}
+
+json plugins_json(const Certificate& c) {
+  json out = json::array();
+  for (const CertifiedPlugin& p : c.options.plugins) {
+    json settings = json::object();
+    for (const auto& [key, value] : p.settings) settings[key] = value;
+    out.push_back({{"file", p.file},
+                   {"name", p.name},
+                   {"settings", settings},
+                   {"thread_safe", p.thread_safe}});
+  }
+  return out;
+}
+
+// The first words: certified, violated, or cut short by the budget (which certifies nothing).
+std::string verdict_markdown(const Certificate& c) {
+  if (!c.first_violation.empty()) return fmt::format("**Violated**: {}.", c.first_violation);
+  if (c.complete()) return "**Certified**: no violation.";
+  std::string cuts;
+  for (const BudgetCut& cut : c.cut_short) cuts += (cuts.empty() ? "" : "; ") + cut_words(cut);
+  return fmt::format(
+      "**Not certified: cut short by the budget** (`--budget {}`): no violation in what was "
+      "checked, but the run stopped before its end, so this is not a certification. Cut short: "
+      "{}.",
+      c.options.budget.seconds(), cuts);
+}
+
+void plugins_markdown(Out to, const Certificate& c) {
+  if (c.options.plugins.empty()) return;
+  fmt::format_to(to,
+                 "## Plug-ins\n\n| method | file | settings | thread-safe |\n|---|---|---|---|\n");
+  for (const CertifiedPlugin& p : c.options.plugins) {
+    std::string settings;
+    for (const auto& [key, value] : p.settings)
+      settings += (settings.empty() ? "" : ", ") + ("`" + key + "=" + value + "`");
+    fmt::format_to(to, "| `{}` | `{}` | {} | {} |\n", p.name, p.file,
+                   settings.empty() ? "none" : settings, p.thread_safe ? "yes" : "no");
+  }
+  fmt::format_to(to, "\n");
+}
+
 }  // namespace
+
+std::string cut_words(const BudgetCut& cut) {
+  if (cut.done == 0 && cut.total == 0) return cut.stage + ": not run";
+  if (cut.total <= 0)
+    return fmt::format("{}: {} {} checked", cut.stage, grouped(cut.done), cut.unit);
+  return fmt::format("{}: {} of {} {}", cut.stage, grouped(cut.done), grouped(cut.total), cut.unit);
+}
 
 long Certificate::checks() const {
   long n = truths;
@@ -227,6 +295,9 @@ std::string certificate_json(const Certificate& c) {
   }
   const json j = {
       {"certified", c.certified()},
+      {"complete", c.complete()},
+      {"budget", budget_json(c)},
+      {"plugins", plugins_json(c)},
       {"commit", c.commit},
       {"cgal", c.cgal},
       {"gmp", c.gmp},
@@ -248,12 +319,11 @@ std::string certificate_json(const Certificate& c) {
 std::string certificate_markdown(const Certificate& c) {
   fmt::memory_buffer out;
   const auto to = std::back_inserter(out);
-  fmt::format_to(to, "# fdhcert certificate\n\n{}\n",
-                 c.certified() ? std::string("**Certified**: no violation.")
-                               : fmt::format("**Violated**: {}.", c.first_violation));
+  fmt::format_to(to, "# fdhcert certificate\n\n{}\n", verdict_markdown(c));
   fmt::format_to(
       to, "\nCommit `{}`, CGAL {}, GMP {}, {} run, seed {}. Made by `fdhcert certify{}`.\n\n",
       c.commit, c.cgal, c.gmp, mode(c), c.options.seed, c.options.quick ? " --quick" : "");
+  plugins_markdown(to, c);
   inputs_markdown(to, c);
   properties_markdown(to, c);
   metamorphic_markdown(to, c);

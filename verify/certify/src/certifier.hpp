@@ -45,6 +45,7 @@ struct CertifyTally {
   std::vector<TransformCount> transforms;  // the metamorphic transforms applied and skipped
   long truths = 0, truth_violations = 0;
   long queries = 0;  // the queries checked (certify counts them per source)
+  long skipped = 0;  // the queries not checked: the budget was spent (fdh/os/budget.hpp)
   // The first violation: its words, and the case file that shows it (a name in out_dir and
   // the file's text); written only when it is the certificate's first.
   struct Found {
@@ -76,7 +77,7 @@ struct CertifyTally {
       transforms[i].skipped += later.transforms[i].skipped;
     }
     truths += later.truths, truth_violations += later.truth_violations;
-    queries += later.queries;
+    queries += later.queries, skipped += later.skipped;
     if (!first) first = later.first;
   }
 };
@@ -105,8 +106,13 @@ class Certifier {
     write_counts();
   }
 
-  // Every query of qs, on every core; the certificate then counts them in order.
-  void check_queries(const std::vector<QueryRecord>& qs) { record(tally(qs)); }
+  // Every query of qs, on every core; the certificate then counts them in order. Returns the
+  // queries checked (fewer once the budget is spent).
+  long check_queries(const std::vector<QueryRecord>& qs) {
+    const CertifyTally t = tally(qs);
+    record(t);
+    return t.queries;
+  }
 
   // What qs adds to the certificate: checked on every core, merged in order. Safe to call from
   // several threads at once.
@@ -116,7 +122,7 @@ class Certifier {
     };
     CertifyTally sum = zero_;
     for (const CertifyTally& t : parts_in_order(qs.size(), 16, zero_, check_chunk)) sum.add(t);
-    sum.queries = long(qs.size());
+    sum.queries = long(qs.size()) - sum.skipped;
     return sum;
   }
 
@@ -149,6 +155,10 @@ class Certifier {
   }
 
   void check_query(const QueryRecord& r, CertifyTally& t) const {
+    if (budget().spent()) {
+      ++t.skipped;
+      return;
+    }
     const RecordScope asking(r);  // a plug-in's crash names r
     const Query& q = r.query;
     check_boxes(r, std::vector<Vec3>(q.x.begin(), q.x.end()), t);
@@ -158,7 +168,7 @@ class Certifier {
     }
     const bool twin = twin_hit(q);
     check_truth(r, twin, t);
-    if (const auto broken = metamorphic_.check(q, twin, t.metamorphic, t.transforms)) {
+    if (const auto broken = metamorphic_.check(q, twin, t.metamorphic, t.transforms, budget())) {
       QueryRecord saved = with_truth(r, twin);  // the truth, id and place of q: the transform's
       saved.query = broken->saved;
       violation(saved, broken->what, t, broken->before(with_truth(r, twin)));
@@ -232,6 +242,8 @@ class Certifier {
       });
     }
   }
+
+  const Budget& budget() const { return c_.options.budget; }
 
   static const Method& named(const std::vector<Method>& ms, const std::string& name) {
     return *std::find_if(ms.begin(), ms.end(), [&](const Method& m) { return m.name == name; });

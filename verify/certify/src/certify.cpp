@@ -62,7 +62,17 @@ CertifyTally scene_tally(const std::string& file, const CertifyOptions& o, const
 }
 
 void tell(const Certificate& c, const std::string& stage, long done, long total) {
-  report(c.options.progress, {stage, done, total, stage == "generator families" ? "queries" : ""});
+  const std::string unit = stage == "generator families" ? "queries"
+                           : stage == "scenes"           ? "scenes"
+                           : total > 0                   ? "files"
+                                                         : "";
+  report(c.options.progress, {stage, done, total, unit});
+}
+
+// The budget stopped `stage` after `done` of `total` (fdh/os/budget.hpp); nothing if it did not.
+void note_cut(Certificate& c, const std::string& stage, long done, long total,
+              const std::string& unit) {
+  if (c.options.budget.spent() && done < total) c.cut_short.push_back({stage, done, total, unit});
 }
 
 // Every shipped scene, each on a core of its own (their cloths are independent; a cloth of
@@ -71,16 +81,20 @@ void check_scenes(Certificate& c, Certifier& cert) {
   const fs::path dir = fs::path(c.options.corpus_dir) / "scenes";
   if (!fs::is_directory(dir)) return;
   const std::vector<std::string> files = scene_files(dir.string());
+  if (c.options.budget.spent()) return note_cut(c, "scenes", 0, long(files.size()), "scenes");
   tell(c, "scenes", 0, long(files.size()));
   const auto scenes = parts_in_order(files.size(), 1, cert.zero(),
                                      [&](std::size_t i, std::size_t, CertifyTally& t) {
                                        t = scene_tally(files[i], c.options, cert);
                                      });
+  long whole = 0;  // scenes whose queries were all checked
   for (const CertifyTally& t : scenes) {
     ++c.scenes;
+    whole += t.skipped == 0;
     c.scene_queries += t.queries;
     cert.record(t);
   }
+  note_cut(c, "scenes", whole, long(files.size()), "scenes");
 }
 
 PeerOptions peer_options(const CertifyOptions& o) {
@@ -93,14 +107,18 @@ PeerOptions peer_options(const CertifyOptions& o) {
   return p;
 }
 
+// Files whole or not at all: each is read (so that a cut can say of how many queries) and its
+// queries checked while the budget lasts.
 void check_corpus(Certificate& c, Certifier& cert) {
   const std::vector<std::string> files = list_query_files(c.options.corpus_dir);
+  long total = 0;
   for (const std::string& f : files) {
     tell(c, "corpus", c.corpus_files++, long(files.size()));
     const std::vector<QueryRecord> qs = read_native(f);
-    c.corpus_queries += long(qs.size());
-    cert.check_queries(qs);
+    total += long(qs.size());
+    c.corpus_queries += cert.check_queries(qs);
   }
+  note_cut(c, "corpus", c.corpus_queries, total, "queries");
 }
 
 // per_family queries of every family, family j from stream j, in batches: drawn on this thread
@@ -111,20 +129,21 @@ void check_families(Certificate& c, Certifier& cert) {
   for (const Family& f : all_families()) {
     (f.moving ? c.moving_families : c.families).push_back(f.name);
     ++stream;
-    for (long i = 0; i < c.options.per_family; i += batch) {
+    for (long i = 0; i < c.options.per_family && !c.options.budget.spent(); i += batch) {
       tell(c, "generator families", c.fuzzed_queries, total);
       std::vector<QueryRecord> qs;
       for (long j = i; j < std::min(i + batch, c.options.per_family); ++j)
         qs.push_back(generate(f, case_seed(c.options.seed * 1000 + stream, j)).record());
-      c.fuzzed_queries += long(qs.size());
-      cert.check_queries(qs);
+      c.fuzzed_queries += cert.check_queries(qs);
     }
   }
+  note_cut(c, "generator families", c.fuzzed_queries, total, "queries");
 }
 
 // Drawn on this thread (RapidCheck), checked on every core.
 void check_soups(Certificate& c, Certifier& cert) {
   const std::uint64_t s = c.options.seed * 1000 + 999;
+  if (c.options.budget.spent()) return note_cut(c, "tree soups", 0, c.options.soups, "pairs");
   tell(c, "tree soups", 0, 0);
   std::vector<Soup> a, b;
   for (long i = 0; i < c.options.soups; ++i) {
@@ -135,13 +154,23 @@ void check_soups(Certificate& c, Certifier& cert) {
 }
 
 void check_extra_files(Certificate& c, Certifier& cert) {
-  long done = 0;
+  long done = 0, total = 0;
   for (const std::string& f : c.options.extra_files) {
     tell(c, "extra files", done++, long(c.options.extra_files.size()));
     const std::vector<QueryRecord> qs = read_query_file(f);
-    c.extra_queries += long(qs.size());
-    cert.check_queries(qs);
+    total += long(qs.size());
+    c.extra_queries += cert.check_queries(qs);
   }
+  note_cut(c, "extra files", c.extra_queries, total, "queries");
+}
+
+// The metamorphic checks ran with the queries above: once the budget stopped those, the
+// transforms of the queries not reached were not checked either.
+void note_metamorphic_cut(Certificate& c) {
+  if (c.cut_short.empty()) return;
+  long checked = 0;
+  for (const MetamorphicCheck& m : c.metamorphic) checked += m.checked;
+  c.cut_short.push_back({"metamorphic", checked, 0, "transformed queries"});
 }
 
 }  // namespace
@@ -162,6 +191,11 @@ Certificate certify(const CertifyOptions& options) {
   check_scenes(c, cert);
   check_soups(c, cert);
   check_extra_files(c, cert);
+  note_metamorphic_cut(c);
+  if (c.options.budget.spent()) {
+    c.cut_short.push_back({"peers", 0, 0, ""});  // not run
+    return c;
+  }
   tell(c, "peers", 0, 0);
   c.peers = certify_peers(peer_options(c.options));
   if (c.first_violation.empty()) c.first_violation = c.peers.first_own_violation;

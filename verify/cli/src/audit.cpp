@@ -60,7 +60,8 @@ bounds of docs/limits.md.)";
 struct AuditOptions {
   std::vector<std::string> frames, obstacles;
   std::string cloth, out;
-  bool json = false, quiet = false;
+  bool json = false;
+  ProgressWhen progress = ProgressWhen::Auto;
   int k = 18, threads = 0, keep = 16;
 };
 
@@ -233,7 +234,7 @@ int run_audit(const AuditOptions& o, const Io& io) {
         "fdhcert: note: {} faces of more than three vertices were split into triangles (fan)\n",
         seq.polygons());
   AuditRun run(o, seq);
-  ProgressLine progress(io.err, progress_wanted(io, o.quiet));
+  ProgressLine progress(io.err, progress_wanted(io, o.progress));
   const AuditReport& report = run.run(progress);
   progress.clear();
   if (!o.out.empty()) run.write(o.out);
@@ -275,7 +276,7 @@ void add_audit_options(CLI::App& cmd, AuditOptions& o) {
                     "with its case file (default 16)",
                     "N", 1, 100000);
   add_threads_option(cmd, o.threads, "the audit");
-  add_quiet_flag(cmd, o.quiet);
+  add_quiet_flag(cmd, o.progress);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "budget_option.hpp"
 #include "corpus_option.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "plugin_option.hpp"
@@ -48,7 +49,9 @@ const char* const kCertifyFooter =
     R"(Writes DIR/certificate.json and DIR/certificate.md: counts, seed, the CGAL and
 GMP versions and the git commit. On any violation the first violating case is
 saved in DIR as a corpus file (a .vf query, or an .obj for a tree), named in
-the output, and the exit status is 1.)";
+the output, and the exit status is 1. With --budget, a run that runs out of time
+stops at a clean point, writes both files whole with the stages cut short and
+how far each got, says NOT CERTIFIED and exits with status 1.)";
 
 // One line: the promised methods judged on the transformed queries, and the transforms skipped
 // as inexact.
@@ -72,30 +75,51 @@ void print_metamorphic(const Certificate& c, std::ostream& out) {
   print_judged_under_transforms(c, out);
 }
 
+// The first word of the summary line: what the certificate says.
+const char* verdict(const Certificate& c) {
+  if (!c.first_violation.empty()) return "VIOLATED";
+  return c.complete() ? "certified" : "NOT CERTIFIED (cut short by --budget)";
+}
+
 int run_certify(const CertifyCommand& cmd, const Io& io) {
   CertifyOptions opt = cmd.options;
   check_output_dir(opt.out_dir, {"certificate.json", "certificate.md"});
   opt.corpus_dir = corpus_or_default(opt.corpus_dir);
   io.out << "corpus: " << opt.corpus_dir << "\n";
-  const ThreadLimit threads(cmd.threads);
-  ProgressLine progress(io.err, progress_wanted(io, cmd.quiet));
+  opt.plugins = certified_plugins();
+  const ThreadLimit threads(cmd.threads, io.err);
+  ProgressLine progress(io.err, progress_wanted(io, cmd.progress));
   opt.progress = progress.sink("certify: ");
   const Certificate c = certify(opt);
   progress.clear();
   write_certificate(c);
   const std::filesystem::path dir(opt.out_dir);
-  io.out << (c.certified() ? "certified" : "VIOLATED") << ": " << c.checks() << " checks, "
-         << c.violations() << " violations (" << c.corpus_queries << " corpus, " << c.fuzzed_queries
-         << " fuzzed, " << c.scene_queries << " scene, " << c.extra_queries << " extra queries; "
-         << c.options.soups << " soup pairs); wrote " << (dir / "certificate.md").string()
-         << " and .json\n";
+  io.out << verdict(c) << ": " << c.checks() << " checks, " << c.violations() << " violations ("
+         << c.corpus_queries << " corpus, " << c.fuzzed_queries << " fuzzed, " << c.scene_queries
+         << " scene, " << c.extra_queries << " extra queries; " << c.options.soups
+         << " soup pairs); wrote " << (dir / "certificate.md").string() << " and .json\n";
   print_metamorphic(c, io.out);
   if (c.certified()) return 0;
+  if (c.first_violation.empty()) {
+    io.err << "fdhcert: certify: the budget of " << opt.budget.seconds()
+           << " s ran out, so this is not a certification; cut short:";
+    for (std::size_t i = 0; i < c.cut_short.size(); ++i)
+      io.err << (i ? "; " : " ") << cut_words(c.cut_short[i]);
+    io.err << " (" << (dir / "certificate.md").string() << ")\n";
+    return 1;
+  }
   io.err << "fdhcert: certify: " << c.first_violation << "\n";
   return 1;
 }
 
 }  // namespace
+
+std::vector<CertifiedPlugin> certified_plugins() {
+  std::vector<CertifiedPlugin> out;
+  for (const LoadedPlugin& p : loaded_plugins())
+    out.push_back({p.file, p.name, p.settings, p.thread_safe});
+  return out;
+}
 
 void add_certify_options(CLI::App& cmd, CertifyCommand& c) {
   CertifyOptions& opt = c.options;
@@ -122,7 +146,7 @@ void add_certify_options(CLI::App& cmd, CertifyCommand& c) {
       ->type_name("N")
       ->check(count);
   add_threads_option(cmd, c.threads, "the checks");
-  add_quiet_flag(cmd, c.quiet);
+  add_quiet_flag(cmd, c.progress);
   cmd.add_option("EXTRA", opt.extra_files,
                  "more query files: native (*.vf) or CCD benchmark CSV (*.csv)");
 }
@@ -132,6 +156,7 @@ Command add_certify(CLI::App& app) {
   c->options.out_dir = "certificate";
   CLI::App* cmd = add_command(app, "certify", kCertifyAbout, kCertifyFooter);
   add_certify_options(*cmd, *c);
+  add_budget_option(*cmd, c->options.budget, "the checks");
   add_plugin_option(*cmd);
   return {cmd, [c](const Io& io) { return run_certify(*c, io); }};
 }

@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 
+#include "budget_option.hpp"
 #include "commands.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/plugin/loader.hpp"
@@ -134,6 +135,7 @@ int run_command(const std::vector<Command>& commands, const Io& io) {
 }  // namespace
 
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  mark_run_start();  // --budget counts from here
   CLI::App app(kAbout, "fdhcert");
   app.formatter(std::make_shared<HelpFormatter>());
   app.get_formatter()->column_width(24);

@@ -3,6 +3,7 @@
 
 #include <memory>
 
+#include "budget_option.hpp"
 #include "commands.hpp"
 #include "fdh/fuzz/fuzz.hpp"
 #include "fdh/gen/families.hpp"
@@ -62,7 +63,8 @@ line shows cases done, rate and cases found.)";
 struct FuzzCommandOptions {
   FuzzOptions run;
   std::string shard;  // "I/N"
-  bool json = false, quiet = false;
+  bool json = false;
+  ProgressWhen progress = ProgressWhen::Auto;
 };
 
 std::vector<std::string> every_family_name() {
@@ -118,20 +120,22 @@ std::string by_direction(const FuzzOptions& opt, const FuzzSummary& s) {
 void print_summary(const FuzzOptions& opt, const FuzzSummary& s, bool json, std::ostream& out) {
   const std::string shard = std::to_string(opt.shard + 1) + "/" + std::to_string(opt.shards);
   if (json) {
-    print_json(out, {{"method", opt.method},
-                     {"metamorphic", opt.metamorphic},
-                     {"toi", opt.toi},
-                     {"family", opt.family},
-                     {"seed", opt.seed},
-                     {"shard", shard},
-                     {"first", s.first},
-                     {"last", s.last},
-                     {"cases", s.cases},
-                     {"resumed", s.resumed},
-                     {"disagreements", s.disagreements},
-                     {"by_direction", s.by_class},
-                     {"distinct", s.distinct.size()},
-                     {"files", s.distinct}});
+    nlohmann::ordered_json j = {{"method", opt.method},
+                                {"metamorphic", opt.metamorphic},
+                                {"toi", opt.toi},
+                                {"family", opt.family},
+                                {"seed", opt.seed},
+                                {"shard", shard},
+                                {"first", s.first},
+                                {"last", s.last},
+                                {"cases", s.cases},
+                                {"resumed", s.resumed},
+                                {"disagreements", s.disagreements},
+                                {"by_direction", s.by_class},
+                                {"distinct", s.distinct.size()},
+                                {"files", s.distinct}};
+    if (opt.budget.limited()) j["cut_by_budget"] = s.cut, j["shrinking_cut"] = s.shrink_cut;
+    print_json(out, j);
     return;
   }
   const char* found = opt.metamorphic ? " verdicts changed by a transform, "
@@ -147,6 +151,12 @@ void print_summary(const FuzzOptions& opt, const FuzzSummary& s, bool json, std:
       << found << s.distinct.size() << " distinct shrunk cases\n";
   if (!opt.metamorphic) out << opt.method << " by direction: " << by_direction(opt, s) << "\n";
   for (const std::string& f : s.distinct) out << "  " << f << "\n";
+  if (s.cut)
+    out << "budget of " << opt.budget.seconds() << " s spent: stopped after " << s.cases << " of "
+        << s.last - s.first << " cases; the same command resumes the rest\n";
+  if (s.shrink_cut)
+    out << "shrinking: the budget stopped it on " << s.shrink_cut
+        << " case(s), stored as far as they shrank\n";
 }
 
 int run_fuzz_command(FuzzCommandOptions& o, const Io& io) {
@@ -157,7 +167,9 @@ int run_fuzz_command(FuzzCommandOptions& o, const Io& io) {
     opt.shard = std::stoi(o.shard.substr(0, slash)) - 1;  // checked by shard_validator
     opt.shards = std::stoi(o.shard.substr(slash + 1));
   }
-  ProgressLine progress(io.err, progress_wanted(io, o.quiet || o.json));
+  ProgressLine progress(
+      io.err, progress_wanted(io, o.json && o.progress == ProgressWhen::Auto ? ProgressWhen::Never
+                                                                             : o.progress));
   opt.progress = progress.sink();
   FuzzSummary s;
   try {
@@ -207,6 +219,7 @@ Command add_fuzz(CLI::App& app) {
       ->type_name("N")
       ->check(CLI::Range(1, 1 << 20));
   add_plugin_option(*cmd);
+  add_budget_option(*cmd, opt.budget, "the workers and shrinking");
   cmd->add_flag("--metamorphic", opt.metamorphic,
                 "look for verdicts that change under a truth-keeping\ntransform (above)");
   CLI::Option* toi = cmd->add_flag("--toi", opt.toi,
@@ -225,7 +238,7 @@ Command add_fuzz(CLI::App& app) {
       ->check(CLI::Range(0.0, 1.0))
       ->needs(toi);
   cmd->add_flag("--json", o->json, "print the summary as one JSON object");
-  add_quiet_flag(*cmd, o->quiet);
+  add_quiet_flag(*cmd, o->progress);
   return {cmd, [o](const Io& io) { return run_fuzz_command(*o, io); }};
 }
 

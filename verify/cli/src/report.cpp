@@ -71,8 +71,9 @@ int run_report(const ReportCommand& cmd, const Io& io) {
   CertifyOptions opt = cmd.options;
   check_output_dir(opt.out_dir, report_outputs());
   opt.corpus_dir = corpus_or_default(opt.corpus_dir);
-  const ThreadLimit threads(cmd.threads);
-  ProgressLine progress(io.err, progress_wanted(io, cmd.quiet));
+  opt.plugins = certified_plugins();
+  const ThreadLimit threads(cmd.threads, io.err);
+  ProgressLine progress(io.err, progress_wanted(io, cmd.progress));
   opt.progress = progress.sink("report: certify: ");
   std::string step;  // the step now running: each is announced on standard output as it starts
   const Report report = make_report(opt, [&](const Progress& p) {

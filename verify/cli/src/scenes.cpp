@@ -26,12 +26,13 @@ With --movies, also OUT/NAME-movie.png: the run as an animated PNG.
 
 struct ScenesOptions {
   std::string scenes = "corpus/scenes", out_dir = "scenes";
-  bool movies = false, quiet = false;
+  bool movies = false;
+  ProgressWhen progress = ProgressWhen::Auto;
 };
 
 int run_scenes(const ScenesOptions& o, const Io& io) {
   check_output_dir(o.out_dir);  // and each scene's outputs, in run_scene_folder, before any run
-  ProgressLine progress(io.err, progress_wanted(io, o.quiet));
+  ProgressLine progress(io.err, progress_wanted(io, o.progress));
   SceneFolderOptions opt;
   opt.movies = o.movies;
   opt.progress = progress.sink();
@@ -55,7 +56,7 @@ Command add_scenes(CLI::App& app) {
   cmd->add_option("--out", o->out_dir,
                   "where the pictures and JSON go, created if needed (default:\nscenes)")
       ->type_name("DIR");
-  add_quiet_flag(*cmd, o->quiet);
+  add_quiet_flag(*cmd, o->progress);
   cmd->add_flag("--movies", o->movies,
                 "also render each run to OUT/NAME-movie.png, an animated PNG\n"
                 "(simulate --movie)");

@@ -49,7 +49,8 @@ struct SimulateOptions {
   int grid = 0;           // 0: the scene's
   std::string thickness;  // "": the scene's
   std::string self;       // "on", "off" or "": the scene's
-  bool json = false, no_check = false, quiet = false;
+  bool json = false, no_check = false;
+  ProgressWhen progress = ProgressWhen::Auto;
   int threads = 0;  // 0: every core
   SceneRunOptions run;
 };
@@ -194,7 +195,7 @@ int run_simulate(SimulateOptions& o, const Io& io) {
   const cloth::Scene scene = read_scene_as_asked(o);
   const int frames = o.run.frames < 0 ? scene.frames : o.run.frames;
   Outputs outputs(o, scene, frames);
-  ProgressLine progress(io.err, progress_wanted(io, o.quiet));
+  ProgressLine progress(io.err, progress_wanted(io, o.progress));
   o.run.on_start = [&](const cloth::Simulation& sim) { outputs.start(sim); };
   o.run.on_frame = [&](const cloth::Simulation& sim, int frame) {
     outputs.frame(sim, frame);
@@ -280,7 +281,7 @@ void add_output_options(CLI::App& cmd, SimulateOptions& o) {
   add_threads_option(cmd, o.threads, "the step");
   cmd.add_flag("--json", o.json, "print one JSON object instead of the text");
   cmd.add_flag("--no-check", o.no_check, "skip the accuracy count and the audit");
-  add_quiet_flag(cmd, o.quiet);
+  add_quiet_flag(cmd, o.progress);
 }
 
 }  // namespace

@@ -42,13 +42,14 @@ const char* const kTable1Footer =
 struct Table1Options {
   std::string scene = "corpus/scenes/table.scene", out_dir;
   int frames = -1;
-  bool json = false, quiet = false, summary = false;
+  bool json = false, summary = false;
+  ProgressWhen progress = ProgressWhen::Auto;
 };
 
 int run_table1(const Table1Options& o, const Io& io) {
   if (!o.out_dir.empty()) check_output_dir(o.out_dir, table1_outputs());
   const cloth::Scene scene = read_scene(o.scene);
-  ProgressLine progress(io.err, progress_wanted(io, o.quiet));
+  ProgressLine progress(io.err, progress_wanted(io, o.progress));
   const Table1 t = measure_table1(scene, o.scene, o.frames, progress.sink());
   progress.clear();
   if (!o.out_dir.empty()) write_table1(t, o.out_dir);
@@ -75,7 +76,7 @@ Command add_table1(CLI::App& app) {
                 "print two lines instead of the text: the largest grid's k = 18\n"
                 "rows beside the paper's, and the audit of every run")
       ->excludes("--json");
-  add_quiet_flag(*cmd, o->quiet);
+  add_quiet_flag(*cmd, o->progress);
   cmd->add_option("--out", o->out_dir,
                   "also write DIR/table1.md, DIR/data/table1.csv and the chart\n"
                   "DIR/table1.png and .svg (ms per frame against particles)")

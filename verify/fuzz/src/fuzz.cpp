@@ -105,6 +105,12 @@ WorkFolder take_work_folder(const fs::path& out, double wait_seconds) {
   }
 }
 
+// What a worker tells the parent of a chunk: cases run, disagreements, cases whose shrinking
+// the budget stopped.
+struct ChunkReport {
+  long cases = 0, found = 0, shrink_cut = 0;
+};
+
 struct Run {
   const FuzzOptions& opt;
   FuzzTarget target{select_methods({opt.method}).front(), opt.metamorphic, opt.toi, opt.toi_width,
@@ -150,22 +156,32 @@ struct Run {
 
   // Case i shrunk while the method fails on it in the same class as on the case drawn (a false
   // alarm stays a false alarm, a late time stays late, not a missed contact); nullopt where it
-  // does not fail. shrunk_failure keeps the case's kind besides.
-  std::optional<Generated> shrunk_case(long i) const {
+  // does not fail. shrunk_failure keeps the case's kind besides. Once the budget is spent no
+  // simpler case is taken (`cut`): the case stays as far as it shrank.
+  std::optional<Generated> shrunk_case(long i, bool& cut) const {
     std::string drawn;  // shrunk_failure asks first about the case drawn
     return shrunk_failure(generator, case_seed(opt.seed, i), [&](const Generated& x) {
+      if (!drawn.empty() && opt.budget.spent()) {
+        cut = true;
+        return false;
+      }
       const std::string f = finding(x);
       if (drawn.empty()) drawn = f;
       return !f.empty() && f == drawn;
     });
   }
 
-  // Runs cases [r.begin, r.end), writes their case files, then the marker; its disagreements.
-  long run_chunk(IndexRange r) const {
-    long disagreements = 0;
+  // Runs cases [r.begin, r.end), writes their case files, then the marker of the cases run:
+  // all of them, or those before the budget ran out.
+  ChunkReport run_chunk(IndexRange r) const {
+    ChunkReport done;
+    long& disagreements = done.found;
     std::vector<std::string> files;
-    for (long i = r.begin; i < r.end; ++i) {
-      const std::optional<Generated> g = shrunk_case(i);
+    long i = r.begin;
+    for (; i < r.end && !opt.budget.spent(); ++i) {
+      bool cut = false;
+      const std::optional<Generated> g = shrunk_case(i, cut);
+      done.shrink_cut += cut;
       if (!g) continue;
       ++disagreements;
       const std::string name = target.case_name(g->query);
@@ -175,13 +191,15 @@ struct Run {
       if (!file_holds(path, text)) space.write_whole(path, text);
       files.push_back(target.case_folder(family) + "/" + name);
     }
+    done.cases = i - r.begin;
+    if (done.cases == 0) return done;
     if (!files.empty()) sync_folder(case_dir.string());  // the cases are on disk before the marker
     std::ostringstream os;
     os << disagreements;
     for (const std::string& f : files) os << ' ' << f;
     os << '\n';
-    space.write_whole(run_dir + "/" + marker_name(r), os.str());
-    return disagreements;
+    space.write_whole(run_dir + "/" + marker_name({r.begin, i}), os.str());
+    return done;
   }
 
   // The chunks of the cases to do: each gap of `todo` cut into pieces of `chunk` cases,
@@ -192,17 +210,18 @@ struct Run {
     return n;
   }
 
-  // Each chunk it finishes is reported on `progress_fd` as {cases, disagreements} (16 bytes:
-  // one atomic pipe write), so the parent's progress reads no files.
+  // Each chunk it finishes is reported on `progress_fd` as a ChunkReport (one atomic pipe
+  // write), so the parent's progress reads no files. A chunk cut by the budget is the last.
   void work(int w, int n, int progress_fd) const {
     long base = 0;  // number of the gap's first chunk
     for (const IndexRange& g : todo) {
       const long m = (g.end - g.begin - 1) / chunk + 1;
       for (long j = ((w - base) % n + n) % n; j < m; j += n) {
         const IndexRange r{g.begin + j * chunk, std::min(g.end, g.begin + j * chunk + chunk)};
-        const long report[2] = {r.end - r.begin, run_chunk(r)};
+        const ChunkReport report = run_chunk(r);
         // Progress is cosmetic: a full or closed pipe changes nothing, so the result is unused.
-        [[maybe_unused]] const ssize_t written = ::write(progress_fd, report, sizeof report);
+        [[maybe_unused]] const ssize_t written = ::write(progress_fd, &report, sizeof report);
+        if (report.cases < r.end - r.begin) return;
       }
       base += m;
     }
@@ -228,13 +247,13 @@ std::vector<ChildProcess> start_workers(const Run& run, int workers, int progres
 
 // The counts a run's progress shows.
 struct Tally {
-  long done = 0, found = 0;
+  long done = 0, found = 0, shrink_cut = 0;
 };
 
 // Waits for every worker, reporting progress; "" if all ended well, else how the first that
 // failed ended ("exit status 3").
 std::string wait_for_workers(const Run& run, std::vector<ChildProcess> children, int progress_fd,
-                             Tally tally) {
+                             Tally& tally) {
   std::string failed;
   const Progress shape{"fuzz " + run.method.name + " on " + run.family, 0, run.last - run.first,
                        "cases"};
@@ -247,8 +266,8 @@ std::string wait_for_workers(const Run& run, std::vector<ChildProcess> children,
         ++k;
       }
     }
-    for (long got[2]; ::read(progress_fd, got, sizeof got) == sizeof got;)
-      tally.done += got[0], tally.found += got[1];
+    for (ChunkReport got; ::read(progress_fd, &got, sizeof got) == sizeof got;)
+      tally.done += got.cases, tally.found += got.found, tally.shrink_cut += got.shrink_cut;
     if (children.empty()) break;
     Progress p = shape;
     p.done = tally.done, p.detail = std::to_string(tally.found) + " found";
@@ -258,8 +277,9 @@ std::string wait_for_workers(const Run& run, std::vector<ChildProcess> children,
   return failed;
 }
 
-// Runs the chunks still to do on `opt.threads` workers; throws if one failed.
-void run_workers(const Run& run, Tally tally) {
+// Runs the chunks still to do on `opt.threads` workers; throws if one failed. `tally` ends with
+// what they did.
+void run_workers(const Run& run, Tally& tally) {
   const long chunks = run.chunks();
   if (chunks == 0) return;
   const int threads =
@@ -302,7 +322,9 @@ FuzzSummary run_fuzz(const FuzzOptions& opt) {
   run_workers(run, tally);
 
   const Coverage after = coverage_of(run.run_dir, run.first, run.last);
-  if (!after.todo.empty())
+  sum.shrink_cut = tally.shrink_cut;
+  sum.cut = !after.todo.empty() && opt.budget.spent();
+  if (!after.todo.empty() && !sum.cut)
     throw std::runtime_error("fuzz: cases " + std::to_string(after.todo.front().begin) + ".." +
                              std::to_string(after.todo.front().end - 1) + " of method " +
                              run.method.name + " did not finish: their worker ended early");
@@ -314,7 +336,7 @@ FuzzSummary run_fuzz(const FuzzOptions& opt) {
       ++sum.by_class[class_of_case_file(f, opt.metamorphic)];
     }
   }
-  sum.cases = sum.last - sum.first;
+  sum.cases = sum.cut ? after.done_count() : sum.last - sum.first;
   return sum;
 }
 

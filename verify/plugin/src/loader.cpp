@@ -20,6 +20,7 @@
 #include "fdh/check/registry.hpp"
 #include "fdh/plugin.h"
 #include "guard.hpp"
+#include "init_call.hpp"
 #include "private_stdout.hpp"
 #include "probe.hpp"
 #include "watchdog.hpp"
@@ -30,11 +31,14 @@ namespace {
 using plugin::CallSite;
 using plugin::InCall;
 
-// A loaded plug-in: its struct, copied, and its name. The library stays loaded for the process
-// (its functions are in the registry until the run ends).
+// A loaded plug-in: its struct, copied, its name, settings and flags. The library stays loaded
+// for the process (its functions are in the registry until the run ends).
 struct Loaded {
   std::string path, name;
   fdh_plugin api{};
+  PluginSettings settings;
+  unsigned flags = 0;  // FDH_PLUGIN_* bits
+  bool one_thread() const { return !(flags & FDH_PLUGIN_THREAD_SAFE); }
 };
 using LoadedPtr = std::shared_ptr<const Loaded>;
 
@@ -43,6 +47,12 @@ using LoadedPtr = std::shared_ptr<const Loaded>;
 std::vector<std::pair<dev_t, ino_t>>& loaded_files() {
   static std::vector<std::pair<dev_t, ino_t>> files;
   return files;
+}
+
+// What this run loaded, for loaded_plugins(); cleared with loaded_files().
+std::vector<LoadedPlugin>& loaded_list() {
+  static std::vector<LoadedPlugin> list;
+  return list;
 }
 
 [[noreturn]] void refuse(const std::string& path, const std::string& why) {
@@ -95,12 +105,25 @@ std::string not_loaded(const std::string& file, const std::string& dlerror_words
   return machine.empty() ? dlerror_words : machine + " (dlerror: " + dlerror_words + ")";
 }
 
-// The struct the entry point returns, checked field by field.
-fdh_plugin entry_struct(const std::string& path) {
+// Settings as fdh_plugin_init may take them: keys non-empty and each given once.
+void check_settings(const std::string& path, const PluginSettings& settings) {
+  for (std::size_t i = 0; i < settings.size(); ++i) {
+    if (settings[i].first.empty()) refuse(path, "a setting has an empty key");
+    for (std::size_t j = 0; j < i; ++j)
+      if (settings[j].first == settings[i].first)
+        refuse(path, "setting '" + settings[i].first + "' is given twice");
+  }
+}
+
+// The struct the entry point returns, checked field by field, after fdh_plugin_init took the
+// settings; `flags` gets fdh_plugin_flags().
+fdh_plugin entry_struct(const std::string& path, const PluginSettings& settings, unsigned& flags) {
+  check_settings(path, settings);
   // A file path, never a name for dlopen to search for.
   const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
   // First in a child: a constructor or a cut file that crashes takes the child, not fdhcert.
-  if (const std::optional<std::string> why = plugin::probe_load(path, file, limit_of_child()))
+  if (const std::optional<std::string> why =
+          plugin::probe_load(path, file, settings, limit_of_child()))
     refuse(path, "cannot load: " + not_loaded(file, *why));
   void* lib = nullptr;
   {
@@ -110,6 +133,11 @@ fdh_plugin entry_struct(const std::string& path) {
   }
   if (!lib) refuse(path, "cannot load: " + not_loaded(file, ::dlerror()));
   const auto [entry, entry_name] = entry_point(lib, path);
+  if (const std::optional<std::string> why = plugin::call_init(lib, path, settings))
+    refuse(path, *why);
+  flags = plugin::call_flags(lib, path);
+  if (flags & ~FDH_PLUGIN_THREAD_SAFE)
+    refuse(path, "fdh_plugin_flags() has bits this fdhcert does not know (FDH_PLUGIN_* only)");
   const CallSite site{path.c_str(), entry_name};
   const fdh_plugin* returned = nullptr;
   {
@@ -194,7 +222,7 @@ QueryToi query_toi(const LoadedPtr& p, fdh_toi_fn f, const char* function) {
 Method query_method(const LoadedPtr& p) {
   Method m;
   m.name = p->name;
-  m.one_thread = true;  // docs/plugins.md: called from one thread
+  m.one_thread = p->one_thread();  // docs/plugins.md: one thread unless it says it is safe
   m.summary = std::string(p->api.summary ? p->api.summary : "") + " (plug-in " + p->path + ")";
   m.promise = Promise(p->api.promise == FDH_PROMISE_EXACT          ? Promise::Exact
                       : p->api.promise == FDH_PROMISE_CONSERVATIVE ? Promise::Conservative
@@ -224,7 +252,7 @@ Method query_method(const LoadedPtr& p) {
 BoxMethod box_method(const LoadedPtr& p, int k) {
   BoxMethod b;
   b.name = p->name;
-  b.one_thread = true;
+  b.one_thread = p->one_thread();
   b.summary = std::string(p->api.summary ? p->api.summary : "") + " (plug-in " + p->path + ")";
   b.k = k;
   b.directions = kdop_directions(k);  // the ABI's order (docs/plugins.md)
@@ -255,7 +283,7 @@ BoxMethod box_method(const LoadedPtr& p, int k) {
 
 }  // namespace
 
-void load_plugin(const std::string& path) {
+void load_plugin(const std::string& path, const PluginSettings& settings) {
   plugin::install_crash_handlers();
   plugin::catch_exit(path);
   plugin::divert_stdout();
@@ -267,7 +295,8 @@ void load_plugin(const std::string& path) {
     refuse(path, "given twice: the same file as an earlier --plugin");
   auto loaded = std::make_shared<Loaded>();
   loaded->path = path;
-  loaded->api = entry_struct(path);
+  loaded->settings = settings;
+  loaded->api = entry_struct(path, settings, loaded->flags);
   loaded->name = loaded->api.name;
   const LoadedPtr p = loaded;
   std::vector<Method> methods;
@@ -284,6 +313,11 @@ void load_plugin(const std::string& path) {
   }
   plugin::probe(p->name, methods, boxes, limit_of_child());
   if (known) files.push_back(id);
+  loaded_list().push_back({path, p->name, settings, !p->one_thread()});
+}
+
+std::vector<LoadedPlugin> loaded_plugins() {
+  return loaded_list();
 }
 
 void set_plugin_timeout(double seconds) {
@@ -292,6 +326,7 @@ void set_plugin_timeout(double seconds) {
 
 void end_plugin_run() {
   loaded_files().clear();
+  loaded_list().clear();
   plugin::restore_stdout();
   plugin::run_finished();
 }

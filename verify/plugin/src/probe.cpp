@@ -18,6 +18,7 @@
 #include "fdh/os/child_process.hpp"
 #include "fdh/plugin/loader.hpp"
 #include "guard.hpp"
+#include "init_call.hpp"
 
 namespace fdh::verify::plugin {
 namespace {
@@ -143,7 +144,8 @@ std::optional<std::string> own_report(const Said& said) {
 }
 
 // The load child: dlopen (its constructors run), then the entry point; "ok" or dlerror's words.
-[[noreturn]] void load_child(int fd, const std::string& path, const std::string& file) {
+[[noreturn]] void load_child(int fd, const std::string& path, const std::string& file,
+                             const PluginSettings& settings) {
   set_crash_report_fd(fd);
   const CallSite loading{path.c_str(), "dlopen (its constructors)"};
   void* lib = nullptr;
@@ -156,6 +158,9 @@ std::optional<std::string> own_report(const Said& said) {
     write_all(fd, std::string("dlerror ") + (why ? why : "unknown error"));
     ::_exit(0);
   }
+  // A refusal is the parent's to report (it calls init again); a crash is reported here.
+  call_init(lib, path, settings);
+  call_flags(lib, path);
   for (const char* name : {"fdh_plugin_v2", "fdh_plugin_v1"})
     if (void* f = ::dlsym(lib, name)) {
       const CallSite entry{path.c_str(), name};
@@ -170,8 +175,9 @@ std::optional<std::string> own_report(const Said& said) {
 }  // namespace
 
 std::optional<std::string> probe_load(const std::string& path, const std::string& file,
-                                      double seconds) {
-  const Said said = talk("plug-in " + path, seconds, [&](int fd) { load_child(fd, path, file); });
+                                      const PluginSettings& settings, double seconds) {
+  const Said said =
+      talk("plug-in " + path, seconds, [&](int fd) { load_child(fd, path, file, settings); });
   if (!said.text)
     throw PluginLoadError("plug-in " + path + ": cannot load: it did not finish loading within " +
                           std::to_string(int(seconds)) + " s (docs/plugins.md)");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fdh/check/registry.hpp"
+#include "fdh/plugin/loader.hpp"
 
 namespace fdh::verify::plugin {
 
@@ -17,11 +18,12 @@ namespace fdh::verify::plugin {
 void probe(const std::string& plugin, const std::vector<Method>& methods,
            const std::vector<BoxMethod>& boxes, double seconds = 10);
 
-// Loads `file` (plug-in `path`) in a child and calls its entry point, so that a constructor or a
+// Loads `file` (plug-in `path`) in a child and calls its fdh_plugin_init with `settings` (if it
+// has one), its fdh_plugin_flags and its entry point, so that a constructor or a
 // cut file that crashes, hangs or calls exit() is a PluginLoadError ("plug-in PATH: cannot load:
 // crashed (SIGSEGV) in dlopen (its constructors)") and fdhcert lives on to say it. Returns
 // dlerror's words when dlopen failed in the child, nullopt when it loaded.
 std::optional<std::string> probe_load(const std::string& path, const std::string& file,
-                                      double seconds);
+                                      const PluginSettings& settings, double seconds);
 
 }  // namespace fdh::verify::plugin

@@ -8,8 +8,9 @@
  * fdh_plugin_v1 instead, with abi_version 1 and the struct up to kdop: it still loads, unchanged,
  * and gives no time of impact. `fdhcert classify|fuzz|replay|certify
  * --plugin lib.so` loads it and runs its functions like the built-in methods, against the
- * exact twin of each decision, under the promise it declares. Plain C: it compiles as C and
- * as C++. */
+ * exact twin of each decision, under the promise it declares. It may also export
+ * fdh_plugin_init (settings) and fdh_plugin_flags (thread safety), below. Plain C: it compiles
+ * as C and as C++. */
 #ifndef FDH_PLUGIN_H
 #define FDH_PLUGIN_H
 
@@ -95,6 +96,30 @@ struct fdh_plugin {
  * plug-in of ABI version 1 (abi_version 1; fdhcert looks for v2 first). */
 const struct fdh_plugin* fdh_plugin_v2(void);
 const struct fdh_plugin* fdh_plugin_v1(void);
+
+/* Optional exports of either version, found by name (dlsym): a plug-in without them loads and
+ * runs as before. fdhcert calls them once per load, in this order, before the entry point:
+ *
+ *   fdh_plugin_init(n, keys, values): the settings of `--plugin FILE:key=value,key2=value2`, in
+ *     the order given (n = 0 without settings; keys unique, each non-empty; the strings live
+ *     only during the call). Return NULL to accept them, or a string saying why not (it must
+ *     stay valid until the next call into the plug-in: a string literal or a static buffer):
+ *     fdhcert then stops with that reason and exit status 2. A plug-in that takes settings must
+ *     export it; settings given to one that does not are refused the same way.
+ *   fdh_plugin_flags(): FDH_PLUGIN_* bits, read after fdh_plugin_init.
+ *
+ * Both run in fdhcert's process and in its probing children (docs/plugins.md). */
+typedef const char* (*fdh_plugin_init_fn)(size_t n, const char* const* keys,
+                                          const char* const* values);
+const char* fdh_plugin_init(size_t n, const char* const* keys, const char* const* values);
+
+/* A bit of fdh_plugin_flags(): every function of the plug-in may be called from several threads
+ * at once. fdhcert's checks then run on every core (--threads); without it, a loaded plug-in
+ * keeps them on one thread. */
+#define FDH_PLUGIN_THREAD_SAFE 1u
+
+typedef unsigned (*fdh_plugin_flags_fn)(void);
+unsigned fdh_plugin_flags(void);
 
 #ifdef __cplusplus
 }

@@ -6,15 +6,26 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fdh/check/checker.hpp"
 #include "fdh/check/metamorphic.hpp"
 #include "fdh/check/registry.hpp"
+#include "fdh/os/budget.hpp"
 #include "fdh/os/progress.hpp"
 #include "fdh/peer_certify/peer_certify.hpp"
 
 namespace fdh::verify {
+
+// A plug-in the run loaded (docs/plugins.md), as the certificate records it: its file, its
+// method name, the settings given to its fdh_plugin_init and whether it declared itself
+// thread-safe.
+struct CertifiedPlugin {
+  std::string file, name;
+  std::vector<std::pair<std::string, std::string>> settings;
+  bool thread_safe = false;
+};
 
 struct CertifyOptions {
   bool quick = false;
@@ -33,6 +44,10 @@ struct CertifyOptions {
   // Hears the work as it goes: the stage ("corpus", "generator families", "scenes", ...), how
   // much of it is done and of how much (0: unknown). May be empty.
   ProgressSink progress;
+  // Stops the stages at a clean point once spent (between queries and between the transforms
+  // of one); what was not reached is listed in Certificate::cut_short.
+  Budget budget;
+  std::vector<CertifiedPlugin> plugins;  // recorded in the certificate
 };
 
 // One method's promise on one decision, checked against the exact twin (check/checker.hpp).
@@ -96,8 +111,12 @@ struct Certificate {
   // stored ones replayed from corpus_dir/peers/. Only the own rows count as checks here.
   PeersReport peers;
   std::string first_violation;  // what went wrong first, and the file it was saved to
+  // The stages the budget cut short, in run order: how far each got. Not empty: the checks
+  // above cover part of the inputs only, and the certificate certifies nothing.
+  std::vector<BudgetCut> cut_short;
 
-  bool certified() const { return first_violation.empty(); }
+  bool complete() const { return cut_short.empty(); }
+  bool certified() const { return first_violation.empty() && complete(); }
   // Every check counted above (metamorphic: exact methods' invariance, promised methods'
   // judged transformed queries).
   long checks() const;
@@ -109,6 +128,10 @@ struct Certificate {
 Certificate certify(const CertifyOptions& options);
 
 std::string certificate_json(const Certificate& c);
+
+// A cut in words: "corpus: 12 of 2,824 queries", "metamorphic: 1,200 transformed queries
+// checked", "peers: not run".
+std::string cut_words(const BudgetCut& cut);
 std::string certificate_markdown(const Certificate& c);
 
 // certificate.json and certificate.md, each written whole, into c.options.out_dir.

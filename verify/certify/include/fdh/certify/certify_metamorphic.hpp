@@ -39,9 +39,11 @@ class MetamorphicCertifier {
   // transform keeps. Returns the first violation: of the methods in order, a promise broken
   // under a transform, else a verdict change of a method held to invariance
   // (MetamorphicCheck::held). Safe to call from several threads at once (each with its own rows)
-  // when the methods are (registry.hpp).
+  // when the methods are (registry.hpp). Once `budget` is spent, stops between two transformed
+  // queries (fdh/os/budget.hpp).
   std::optional<Violation> check(const Query& q, bool twin, std::vector<MetamorphicCheck>& rows,
-                                 std::vector<TransformCount>& transforms) const;
+                                 std::vector<TransformCount>& transforms,
+                                 const Budget& budget = {}) const;
   // The same without the transforms' counts.
   std::optional<Violation> check(const Query& q, bool twin,
                                  std::vector<MetamorphicCheck>& rows) const;

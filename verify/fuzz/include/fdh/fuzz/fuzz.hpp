@@ -36,6 +36,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "fdh/os/budget.hpp"
 #include "fdh/os/progress.hpp"
 
 namespace fdh::verify {
@@ -67,6 +68,10 @@ struct FuzzOptions {
   // How long to wait for OUT's lock before refusing: a killed run's workers die within
   // moments of it, and hold the lock until they have.
   double lock_wait_seconds = 3;
+  // Once spent, shrinking stops (the case is stored as far as it shrank) and the workers stop
+  // after the case in hand; the cases done are marked, so the same command resumes the rest.
+  // Not part of the run's parameters.
+  Budget budget;
 };
 
 struct FuzzSummary {
@@ -80,6 +85,10 @@ struct FuzzSummary {
   // "early"; with --metamorphic "metamorphic". Cases of a run resumed from before classes were
   // named count as "disagrees".
   std::map<std::string, long> by_class;
+  // The budget ran out: cases [first, last) were not all run (`cases` counts those that were),
+  // and `shrink_cut` cases were stored less shrunk than they could have been.
+  bool cut = false;
+  long shrink_cut = 0;
 };
 
 // The run cannot start on this OUT: another run holds it, or OUT holds an unfinished run with

@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace fdh::verify {
 
@@ -31,7 +33,20 @@ inline constexpr int kPluginFailureStatus = 3;
 // reported as the plug-in's (exit status kPluginFailureStatus), fd 1 is standard error while
 // fdhcert's own output (std::cout) goes to the real standard output, and each call has a time
 // limit (set_plugin_timeout).
-void load_plugin(const std::string& path);
+// `settings` go to the plug-in's fdh_plugin_init (fdh/plugin.h) before its entry point, in this
+// process and in the probing children; a refusal, settings given to a plug-in without
+// fdh_plugin_init, an empty key or a key given twice is a PluginLoadError.
+using PluginSettings = std::vector<std::pair<std::string, std::string>>;
+void load_plugin(const std::string& path, const PluginSettings& settings = {});
+
+// A plug-in loaded in this run: its file as given, its method name, its settings and whether it
+// declared itself thread-safe (FDH_PLUGIN_THREAD_SAFE), in the order loaded.
+struct LoadedPlugin {
+  std::string file, name;
+  PluginSettings settings;
+  bool thread_safe = false;
+};
+std::vector<LoadedPlugin> loaded_plugins();
 
 // The default of --plugin-timeout: seconds one plug-in call may take.
 inline constexpr double kDefaultPluginTimeout = 5;

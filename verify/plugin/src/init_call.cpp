@@ -1,0 +1,41 @@
+#include "init_call.hpp"
+
+#include <dlfcn.h>
+
+#include <vector>
+
+#include "fdh/plugin.h"
+#include "guard.hpp"
+
+namespace fdh::verify::plugin {
+
+std::optional<std::string> call_init(void* lib, const std::string& path,
+                                     const PluginSettings& settings) {
+  const auto init = reinterpret_cast<fdh_plugin_init_fn>(::dlsym(lib, "fdh_plugin_init"));
+  if (!init) {
+    if (settings.empty()) return std::nullopt;
+    return "it takes no settings (it exports no fdh_plugin_init), but " + settings.front().first +
+           "=... was given";
+  }
+  std::vector<const char*> keys, values;
+  for (const auto& [key, value] : settings)
+    keys.push_back(key.c_str()), values.push_back(value.c_str());
+  const CallSite site{path.c_str(), "fdh_plugin_init"};
+  std::optional<std::string> refused;
+  {
+    const InCall in(site);  // reading its words may crash too
+    if (const char* why = init(settings.size(), keys.data(), values.data())) refused = why;
+  }
+  if (!refused) return std::nullopt;
+  return "fdh_plugin_init refused its settings: " + *refused;
+}
+
+unsigned call_flags(void* lib, const std::string& path) {
+  const auto flags = reinterpret_cast<fdh_plugin_flags_fn>(::dlsym(lib, "fdh_plugin_flags"));
+  if (!flags) return 0;
+  const CallSite site{path.c_str(), "fdh_plugin_flags"};
+  const InCall in(site);
+  return flags();
+}
+
+}  // namespace fdh::verify::plugin
