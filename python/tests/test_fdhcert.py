@@ -79,6 +79,23 @@ def test_classify_of_files_gives_the_programs_tallies(name):
     assert without_times(fdhcert.classify([str(DATA / name)])) == without_times(cli)
 
 
+def test_classify_time_gives_the_programs_cpu_time_fields():
+    """`classify(time=True)` is `classify --time --json`: per method median <= p90 <= max."""
+    mine = fdhcert.classify([str(DATA / "moving.vf")], methods=["exact", "robust", "paper-literal"],
+                            time=True, rounds=2)
+    cli = json.loads(program("classify", DATA / "moving.vf", "--methods",
+                             "exact,robust,paper-literal", "--time", "--rounds", "2",
+                             "--json").stdout)
+    assert mine["cpu_time"]["rounds"] == cli["cpu_time"]["rounds"] == 2
+    for name, t in mine["cpu_time"]["methods"].items():
+        assert t.keys() == cli["cpu_time"]["methods"][name].keys()
+        assert t["queries"] == cli["cpu_time"]["methods"][name]["queries"]
+    robust = mine["cpu_time"]["methods"]["robust"]
+    assert 0 < robust["median_ns"] <= robust["p90_ns"] <= robust["max_ns"]
+    assert mine["cpu_time"]["methods"]["paper-literal"]["max_ns"] is None
+    assert "cpu_time" not in fdhcert.classify([str(DATA / "moving.vf")])
+
+
 def test_classify_of_arrays_gives_the_programs_tallies(scratch):
     kinds, points, truths = read_vf(DATA / "static.vf")
     keep = [i for i, t in enumerate(truths) if t >= 0]

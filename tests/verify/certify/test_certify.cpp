@@ -89,15 +89,22 @@ TEST(Certify, AMetamorphicChangeBreaksOnlyAPromise) {
   Query q;
   q.x = {Vec3{1, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
          Vec3{1, 0, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  const std::optional<std::string> broken = cert.check(q, twin_hit(q), rows);
+  const auto broken = cert.check(q, twin_hit(q), rows);
   ASSERT_TRUE(broken);
-  EXPECT_EQ(broken->rfind("promised says hit here and no after axes-", 0), 0u) << *broken;
+  // The promised method's answer after the axis swap breaks its promise (the twin, which the
+  // transform keeps, says hit): judged first, the transformed query saved.
+  EXPECT_EQ(broken->what.rfind("promised says no, the exact twin says hit after axes-", 0), 0u)
+      << broken->what;
+  EXPECT_NE(broken->saved.x, q.x);
   EXPECT_GT(rows[0].violations, 0);
   EXPECT_EQ(rows[0].violations, rows[1].violations);
   EXPECT_GT(rows[0].checked, rows[0].violations);
+  EXPECT_EQ(rows[0].judged, 0);  // no promise: counted only
+  EXPECT_EQ(rows[1].judged, rows[1].checked);
+  EXPECT_EQ(rows[1].broken, rows[1].violations);  // every change is away from the twin's hit
   Certificate c;
   c.metamorphic = rows;
-  EXPECT_EQ(c.violations(), rows[1].violations);  // the promised row only
+  EXPECT_EQ(c.violations(), rows[1].violations + rows[1].broken);  // the promised row only
 }
 
 TEST(Certify, AWrongStoredTruthIsAViolationSavedAsACorpusFile) {

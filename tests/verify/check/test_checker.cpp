@@ -56,9 +56,52 @@ TEST(Checker, CatchesABrokenPromise) {
   EXPECT_FALSE(v.said);
   EXPECT_TRUE(v.twin);
   EXPECT_FALSE(v.kept);
-  EXPECT_EQ(describe(liar, v), "never-hit says no, the exact twin says hit");
+  EXPECT_EQ(describe(liar, v),
+            "never-hit says no, the exact twin says hit: misses a hit (breaks EXACT)");
   EXPECT_TRUE(check(constant(true, Promise::Conservative), passing()).kept);
   EXPECT_FALSE(check(constant(false, Promise::Conservative), crossing()).kept);
+}
+
+// Each disagreement is named by its direction and judged by the promise: a miss breaks
+// CONSERVATIVE, a false alarm is allowed by it, both break EXACT, and without a promise neither
+// is judged.
+TEST(Checker, DisagreementsAreJudgedByThePromise) {
+  EXPECT_EQ(disagreement_of(false, true), Disagreement::Miss);
+  EXPECT_EQ(disagreement_of(true, false), Disagreement::FalseAlarm);
+  EXPECT_EQ(disagreement_of(true, true), Disagreement::None);
+  EXPECT_EQ(judge(Promise::Conservative, false, true), Judgement::Broken);
+  EXPECT_EQ(judge(Promise::Conservative, true, false), Judgement::Allowed);
+  EXPECT_EQ(judge(Promise::Exact, true, false), Judgement::Broken);
+  EXPECT_EQ(judge(Promise::None, false, true), Judgement::Unpromised);
+  EXPECT_EQ(judge(Promise::None, true, true), Judgement::Kept);
+
+  const Method misses = constant(false, Promise::Conservative);
+  const Method alarms = constant(true, Promise::Conservative);
+  EXPECT_EQ(verdict_words(misses, false, true, "f.vf:2"),
+            "never-hit misses a hit at f.vf:2 (breaks CONSERVATIVE)");
+  EXPECT_EQ(verdict_words(alarms, true, false, "f.vf:3"),
+            "always-hit gives a false alarm at f.vf:3 (allowed: conservative)");
+  EXPECT_EQ(verdict_words(constant(true, Promise::Exact), true, false),
+            "always-hit gives a false alarm (breaks EXACT)");
+  EXPECT_EQ(verdict_words(constant(false, Promise::None), false, true, "f.vf:1"),
+            "never-hit answers no where exact says hit at f.vf:1 (no promise)");
+  EXPECT_EQ(verdict_words(alarms, true, true, "f.vf:1"), "");
+  EXPECT_EQ(describe(alarms, check(alarms, passing())),
+            "always-hit says hit, the exact twin says no: gives a false alarm (allowed: "
+            "conservative)");
+
+  DisagreementTally t;
+  t.add(Promise::Conservative, false, true);
+  t.add(Promise::Conservative, true, false);
+  t.add(Promise::Conservative, true, false);
+  t.add(Promise::Conservative, true, true);
+  DisagreementTally none;
+  none.add(Promise::None, false, true);
+  t.merge(none);
+  EXPECT_EQ(t.misses, 2);
+  EXPECT_EQ(t.false_alarms, 2);
+  EXPECT_EQ(t.broken, 1);
+  EXPECT_EQ(t.allowed, 2);
 }
 
 TEST(Checker, EveryPromisedMethodKeepsItOnTheHandMadeCases) {
@@ -200,6 +243,28 @@ TEST(Checker, TimePromisesAllowWhatTheySay) {
   EXPECT_FALSE(check_time(timed({true, 0, 0}, TimePromise::Enclosure), p, w).kept);
   // Garbage breaks either promise.
   EXPECT_FALSE(check_with({true, 0.75, 0.25}, TimePromise::NeverLate).kept);
+}
+
+// A time's finding is judged by the time promise: late breaks it, earliness is allowed by
+// never-late (in words that name how early, not the enclosure never-late says nothing of).
+TEST(Checker, TimeFindingsAreJudgedByThePromise) {
+  const Query q = crossing();
+  const auto words = [&](Toi said, TimePromise p) {
+    const Method m = timed(said, p);
+    return judged_time_words(m, check_time(m, q, 0x1p-30));
+  };
+  const Toi late{true, 0.75, 0.75};
+  EXPECT_EQ(words(late, TimePromise::NeverLate),
+            "timed's TOI is late: t_lo = 0.75 > t* ~ 0.5 (breaks never-late)");
+  EXPECT_EQ(words(late, TimePromise::Enclosure),
+            "timed's TOI is late: t_lo = 0.75 > t* ~ 0.5 (breaks exact-enclosure)");
+  EXPECT_EQ(words(late, TimePromise::None),
+            "timed's TOI is late: t_lo = 0.75 > t* ~ 0.5 (no promise)");
+  EXPECT_EQ(words({true, 0.25, 0.75}, TimePromise::NeverLate),
+            "timed's TOI is early by 0.25 of the step, t* ~ 0.5 (allowed: never-late)");
+  EXPECT_EQ(words({true, 0.5, 0.5}, TimePromise::Enclosure), "");
+  const Method wide = timed({true, 0.25, 0.75}, TimePromise::Enclosure);
+  EXPECT_EQ(judge(wide, check_time(wide, q, 0x1p-30)), Judgement::Broken);
 }
 
 TEST(Checker, TheTimeTallyCountsLateEarlyAndZero) {

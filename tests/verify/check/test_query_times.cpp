@@ -40,6 +40,31 @@ TEST(QueryTimes, RatiosPerDecision) {
   EXPECT_DOUBLE_EQ(r[3].max, 1.0);  // exact over itself
 }
 
+// The spread of each method's times: lower median, nearest-rank 90th percentile and maximum
+// over the queries it applies to (0 where it does not).
+TEST(QueryTimes, SpreadsPerMethod) {
+  const std::vector<Method> methods = select_methods({"robust", "paper-intended"});
+  std::vector<double> robust;
+  for (int i = 1; i <= 20; ++i) robust.push_back(double(21 - i));  // 20, 19, ..., 1
+  const std::vector<std::vector<double>> times = {robust, std::vector<double>(20, 0)};
+  const std::vector<TimeSpread> s = time_spreads(times, methods);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].method, "robust");
+  EXPECT_EQ(s[0].queries, 20u);
+  EXPECT_DOUBLE_EQ(s[0].median, 10);  // the 10th of 20
+  EXPECT_DOUBLE_EQ(s[0].p90, 18);     // the 18th of 20
+  EXPECT_DOUBLE_EQ(s[0].max, 20);
+  EXPECT_EQ(s[0].slowest, 0u);
+  EXPECT_EQ(s[1].queries, 0u);
+  EXPECT_EQ(s[1].max, 0);
+  // One query: all three are its time.
+  const std::vector<TimeSpread> one = time_spreads({{0, 7}}, {methods[0]});
+  EXPECT_EQ(one[0].queries, 1u);
+  EXPECT_DOUBLE_EQ(one[0].median, 7);
+  EXPECT_DOUBLE_EQ(one[0].p90, 7);
+  EXPECT_EQ(one[0].slowest, 1u);
+}
+
 TEST(QueryTimes, EveryApplicableQueryGetsATime) {
   const std::vector<Query> qs = {moving_vf(0.5), static_vf()};
   const std::vector<Method> methods = select_methods({"robust", "paper-intended"});

@@ -149,7 +149,8 @@ TEST(Cli, ClassifyJson) {
   EXPECT_EQ(j["gate"], 0);
   EXPECT_EQ(keys(j["methods"]), (std::vector<std::string>{"exact", "robust"}));
   const auto& exact = j["methods"]["exact"];
-  EXPECT_EQ(keys(exact), (std::vector<std::string>{"tp", "tn", "fp", "fn", "na", "ns_per_query"}));
+  EXPECT_EQ(keys(exact), (std::vector<std::string>{"tp", "tn", "fp", "fn", "na", "ns_per_query",
+                                                   "promise", "against_exact"}));
   EXPECT_EQ(exact["tp"], 2);
   EXPECT_EQ(exact["tn"], 2);
   EXPECT_EQ(exact["fp"], 0);
@@ -169,10 +170,12 @@ TEST(Cli, ClassifyMovingShowsNotApplicable) {
   EXPECT_EQ(j["edge_edge"], 2);
   EXPECT_EQ(j["methods"]["robust"],
             Json::parse(R"({"tp": 2, "tn": 1, "fp": 0, "fn": 0, "na": 0, "ns_per_query": )" +
-                        j["methods"]["robust"]["ns_per_query"].dump() + "}"));
+                        j["methods"]["robust"]["ns_per_query"].dump() +
+                        R"(, "promise": "exact", "against_exact": {"misses": 0,
+                            "false_alarms": 0, "broken": 0, "allowed": 0}})"));
   EXPECT_EQ(j["methods"]["paper-literal"],
             Json::parse(R"({"tp": null, "tn": null, "fp": null, "fn": null, "na": 3,
-                            "ns_per_query": null})"));
+                            "ns_per_query": null, "promise": "none", "against_exact": null})"));
   const CliRun table = fdhcert({"classify", kData + "moving.vf", kData + "static.vf"});
   ASSERT_EQ(table.status, 0) << table.err;
   EXPECT_NE(table.out.find("total: 4 static vertex-face, 1 moving vertex-face, 2 edge-edge"),

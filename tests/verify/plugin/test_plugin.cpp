@@ -109,7 +109,15 @@ TEST(Plugin, CertifyCatchesAPlugInThatBreaksItsPromise) {
       fdhcert({"certify", "--plugin", faulty("broken-promise"), "--corpus", corpus.string(),
                "--out", out.string(), "--per-family", "5", "--soups", "0", kData + "static.vf"});
   EXPECT_EQ(r.status, 1) << r.err;
-  EXPECT_TRUE(has(r.err, "broken-promise says no, the exact twin says hit")) << r.err;
+  // In the checker's words, which promise broke: on standard error and in the certificate.
+  const std::string words =
+      "broken-promise says no, the exact twin says hit: misses a hit "
+      "(breaks EXACT)";
+  EXPECT_TRUE(has(r.err, words)) << r.err;
+  EXPECT_TRUE(has(text_of(out / "certificate.md"), "**Violated**: " + words));
+  EXPECT_TRUE(has(nlohmann::json::parse(text_of(out / "certificate.json"))["first_violation"]
+                      .get<std::string>(),
+                  words));
 }
 
 TEST(Plugin, ReplayAndFuzzRunThePlugIn) {

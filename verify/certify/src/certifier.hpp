@@ -42,6 +42,7 @@ struct CertifyTally {
   std::vector<TimePromiseCheck> times;
   std::vector<BoxCheck> boxes;
   std::vector<MetamorphicCheck> metamorphic;
+  std::vector<TransformCount> transforms;  // the metamorphic transforms applied and skipped
   long truths = 0, truth_violations = 0;
   long queries = 0;  // the queries checked (certify counts them per source)
   // The first violation: its words, and the case file that shows it (a name in out_dir and
@@ -67,6 +68,12 @@ struct CertifyTally {
     for (std::size_t i = 0; i < metamorphic.size(); ++i) {
       metamorphic[i].checked += later.metamorphic[i].checked;
       metamorphic[i].violations += later.metamorphic[i].violations;
+      metamorphic[i].judged += later.metamorphic[i].judged;
+      metamorphic[i].broken += later.metamorphic[i].broken;
+    }
+    for (std::size_t i = 0; i < transforms.size(); ++i) {
+      transforms[i].applied += later.transforms[i].applied;
+      transforms[i].skipped += later.transforms[i].skipped;
     }
     truths += later.truths, truth_violations += later.truth_violations;
     queries += later.queries;
@@ -93,6 +100,7 @@ class Certifier {
       zero_.boxes.back().tree = b.builds_tree;
     }
     zero_.metamorphic = metamorphic_.rows();
+    zero_.transforms = transform_counts();
     total_ = zero_;
     write_counts();
   }
@@ -136,7 +144,7 @@ class Certifier {
   // The certificate's rows and counts are total_'s.
   void write_counts() {
     c_.promises = total_.promises, c_.boxes = total_.boxes, c_.metamorphic = total_.metamorphic;
-    c_.times = total_.times;
+    c_.times = total_.times, c_.metamorphic_transforms = total_.transforms;
     c_.truths = total_.truths, c_.truth_violations = total_.truth_violations;
   }
 
@@ -150,8 +158,11 @@ class Certifier {
     }
     const bool twin = twin_hit(q);
     check_truth(r, twin, t);
-    if (const std::optional<std::string> broken = metamorphic_.check(q, twin, t.metamorphic))
-      violation(with_truth(r, twin), *broken, t);
+    if (const auto broken = metamorphic_.check(q, twin, t.metamorphic, t.transforms)) {
+      QueryRecord saved = with_truth(r, twin);  // the truth, id and place of q: the transform's
+      saved.query = broken->saved;
+      violation(saved, broken->what, t, broken->before(with_truth(r, twin)));
+    }
     const Decision d = decision_of(q);
     for (std::size_t i = 0; i < t.promises.size(); ++i) {
       PromiseCheck& p = t.promises[i];
@@ -179,7 +190,8 @@ class Certifier {
       const Method& m = named(timed_, row.method);
       const TimeCheck c = check_time(m, q, c_.options.toi_width, exact);
       row.tally.add(c, 0, 0);
-      if (!c.kept) violation(with_truth(r, twin), describe(m, c) + " (" + to_string(d) + ")", t);
+      if (!c.kept)
+        violation(with_truth(r, twin), judged_time_words(m, c) + " (" + to_string(d) + ")", t);
     }
   }
 
@@ -241,12 +253,16 @@ class Certifier {
     }
   }
 
-  static void violation(const QueryRecord& q, const std::string& what, CertifyTally& t) {
+  // `note`, if not empty, is a second comment in the saved case.
+  static void violation(const QueryRecord& q, const std::string& what, CertifyTally& t,
+                        const std::string& note = "") {
     if (t.first) return;
+    std::vector<std::string> comments = {"certify: " + what + "."};
+    if (!note.empty()) comments.push_back(note);
     t.first = CertifyTally::Found{
         what + " (query " + q.id + " from " +
             (q.file.empty() ? "a generator" : q.file + ":" + std::to_string(q.line)) + ")",
-        "violation-" + case_hash(q.query) + ".vf", case_file_text(q, {"certify: " + what + "."})};
+        "violation-" + case_hash(q.query) + ".vf", case_file_text(q, comments)};
   }
 
   // A missed pair is saved as an OBJ: A at t = 0, A at t = 1 (its swept leaves), and B.

@@ -3,7 +3,7 @@
 
 #include <utility>
 
-#include "fdh/check/metamorphic.hpp"
+#include "fdh/io/case_files.hpp"
 
 namespace fdh::verify {
 
@@ -16,21 +16,42 @@ std::vector<MetamorphicCheck> MetamorphicCertifier::rows() const {
   return rows;
 }
 
-std::optional<std::string> MetamorphicCertifier::check(const Query& q, bool twin,
-                                                       std::vector<MetamorphicCheck>& rows) const {
-  std::optional<std::string> broken;
-  const std::vector<Transformed> moved = transforms_of(q);
+std::optional<MetamorphicCertifier::Violation> MetamorphicCertifier::check(
+    const Query& q, bool twin, std::vector<MetamorphicCheck>& rows,
+    std::vector<TransformCount>& transforms) const {
+  std::optional<Violation> found;
+  const std::vector<Transformed> moved = transforms_of(q, &transforms);
   for (std::size_t i = 0; i < methods_.size(); ++i) {
     const Method& m = methods_[i];
     if (!m.applies_to(q)) continue;
-    std::optional<MetamorphicFailure> first;
+    MetamorphicFirsts first;
     const bool before = m.is_twin ? twin : m.hit(q);
-    const MetamorphicCount n = count_metamorphic(m, before, moved, &first);
-    rows[i].checked += n.checked;
-    rows[i].violations += n.violations;
-    if (first && rows[i].held() && !broken) broken = describe(m, *first) + " (metamorphic)";
+    const MetamorphicCount n = count_metamorphic(m, before, moved, twin, &first);
+    MetamorphicCheck& row = rows[i];
+    row.checked += n.checked, row.violations += n.violations;
+    row.judged += n.judged, row.broken += n.broken;
+    if (found) continue;
+    if (first.broken)
+      found = Violation{describe(m, *first.broken) + " (metamorphic, " +
+                            to_string(decision_of(first.broken->moved)) + ")",
+                        first.broken->moved, first.broken->transform};
+    else if (first.changed && row.held())
+      found = Violation{describe(m, *first.changed) + " (metamorphic)", q, ""};
   }
-  return broken;
+  return found;
+}
+
+std::string MetamorphicCertifier::Violation::before(const QueryRecord& original) const {
+  if (transform.empty()) return "";
+  std::string line = case_file_text(original, {});
+  while (!line.empty() && line.back() == '\n') line.pop_back();
+  return "before " + transform + ": " + line;
+}
+
+std::optional<MetamorphicCertifier::Violation> MetamorphicCertifier::check(
+    const Query& q, bool twin, std::vector<MetamorphicCheck>& rows) const {
+  std::vector<TransformCount> transforms = transform_counts();
+  return check(q, twin, rows, transforms);
 }
 
 }  // namespace fdh::verify

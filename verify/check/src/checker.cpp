@@ -1,6 +1,7 @@
 #include "fdh/check/checker.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <stdexcept>
 
@@ -117,9 +118,81 @@ std::vector<std::pair<int, int>> culled_pairs(std::vector<std::pair<int, int>> f
   return culled;
 }
 
+Disagreement disagreement_of(bool said, bool twin) {
+  if (said == twin) return Disagreement::None;
+  return said ? Disagreement::FalseAlarm : Disagreement::Miss;
+}
+
+Judgement judge(Promise p, bool said, bool twin) {
+  if (said == twin) return Judgement::Kept;
+  if (p == Promise::None) return Judgement::Unpromised;
+  return keeps_promise(p, said, twin) ? Judgement::Allowed : Judgement::Broken;
+}
+
+namespace {
+
+std::string judgement_words(Judgement j, const std::string& broken, const std::string& allowed) {
+  switch (j) {
+    case Judgement::Kept:
+      return "";
+    case Judgement::Broken:
+      return "(breaks " + broken + ")";
+    case Judgement::Allowed:
+      return "(allowed: " + allowed + ")";
+    case Judgement::Unpromised:
+      return "(no promise)";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string judgement_words(Judgement j, Promise p) {
+  std::string upper = to_string(p);
+  for (char& ch : upper) ch = char(std::toupper(static_cast<unsigned char>(ch)));
+  return judgement_words(j, upper, to_string(p));
+}
+
+std::string judgement_words(Judgement j, TimePromise p) {
+  return judgement_words(j, to_string(p), to_string(p));
+}
+
+namespace {
+
+// What a disagreement is: named as a fault where a promise judges it, plainly where none does.
+std::string disagreement_phrase(Promise p, bool said) {
+  if (p == Promise::None)
+    return said ? "answers hit where exact says no" : "answers no where exact says hit";
+  return said ? "gives a false alarm" : "misses a hit";
+}
+
+}  // namespace
+
+std::string verdict_words(const Method& m, bool said, bool twin, const std::string& where) {
+  const Judgement j = judge(m.promise, said, twin);
+  if (j == Judgement::Kept) return "";
+  return m.name + " " + disagreement_phrase(m.promise, said) +
+         (where.empty() ? "" : " at " + where) + " " + judgement_words(j, m.promise);
+}
+
+void DisagreementTally::add(Promise p, bool said, bool twin) {
+  const Disagreement d = disagreement_of(said, twin);
+  misses += d == Disagreement::Miss, false_alarms += d == Disagreement::FalseAlarm;
+  const Judgement j = judge(p, said, twin);
+  broken += j == Judgement::Broken, allowed += j == Judgement::Allowed;
+}
+
+void DisagreementTally::merge(const DisagreementTally& o) {
+  misses += o.misses, false_alarms += o.false_alarms, broken += o.broken, allowed += o.allowed;
+}
+
 std::string describe(const Method& m, const Verdicts& v) {
   const auto word = [](bool hit) { return hit ? "hit" : "no"; };
-  return m.name + " says " + word(v.said) + ", the exact twin says " + word(v.twin);
+  std::string out = m.name + " says " + word(v.said) + ", the exact twin says " + word(v.twin);
+  if (v.said == v.twin) return out;
+  if (m.promise == Promise::None) return out + " (no promise)";
+  return out + ": " + disagreement_phrase(m.promise, v.said) + " " +
+         judgement_words(judge(m.promise, v.said, v.twin), m.promise);
 }
 
 TimeTwin time_twin(const Query& q) {
@@ -231,6 +304,24 @@ std::string describe(const Method& m, const TimeCheck& c) {
   if (c.early > 0)
     return m.name + "'s TOI is early by " + number(c.early) + " of the step, " + t_star;
   return "";
+}
+
+Judgement judge(const Method& m, const TimeCheck& c) {
+  if (!c.kept) return Judgement::Broken;
+  if (describe(m, c).empty()) return Judgement::Kept;
+  return m.time_promise == TimePromise::None ? Judgement::Unpromised : Judgement::Allowed;
+}
+
+std::string judged_time_words(const Method& m, const TimeCheck& c) {
+  const Judgement j = judge(m, c);
+  if (j == Judgement::Kept) return "";
+  // A kept never-late promise says nothing of the verdict or the enclosure: its words name what
+  // it does speak of, how early.
+  TimeCheck spoken = c;
+  if (j == Judgement::Allowed && m.time_promise == TimePromise::NeverLate)
+    spoken.verdict_error = false, spoken.enclosed = true, spoken.too_wide = false;
+  const std::string words = describe(m, spoken);
+  return (words.empty() ? describe(m, c) : words) + " " + judgement_words(j, m.time_promise);
 }
 
 }  // namespace fdh::verify

@@ -94,6 +94,7 @@ Classification classify(const std::vector<Query>& queries,
   for (const Method& m : methods) {
     MethodResult r;
     r.name = m.name;
+    r.promise = m.promise;
     r.verdict = run_and_time(m, queries, r.tally.ns_per_query);
     for (std::size_t i = 0; i < queries.size(); ++i) {
       if (r.verdict[i] == kNotApplicable) {
@@ -102,6 +103,7 @@ Classification classify(const std::vector<Query>& queries,
       }
       const bool v = r.verdict[i], t = c.reference[i];
       (v ? (t ? r.tally.tp : r.tally.fp) : (t ? r.tally.fn : r.tally.tn))++;
+      r.against_exact.add(m.promise, v, c.exact[i]);
     }
     c.methods.push_back(std::move(r));
   }
@@ -121,7 +123,8 @@ Classification join(const std::vector<Classification>& parts) {
     all.exact.insert(all.exact.end(), c.exact.begin(), c.exact.end());
     for (const std::size_t i : c.exact_vs_file) all.exact_vs_file.push_back(offset + i);
     if (all.methods.empty())
-      for (const MethodResult& m : c.methods) all.methods.push_back({m.name, {}, {}});
+      for (const MethodResult& m : c.methods)
+        all.methods.push_back({m.name, {}, {}, m.promise, {}});
     for (std::size_t k = 0; k < c.methods.size(); ++k) {
       Tally& t = all.methods[k].tally;
       const Tally& u = c.methods[k].tally;
@@ -129,6 +132,7 @@ Classification join(const std::vector<Classification>& parts) {
           t.ns_per_query * double(t.decided()) + u.ns_per_query * double(u.decided());
       t.tp += u.tp, t.tn += u.tn, t.fp += u.fp, t.fn += u.fn, t.na += u.na;
       t.ns_per_query = t.decided() ? time / double(t.decided()) : 0;
+      all.methods[k].against_exact.merge(c.methods[k].against_exact);
       auto& v = all.methods[k].verdict;
       v.insert(v.end(), c.methods[k].verdict.begin(), c.methods[k].verdict.end());
     }

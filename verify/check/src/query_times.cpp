@@ -26,9 +26,12 @@ double batch_ns(const Method& m, const Query& q, long calls) {
 }
 
 // Calls per batch: enough for about 50 us, the clock's own cost (a system call) about 1 %.
+// Doubled from one call until a batch fills that: sized by a single first call, which is slow
+// (cold caches), a fast method's batch was so short that the clock's cost counted many times.
 long batch_size(const Method& m, const Query& q) {
-  const double once = std::max(batch_ns(m, q, 1), 1.0);
-  return std::clamp(long(std::ceil(50000.0 / once)), 1L, 100000L);
+  long calls = 1;
+  while (calls < 100000 && batch_ns(m, q, calls) * double(calls) < 50000.0) calls *= 2;
+  return calls;
 }
 
 }  // namespace
@@ -74,6 +77,32 @@ std::vector<TimeRatio> time_ratios(const std::vector<Query>& queries,
       r.median = all[all.size() / 2];
       out.push_back(r);
     }
+  return out;
+}
+
+std::vector<TimeSpread> time_spreads(const std::vector<std::vector<double>>& times,
+                                     const std::vector<Method>& methods) {
+  std::vector<TimeSpread> out;
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    TimeSpread s{methods[m].name};
+    std::vector<double> all;
+    for (std::size_t i = 0; i < times[m].size(); ++i) {
+      const double t = times[m][i];
+      if (t <= 0) continue;
+      if (all.empty() || t > s.max) s.max = t, s.slowest = i;
+      all.push_back(t);
+    }
+    s.queries = all.size();
+    if (!all.empty()) {
+      std::sort(all.begin(), all.end());
+      // Nearest rank: the ceil(p n)-th smallest, so p = 1/2 is the lower median.
+      const auto rank = [&](std::size_t percent) {
+        return all[(percent * all.size() + 99) / 100 - 1];
+      };
+      s.median = rank(50), s.p90 = rank(90);
+    }
+    out.push_back(s);
+  }
   return out;
 }
 

@@ -31,8 +31,11 @@ under the method's promise, and counts every check:
     the peers' violations are counted and the first ones shrunk into
     DIR/peers/<library>/, and CORPUS/peers is replayed.
   - every method's verdict under each metamorphic transform of each query
-    (time reversal, axis order, translation, velocity, scale, relabelling):
-    counted per method; robust and the twin must change none.
+    (time reversal, axis order, translation, velocity, scale, relabelling;
+    the scales and translations span 2^-60 to 2^60, each applied only where
+    it is exact): counted per method; robust and the twin must change none,
+    and each method with a promise (conservative or exact) must keep it on
+    every transformed query, against the exact verdict the transform keeps.
 The queries: every *.vf under the corpus folder, N fuzzed queries of each
 generator family (static and moving), the narrow-phase queries of every
 shipped scene (CORPUS/scenes/*.scene run with robust; every 10th frame, or
@@ -46,6 +49,18 @@ GMP versions and the git commit. On any violation the first violating case is
 saved in DIR as a corpus file (a .vf query, or an .obj for a tree), named in
 the output, and the exit status is 1.)";
 
+// One line: the promised methods judged on the transformed queries, and the transforms skipped
+// as inexact.
+void print_judged_under_transforms(const Certificate& c, std::ostream& out) {
+  out << "promises under transforms (broken / judged):";
+  for (const MetamorphicCheck& m : c.metamorphic)
+    if (m.judged) out << " " << m.method << " " << m.broken << "/" << m.judged;
+  long applied = 0, skipped = 0;
+  for (const TransformCount& t : c.metamorphic_transforms)
+    applied += t.applied, skipped += t.skipped;
+  out << "; transforms applied " << applied << ", skipped as inexact " << skipped << "\n";
+}
+
 // One line: every method's verdict changes under the metamorphic transforms, of the
 // transformed queries checked.
 void print_metamorphic(const Certificate& c, std::ostream& out) {
@@ -53,6 +68,7 @@ void print_metamorphic(const Certificate& c, std::ostream& out) {
   for (const MetamorphicCheck& m : c.metamorphic)
     out << " " << m.method << " " << m.violations << "/" << m.checked;
   out << "\n";
+  print_judged_under_transforms(c, out);
 }
 
 int run_certify(const CertifyCommand& cmd, const Io& io) {

@@ -22,7 +22,8 @@ Every disagreement is shrunk to a minimal case: RapidCheck's shrink tree, then
 a greedy pass that stops motion, moves the case toward the origin and
 shortens coordinates while M still fails in the same direction (a false alarm
 stays a false alarm, a miss a miss) on a query of the same kind (static,
-moving vertex-face or edge-edge, as drawn). Distinct cases are written to
+moving vertex-face or edge-edge, as drawn, no triangle or edge drawn whole
+collapsed to a point). Distinct cases are written to
 DIR/M/F/<direction>-<hash>.vf (direction fp: a false alarm, fn: a miss) in
 the native format, with the twin's verdict as the truth and a comment saying
 what M answered, the exact contact (its time, for a moving query) and the
@@ -32,9 +33,12 @@ With --metamorphic it looks instead for queries where M's verdict changes
 under a transform that keeps the truth (time reversal, axis order, mirror,
 dyadic translation or velocity, power-of-two scale, relabelled corners or
 ends; docs/methods.md): no oracle needed, so any method, the exact twin
-included. Such a query is shrunk while some transform still changes M's
-verdict, and stored in DIR/metamorphic/M/F/<hash>.vf with the twin's verdict
-as the truth and a comment naming the transform and both verdicts.
+included. A method with a promise (conservative or exact) is also judged on
+each transform against the twin's verdict, which the transforms keep: a
+broken promise there is found first. Such a query is shrunk while some
+transform still breaks M's promise (or changes its verdict), and stored in
+DIR/metamorphic/M/F/<hash>.vf with the twin's verdict as the truth and a
+comment naming the transform and both verdicts, or the promise broken.
 
 With --toi (moving families only) it checks M's time of impact instead: a
 finding is a contact missed, a time after the exact earliest contact t*

@@ -59,82 +59,152 @@ std::vector<QueryRecord> read_cases(const std::vector<std::string>& paths) {
   return cases;
 }
 
+// One method's cases against the stored truths, and each disagreement with the twin in the
+// checker's words (checker.hpp: verdict_words), counted by direction and by what the method's
+// promise makes of it.
+struct Failing {
+  std::string name;
+  Promise promise = Promise::None;
+  std::vector<std::string> cases;                 // where it differs from the stored truth
+  std::vector<std::string> words;                 // per case: the checker's words, or why none
+  std::vector<std::string> misses, false_alarms;  // against the twin
+  DisagreementTally tally;
+};
+
 // What replay found: the cases where the twin lost its stored truth, and per method (in the
 // order run) the cases it answers differently from the reference.
 struct Replay {
   std::vector<std::string> twin_mismatches;
-  std::vector<std::pair<std::string, std::vector<std::string>>> failing;
+  std::vector<Failing> failing;
   struct Times {
     std::string method;
-    std::vector<std::string> late, zero, early, broken;
+    TimePromise promise = TimePromise::None;
+    std::vector<std::string> late, zero, early, broken, allowed;
+    std::vector<std::string> words;  // per listed case: WHERE: the checker's judged words
   };
   std::vector<Times> times;  // with --toi: per method that gives a time
 };
 
-// The cases where each method's time is late, 0 too early, or breaks its promise (checker.hpp).
+// The cases where each method's time is late, 0 too early, or breaks its promise (checker.hpp),
+// and of those listed, the ones its time promise allows.
 void replay_times(const std::vector<QueryRecord>& cases, const std::vector<Query>& queries,
                   const std::vector<Method>& methods, const ReplayOptions& o, Replay& r) {
   const double width = o.width;
   const ToiClassification toi = classify_toi(queries, methods, width);
   for (const ToiResult& m : toi.methods) {
-    Replay::Times t{m.name, {}, {}, {}, {}};
     const Method& method = *std::find_if(methods.begin(), methods.end(),
                                          [&](const Method& x) { return x.name == m.name; });
+    Replay::Times t{m.name, method.time_promise, {}, {}, {}, {}, {}, {}};
     for (std::size_t i = 0; i < cases.size(); ++i) {
       if (!m.applies[i]) continue;
       const TimeCheck c = check_time_given(method, queries[i], width, m.said[i], toi.twin[i]);
-      if (c.late) t.late.push_back(where(cases[i]));
-      if (c.zero) t.zero.push_back(where(cases[i]));
-      if (c.early > o.tolerance) t.early.push_back(where(cases[i]));
-      if (!c.kept) t.broken.push_back(where(cases[i]));
+      const std::string w = where(cases[i]);
+      if (c.late) t.late.push_back(w);
+      if (c.zero) t.zero.push_back(w);
+      if (c.early > o.tolerance) t.early.push_back(w);
+      if (!c.kept) t.broken.push_back(w);
+      if (!c.late && !c.zero && !(c.early > o.tolerance) && c.kept) continue;
+      if (judge(method, c) == Judgement::Allowed) t.allowed.push_back(w);
+      t.words.push_back(w + ": " + judged_time_words(method, c));
     }
     r.times.push_back(std::move(t));
   }
 }
 
-Replay replay(const std::vector<QueryRecord>& cases, const Classification& c) {
+Failing failing_of(const std::vector<QueryRecord>& cases, const Classification& c,
+                   const MethodResult& m, const Method& method) {
+  Failing f{m.name, m.promise, {}, {}, {}, {}, {}};
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    if (m.verdict[i] == kNotApplicable) continue;
+    const bool said = m.verdict[i], twin = c.exact[i];
+    if (said != twin) {
+      f.tally.add(m.promise, said, twin);
+      (said ? f.false_alarms : f.misses).push_back(where(cases[i]));
+    }
+    if (m.verdict[i] == c.reference[i]) continue;
+    f.cases.push_back(where(cases[i]));
+    f.words.push_back(said == twin ? where(cases[i]) + ": as exact, against the stored truth"
+                                   : verdict_words(method, said, twin, where(cases[i])));
+  }
+  return f;
+}
+
+Replay replay(const std::vector<QueryRecord>& cases, const Classification& c,
+              const std::vector<Method>& methods) {
   Replay r;
   for (std::size_t i = 0; i < cases.size(); ++i)
     if (twin_matches_truth(stated(cases[i].truth), c.exact[i]) == std::optional<bool>(false))
       r.twin_mismatches.push_back(where(cases[i]));
-  for (const MethodResult& m : c.methods) {
-    std::vector<std::string> list;
-    for (std::size_t i = 0; i < cases.size(); ++i)
-      if (m.verdict[i] != kNotApplicable && m.verdict[i] != c.reference[i])
-        list.push_back(where(cases[i]));
-    r.failing.emplace_back(m.name, std::move(list));
-  }
+  for (std::size_t k = 0; k < c.methods.size(); ++k)
+    r.failing.push_back(failing_of(cases, c, c.methods[k], methods[k]));
   return r;
 }
 
-void print_replay(const Replay& r, std::size_t cases, bool json, std::ostream& out) {
-  if (json) {
-    nlohmann::ordered_json methods = nlohmann::ordered_json::object();
-    for (const auto& [name, list] : r.failing)
-      methods[name] = {{"failing", list.size()}, {"cases", list}};
-    nlohmann::ordered_json j = {
-        {"cases", cases}, {"exact_mismatches", r.twin_mismatches}, {"methods", methods}};
-    for (const Replay::Times& t : r.times)
-      j["toi"][t.method] = {
-          {"late", t.late}, {"zero", t.zero}, {"early", t.early}, {"broken", t.broken}};
-    print_json(out, j);
-    return;
+// {"misses": M, "false_alarms": F} of the disagreements that `j` judges.
+nlohmann::ordered_json by_direction(const Failing& f, Judgement j) {
+  const bool miss = judge(f.promise, false, true) == j, alarm = judge(f.promise, true, false) == j;
+  return {{"misses", miss ? f.misses.size() : 0},
+          {"false_alarms", alarm ? f.false_alarms.size() : 0}};
+}
+
+void print_replay_json(const Replay& r, std::size_t cases, std::ostream& out) {
+  nlohmann::ordered_json methods = nlohmann::ordered_json::object();
+  for (const Failing& f : r.failing)
+    methods[f.name] = {{"failing", f.cases.size()},
+                       {"cases", f.cases},
+                       {"promise", to_string(f.promise)},
+                       {"misses", f.misses},
+                       {"false_alarms", f.false_alarms},
+                       {"broken", by_direction(f, Judgement::Broken)},
+                       {"allowed", by_direction(f, Judgement::Allowed)},
+                       {"no_promise", by_direction(f, Judgement::Unpromised)}};
+  nlohmann::ordered_json j = {
+      {"cases", cases}, {"exact_mismatches", r.twin_mismatches}, {"methods", methods}};
+  for (const Replay::Times& t : r.times)
+    j["toi"][t.method] = {{"late", t.late},
+                          {"zero", t.zero},
+                          {"early", t.early},
+                          {"broken", t.broken},
+                          {"promise", to_string(t.promise)},
+                          {"allowed", t.allowed}};
+  print_json(out, j);
+}
+
+// "1 miss (breaks CONSERVATIVE); 3 false alarms (allowed: conservative)": a method's
+// disagreements with the twin, by what its promise makes of them and by direction.
+std::string kinds_of(const Failing& f) {
+  std::string out;
+  for (const Judgement j : {Judgement::Broken, Judgement::Allowed, Judgement::Unpromised}) {
+    const nlohmann::ordered_json n = by_direction(f, j);
+    const std::size_t misses = n["misses"], alarms = n["false_alarms"];
+    if (misses + alarms == 0) continue;
+    out += out.empty() ? "" : "; ";
+    if (misses) out += std::to_string(misses) + (misses == 1 ? " miss" : " misses");
+    if (misses && alarms) out += ", ";
+    if (alarms) out += std::to_string(alarms) + (alarms == 1 ? " false alarm" : " false alarms");
+    out += " " + judgement_words(j, f.promise);
   }
+  return out;
+}
+
+void print_replay(const Replay& r, std::size_t cases, bool json, std::ostream& out) {
+  if (json) return print_replay_json(r, cases, out);
   out << "replayed " << cases << " cases; exact "
       << (r.twin_mismatches.empty()
               ? "gives every stored truth"
               : "DISAGREES with " + std::to_string(r.twin_mismatches.size()) + " stored truths")
       << "\n";
-  for (const auto& [name, list] : r.failing) {
-    out << "  " << name << ": " << list.size() << " failing\n";
-    for (const std::string& w : list) out << "    " << w << "\n";
+  for (const Failing& f : r.failing) {
+    const std::string kinds = kinds_of(f);
+    out << "  " << f.name << ": " << f.cases.size() << " failing"
+        << (kinds.empty() ? "" : "; " + kinds) << "\n";
+    for (const std::string& w : f.words) out << "    " << w << "\n";
   }
   for (const Replay::Times& t : r.times) {
     out << "  " << t.method << " time of impact: " << t.late.size() << " late, " << t.zero.size()
-        << " zero, " << t.early.size() << " early, " << t.broken.size()
-        << " breaking its promise\n";
-    for (const std::string& w : t.late) out << "    late: " << w << "\n";
-    for (const std::string& w : t.early) out << "    early: " << w << "\n";
+        << " zero, " << t.early.size() << " early, " << t.broken.size() << " breaking its promise, "
+        << t.allowed.size() << " allowed by it (" << to_string(t.promise) << ")\n";
+    for (const std::string& w : t.words) out << "    " << w << "\n";
   }
 }
 
@@ -143,7 +213,7 @@ int run_replay(const ReplayOptions& o, const Io& io) {
   const std::vector<QueryRecord> cases = read_cases(o.paths);
   const std::vector<Query> queries = queries_of(cases);
   const RecordScope asking(cases, queries);  // a plug-in's crash names FILE:LINE
-  Replay r = replay(cases, classify(queries, truths_of(cases), methods));
+  Replay r = replay(cases, classify(queries, truths_of(cases), methods), methods);
   if (o.toi) replay_times(cases, queries, methods, o, r);
   print_replay(r, cases.size(), o.json, io.out);
   for (const std::string& w : r.twin_mismatches)

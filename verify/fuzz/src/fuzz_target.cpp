@@ -35,10 +35,20 @@ std::string direction_words(const std::string& d) {
   return d == "fp" ? "a false alarm (FP)" : "a miss (FN)";
 }
 
+// A metamorphic case: the transform, and the method's verdicts or the promise it broke there.
+std::string metamorphic_case_text(const Method& m, const QueryRecord& r, const TwinContact& contact,
+                                  const std::string& family) {
+  const MetamorphicFailure f = *metamorphic_finding_failure(m, r.query);
+  const std::string broken = f.kept ? "" : " (breaks " + std::string(to_string(m.promise)) + ")";
+  return case_file_text(r,
+                        {describe(m, f) + broken + "; exact says " + contact_words(contact) + ".",
+                         "Shrunk by fdhcert fuzz --metamorphic from family " + family + "."});
+}
+
 }  // namespace
 
 std::string FuzzTarget::finding(const Query& q) const {
-  if (metamorphic) return metamorphic_failure(method, q) ? "metamorphic" : "";
+  if (metamorphic) return metamorphic_finding(method, q);
   if (toi) return method.gives_toi(q) ? time_finding(check_time(method, q, width), tolerance) : "";
   return method.applies_to(q) ? direction(check(method, q)) : "";
 }
@@ -56,11 +66,7 @@ std::string FuzzTarget::case_text(const Query& q, const std::string& family) con
   const TwinContact contact = twin_contact(q);
   const QueryRecord r{q, case_folder(family), truth_of(contact.hit), "", 0};
   const RecordScope asking(r);
-  if (metamorphic) {
-    const MetamorphicFailure f = *metamorphic_failure(method, q);
-    return case_file_text(r, {describe(method, f) + "; exact says " + contact_words(contact) + ".",
-                              "Shrunk by fdhcert fuzz --metamorphic from family " + family + "."});
-  }
+  if (metamorphic) return metamorphic_case_text(method, r, contact, family);
   if (toi) {
     const TimeCheck c = check_time(method, q, width);
     const std::string cls = time_finding(c, tolerance);

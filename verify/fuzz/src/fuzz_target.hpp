@@ -21,10 +21,12 @@ struct FuzzTarget {
 
   // The class of what the method gets wrong on q, "" for nothing: the direction of a
   // disagreement with the exact twin, "fp" (a false alarm) or "fn" (a miss), where the method
-  // applies to q; "metamorphic" (its verdict changes under a transform of q); or with `toi` one
-  // of "missed" (a contact missed), "late" (t_lo after t*), "broken" (the time breaks the
-  // method's promise otherwise) and "early" (t_lo before t* by more than `tolerance`).
-  // Shrinking keeps the class of the case drawn: a false alarm shrinks to a false alarm.
+  // applies to q; with `metamorphic`, "broken-promise" (its answer on a transform of q breaks its
+  // promise against the twin's verdict on q) or "metamorphic" (its verdict changes under a
+  // transform of q); or with `toi` one of "missed" (a contact missed), "late" (t_lo after t*),
+  // "broken" (the time breaks the method's promise otherwise) and "early" (t_lo before t* by more
+  // than `tolerance`). Shrinking keeps the class of the case drawn: a false alarm shrinks to a
+  // false alarm.
   std::string finding(const Query& q) const;
 
   // The folder of the cases under OUT: <method>/<family>, metamorphic/<method>/<family> or

@@ -54,8 +54,8 @@ std::optional<Generated> shrunk_failure(const Family& f, std::uint64_t seed,
   const rc::Shrinkable<Generated> s = gen_family(f)(rc::Random(seed));
   if (!fails(s.value())) return std::nullopt;
   // A step that leaves the kind of the case drawn is refused, as one that no longer fails is.
-  const CaseKind kind = case_kind_of(s.value().query);
-  const auto keeps = [&](const Generated& h) { return case_kind_of(h.query) == kind && fails(h); };
+  const Query drawn = s.value().query;
+  const auto keeps = [&](const Generated& h) { return keeps_kind(drawn, h.query) && fails(h); };
   Generated g = shrink_failure(s, keeps);
   const Query shrunk = g.query;
   g.query = simplify_failure(shrunk, [&g, &keeps](const Query& q) {

@@ -65,9 +65,25 @@ Json tally_json(const Tally& t) {
           {"fn", t.fn}, {"na", t.na}, {"ns_per_query", std::round(t.ns_per_query * 1e3) / 1e3}};
 }
 
+// The method's disagreements with the exact twin, by direction and by what its promise makes
+// of them (checker.hpp); null where it applies to nothing.
+Json against_exact_json(const MethodResult& m) {
+  if (m.tally.decided() == 0) return nullptr;
+  const DisagreementTally& d = m.against_exact;
+  return {{"misses", d.misses},
+          {"false_alarms", d.false_alarms},
+          {"broken", d.broken},
+          {"allowed", d.allowed}};
+}
+
 Json counts_json(const Classification& c) {
   Json methods = Json::object();
-  for (const MethodResult& m : c.methods) methods[m.name] = tally_json(m.tally);
+  for (const MethodResult& m : c.methods) {
+    Json one = tally_json(m.tally);
+    one["promise"] = to_string(m.promise);
+    one["against_exact"] = against_exact_json(m);
+    methods[m.name] = std::move(one);
+  }
   return {{"queries", c.queries},
           {"static_vf", c.static_vf},
           {"moving_vf", c.moving_vf},
@@ -115,6 +131,55 @@ Json classification_json(const std::vector<FileClassification>& files, const Cla
     j["files"].push_back(std::move(one));
   }
   return j;
+}
+
+namespace {
+
+std::string where_and_id(const QueryRecord& q) {
+  return q.file + ":" + std::to_string(q.line) + " (query " + q.id + ")";
+}
+
+// One decimal of a ns is more than the timing's precision.
+Json ns_json(double ns) {
+  return std::round(ns * 10) / 10;
+}
+
+}  // namespace
+
+void print_cpu_times(std::ostream& os, const std::vector<TimeSpread>& spreads,
+                     const std::vector<QueryRecord>& queries, int rounds) {
+  os << fmt::format(
+      "thread CPU time per query, each query timed alone (the least disturbed of {} batches):\n"
+      "  {:<16} {:>8} {:>12} {:>12} {:>12}  {}\n",
+      rounds, "method", "queries", "median ns", "p90 ns", "max ns", "slowest");
+  for (const TimeSpread& s : spreads) {
+    if (s.queries == 0)
+      os << fmt::format("  {:<16} {:>8} {:>12} {:>12} {:>12}\n", s.method, 0, "n/a", "n/a", "n/a");
+    else
+      os << fmt::format("  {:<16} {:>8} {:>12.1f} {:>12.1f} {:>12.1f}  {}\n", s.method, s.queries,
+                        s.median, s.p90, s.max, where_and_id(queries[s.slowest]));
+  }
+}
+
+Json cpu_times_json(const std::vector<TimeSpread>& spreads, const std::vector<QueryRecord>& queries,
+                    int rounds) {
+  Json methods = Json::object();
+  for (const TimeSpread& s : spreads) {
+    if (s.queries == 0) {
+      methods[s.method] = {{"queries", 0},
+                           {"median_ns", nullptr},
+                           {"p90_ns", nullptr},
+                           {"max_ns", nullptr},
+                           {"slowest", nullptr}};
+      continue;
+    }
+    methods[s.method] = {{"queries", s.queries},
+                         {"median_ns", ns_json(s.median)},
+                         {"p90_ns", ns_json(s.p90)},
+                         {"max_ns", ns_json(s.max)},
+                         {"slowest", where_and_id(queries[s.slowest])}};
+  }
+  return {{"rounds", rounds}, {"methods", methods}};
 }
 
 std::string per_query_csv(const std::vector<QueryRecord>& queries, const Classification& c,

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fdh/check/checker.hpp"
+#include "fdh/check/metamorphic.hpp"
 #include "fdh/check/registry.hpp"
 #include "fdh/os/progress.hpp"
 #include "fdh/peer_certify/peer_certify.hpp"
@@ -64,10 +65,13 @@ struct BoxCheck {
 // One method of the registry under the metamorphic transforms (check/metamorphic.hpp), on every
 // query certify draws: transformed queries checked, and how many changed its verdict. A method
 // that promises the exact verdict (robust, the twin) must change none; the others are counted.
+// A promised method (not the twin) is also judged on every transformed query against the exact
+// verdict of the query, which the transforms keep: each broken promise is a violation.
 struct MetamorphicCheck {
   std::string method;
   Promise promise = Promise::None;
   long checked = 0, violations = 0;
+  long judged = 0, broken = 0;  // transformed queries judged against the promise; broken
   // Held to invariance: only the exact verdict is invariant. A conservative method (a
   // bounding-volume test) may call a miss a hit in one query and not in its transform.
   bool held() const { return promise == Promise::Exact; }
@@ -85,13 +89,18 @@ struct Certificate {
   std::vector<BoxCheck> boxes;                // every k-DOP method
   long truths = 0, truth_violations = 0;      // queries with a stored truth: the twin = the truth
   std::vector<MetamorphicCheck> metamorphic;  // every method of the registry
+  // Every transform: the queries it applied to, and those skipped as inexact (it would round,
+  // overflow or leave the normal range).
+  std::vector<TransformCount> metamorphic_transforms;
   // The own k-DOPs beside the peer libraries' boxes (peers.hpp); shrunk cases in out_dir/peers/,
   // stored ones replayed from corpus_dir/peers/. Only the own rows count as checks here.
   PeersReport peers;
   std::string first_violation;  // what went wrong first, and the file it was saved to
 
   bool certified() const { return first_violation.empty(); }
-  long checks() const;      // every check counted above (metamorphic: promised methods only)
+  // Every check counted above (metamorphic: exact methods' invariance, promised methods'
+  // judged transformed queries).
+  long checks() const;
   long violations() const;  // every violation counted above (the same)
 };
 

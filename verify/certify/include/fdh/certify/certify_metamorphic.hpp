@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "fdh/certify/certify.hpp"
+#include "fdh/check/metamorphic.hpp"
 #include "fdh/check/registry.hpp"
+#include "fdh/io/query_record.hpp"
 
 namespace fdh::verify {
 
@@ -19,12 +21,30 @@ class MetamorphicCertifier {
   // The rows, in the methods' order, with nothing counted yet.
   std::vector<MetamorphicCheck> rows() const;
 
-  // Counts every method on q into `rows` (rows()'s order); `twin` is the twin's verdict on q,
-  // known already. Returns the words of the first verdict change of a method held to invariance
-  // (MetamorphicCheck::held), if there is one. Safe to call from several threads at once (each
-  // with its own rows) when the methods are (registry.hpp).
-  std::optional<std::string> check(const Query& q, bool twin,
-                                   std::vector<MetamorphicCheck>& rows) const;
+  // A broken promise under a transform (or a verdict change of a method held to invariance):
+  // its words, naming the method, the transform and the decision, and the query to save (the
+  // transformed one for a broken promise, q itself for a verdict change).
+  struct Violation {
+    std::string what;
+    Query saved;
+    std::string transform;  // the transform saved is of q, or "" when saved is q
+
+    // A comment for the saved case: the query as drawn (`original`, q's record), in the native
+    // format, before the transform; "" when saved is q.
+    std::string before(const QueryRecord& original) const;
+  };
+
+  // Counts every method on q into `rows` (rows()'s order) and q's transforms into `transforms`
+  // (transform_counts()'s order); `twin` is the twin's verdict on q, known already, which every
+  // transform keeps. Returns the first violation: of the methods in order, a promise broken
+  // under a transform, else a verdict change of a method held to invariance
+  // (MetamorphicCheck::held). Safe to call from several threads at once (each with its own rows)
+  // when the methods are (registry.hpp).
+  std::optional<Violation> check(const Query& q, bool twin, std::vector<MetamorphicCheck>& rows,
+                                 std::vector<TransformCount>& transforms) const;
+  // The same without the transforms' counts.
+  std::optional<Violation> check(const Query& q, bool twin,
+                                 std::vector<MetamorphicCheck>& rows) const;
 
  private:
   std::vector<Method> methods_;

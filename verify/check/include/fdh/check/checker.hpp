@@ -67,7 +67,44 @@ Verdicts check_overlap(const BoxMethod& m, const std::vector<Vec3>& a, const std
 std::vector<std::pair<int, int>> culled_pairs(std::vector<std::pair<int, int>> found,
                                               const std::vector<std::pair<int, int>>& exact);
 
-// "robust says hit, exact says no": the words of a broken check, for messages and case files.
+// Which way a verdict differs from the twin's.
+enum class Disagreement {
+  None,
+  Miss,        // "no" where the twin says "hit" (a false negative)
+  FalseAlarm,  // "hit" where the twin says "no" (a false positive)
+};
+Disagreement disagreement_of(bool said, bool twin);
+
+// What a promise makes of a finding against the twin: nothing found, a broken promise, a
+// disagreement the promise allows (a conservative method's false alarm, a never-late time's
+// earliness), or one that no promise speaks of (a method that promises nothing).
+enum class Judgement { Kept, Broken, Allowed, Unpromised };
+Judgement judge(Promise p, bool said, bool twin);
+
+// The words of a judgement, for classify, replay and the certificate: "(breaks CONSERVATIVE)"
+// (a verdict's promise in capitals, as fdh/plugin.h names it), "(allowed: conservative)",
+// "(breaks never-late)", "(allowed: never-late)", "(no promise)"; "" for Kept.
+std::string judgement_words(Judgement j, Promise p);
+std::string judgement_words(Judgement j, TimePromise p);
+
+// One verdict against the twin's, judged by m's promise: "aabb gives a false alarm at FILE:LINE
+// (allowed: conservative)", "robust misses a hit (breaks EXACT)", "float-cubic answers no where
+// exact says hit (no promise)"; "" where they agree. `where` ("" for none) follows " at ".
+// classify, replay and the certificate all take their words from here.
+std::string verdict_words(const Method& m, bool said, bool twin, const std::string& where = "");
+
+// The disagreements of one method with the twin, by direction, and what its promise makes of
+// them (broken + allowed = misses + false_alarms for a promised method; 0 and 0 for one without
+// a promise).
+struct DisagreementTally {
+  long misses = 0, false_alarms = 0;
+  long broken = 0, allowed = 0;
+  void add(Promise p, bool said, bool twin);
+  void merge(const DisagreementTally& o);
+};
+
+// "robust says hit, the exact twin says no: gives a false alarm (breaks EXACT)": the words of a
+// checked verdict, for messages and the certificate.
 std::string describe(const Method& m, const Verdicts& v);
 
 // The exact earliest contact of a query, once for all the methods checked on it: the verdict
@@ -125,5 +162,14 @@ struct TimeTally {
 // "float-cubic's TOI is late: t_lo = 0x1.8p-1 > t* = 0.74...": the words of a time check that
 // found something, for messages and case files ("" when it found nothing).
 std::string describe(const Method& m, const TimeCheck& c);
+
+// What m's time promise makes of c: Kept when c found nothing (describe says ""), Broken when
+// it breaks the promise, Allowed when the promise permits what was found (a never-late time's
+// earliness, an enclosure's), Unpromised for a method without a time promise.
+Judgement judge(const Method& m, const TimeCheck& c);
+// describe(m, c) with its judgement: "late-toi's TOI is late: t_lo = 1 > t* ~ 0.5 (breaks
+// never-late)", "robust's TOI is early by 1e-10 of the step, t* ~ 0.5 (allowed:
+// exact-enclosure)"; "" when c found nothing.
+std::string judged_time_words(const Method& m, const TimeCheck& c);
 
 }  // namespace fdh::verify

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fdh/check/checker.hpp"
 #include "fdh/check/registry.hpp"
 #include "fdh/query.hpp"
 
@@ -26,6 +27,8 @@ struct MethodResult {
   std::string name;
   Tally tally;
   std::vector<char> verdict;  // per query: 1 = hit, 0 = no hit, kNotApplicable
+  Promise promise = Promise::None;
+  DisagreementTally against_exact;  // against the twin (not the file's truth), judged by promise
 };
 
 // What the tallies count against: the file's truth (every query has one), exact (none has), or

@@ -22,6 +22,21 @@ std::vector<std::vector<double>> time_each_query(const std::vector<Query>& queri
                                                  const std::vector<Method>& methods,
                                                  int rounds = 7);
 
+// One method's time per query over the queries it applies to (classify --time): the lower
+// median, the 90th percentile (nearest rank: the smallest time at or above 90 % of the queries)
+// and the maximum, so median <= p90 <= max; `slowest` is the query of the maximum. queries = 0
+// (and times 0) for a method that applies to none.
+struct TimeSpread {
+  std::string method;
+  std::size_t queries = 0;
+  double median = 0, p90 = 0, max = 0;  // ns per call, as time_each_query gives them
+  std::size_t slowest = 0;
+};
+
+// The spread of each method's times (times[m][i] of time_each_query, 0 where it does not apply).
+std::vector<TimeSpread> time_spreads(const std::vector<std::vector<double>>& times,
+                                     const std::vector<Method>& methods);
+
 // One method's time over a base's, query by query, over the queries of one decision that both
 // apply to.
 struct TimeRatio {

@@ -58,10 +58,10 @@ Generated generate(const Family& f, std::uint64_t seed);
 // all: a greedy descent through RapidCheck's shrink tree (fdh/gen/shrink.hpp), then a greedy
 // pass over the query itself (fdh/gen/simplify.hpp: less motion, nearer the origin, shorter
 // coordinates). Every step keeps the case's kind (fdh/gen/case_kind.hpp: static, moving
-// vertex-face or edge-edge, as drawn): a step that leaves it is refused like one that no longer
-// fails. A caller that wants the failure's class kept (a false alarm stays a false alarm) says
-// so in `fails`. Where the second pass changed the query, its truth, contact kind and time are
-// unset.
+// vertex-face or edge-edge, as drawn, and no primitive collapsed to coincident points that the
+// case drawn had whole): a step that leaves it is refused like one that no longer fails. A caller
+// that wants the failure's class kept (a false alarm stays a false alarm) says so in `fails`. Where
+// the second pass changed the query, its truth, contact kind and time are unset.
 std::optional<Generated> shrunk_failure(const Family& f, std::uint64_t seed,
                                         const std::function<bool(const Generated&)>& fails);
 

@@ -8,6 +8,7 @@
 
 #include "fdh/check/classify.hpp"
 #include "fdh/check/classify_toi.hpp"
+#include "fdh/check/query_times.hpp"
 #include "fdh/io/query_record.hpp"
 
 namespace fdh::verify {
@@ -34,6 +35,18 @@ void print_table(std::ostream& os, const std::vector<FileClassification>& files,
 // for the total, then each file. Counts and time are null where a method applies to nothing.
 nlohmann::ordered_json classification_json(const std::vector<FileClassification>& files,
                                            const Classification& total, const ReportContext& ctx);
+
+// classify --time: each method's thread CPU time per query, each query timed alone
+// (check/query_times.hpp, the least disturbed of `rounds` batches), as a table
+//   thread CPU time per query (...):
+//     method   queries   median ns   p90 ns   max ns   slowest
+// and as {"rounds": R, "methods": {"<name>": {"queries": N, "median_ns": …, "p90_ns": …,
+// "max_ns": …, "slowest": "FILE:LINE (query ID)"}, …}} (times and slowest null where the method
+// applies to nothing). `queries` are the records the spreads' indices refer to.
+void print_cpu_times(std::ostream& os, const std::vector<TimeSpread>& spreads,
+                     const std::vector<QueryRecord>& queries, int rounds);
+nlohmann::ordered_json cpu_times_json(const std::vector<TimeSpread>& spreads,
+                                      const std::vector<QueryRecord>& queries, int rounds);
 
 // id,truth,<method>,…,contact,time with one row per query; verdicts are 0, 1 or n/a. Contact
 // and time come from the exact test of the query's own decision: for a static vertex-face
