@@ -61,6 +61,12 @@ int time_of_impact(const double x[8][3], double width, double* t_lo, double* t_h
 
 }  // namespace
 
+// Intersect's functions are static and keep no state between calls (only constants), so
+// certify and report may call them from every thread.
+extern "C" unsigned fdh_plugin_flags(void) {
+  return FDH_PLUGIN_THREAD_SAFE;
+}
+
 extern "C" const struct fdh_plugin* fdh_plugin_v2(void) {
   static const struct fdh_plugin p = [] {
     fdh_plugin q{};
