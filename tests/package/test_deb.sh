@@ -55,7 +55,8 @@ cmake -DBUILD="$build" -DSRC="$src" -DWORK="$work/consumer" -DGENERATOR="$genera
 echo "consumer against the package: ok"
 
 if command -v lintian >/dev/null; then
-  lintian --fail-on error --tag-display-limit 0 "$deb" || fail "lintian reports errors"
+  # lintian leaves its ELF cache (mldbm-elf-*) in $TMPDIR: ours, removed with the rest.
+  TMPDIR=$work lintian --fail-on error --tag-display-limit 0 "$deb" || fail "lintian reports errors"
   echo "lintian: no error"
 else
   echo "lintian: not installed (./run installs it as root), not run"
