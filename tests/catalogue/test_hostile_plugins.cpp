@@ -23,6 +23,7 @@
 
 #include "fdh/os/child_process.hpp"
 #include "temp_dir.hpp"
+#include "text_file.hpp"
 #include "test_data.hpp"
 
 namespace fdh::verify::hostile_plugins {
@@ -33,13 +34,6 @@ using Args = std::vector<std::string>;
 
 std::string rogue(const std::string& name) {
   return std::string(FDH_ROGUE_PLUGINS) + "/" + name + ".so";
-}
-
-std::string text_of(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 // A query file of `n` queries whose query `magic` (1-based, 0: none) starts its point at x =

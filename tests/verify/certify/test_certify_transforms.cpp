@@ -15,22 +15,12 @@
 #include "fdh/check/metamorphic.hpp"
 #include "fdh/io/query_io.hpp"
 #include "temp_dir.hpp"
+#include "text_file.hpp"
 
 namespace fdh::verify {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string text_of(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-bool has(const std::string& text, const std::string& what) {
-  return text.find(what) != std::string::npos;
-}
 
 // certify with its quickest options: no corpus, no scenes, no soups, no peers, and either
 // `per_family` queries of every family or none and `extra`.

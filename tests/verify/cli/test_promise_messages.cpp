@@ -12,16 +12,13 @@
 
 #include "cli_run.hpp"
 #include "temp_dir.hpp"
+#include "text_file.hpp"
 #include "test_data.hpp"
 
 namespace fdh::verify {
 namespace {
 
 namespace fs = std::filesystem;
-
-bool has(const std::string& text, const std::string& what) {
-  return text.find(what) != std::string::npos;
-}
 
 // Three static queries: a hit, a hit whose point starts at x = 0.375 (the plug-ins' MAGIC) and
 // a segment beside the triangle (no hit). The miss plug-in misses the second (breaking its

@@ -19,6 +19,7 @@
 #include "fdh/io/query_io.hpp"
 #include "fdh/os/child_process.hpp"
 #include "temp_dir.hpp"
+#include "text_file.hpp"
 #include "test_data.hpp"
 
 namespace fdh::verify {
@@ -30,13 +31,6 @@ std::string faulty(const std::string& fault) {
   return std::string(FDH_FAULTY_PLUGINS) + "/" + fault + ".so";
 }
 
-std::string text_of(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 // A query file whose second query starts its point at x = 0.375, the faulty plug-ins' MAGIC.
 fs::path magic_queries(const std::string& name) {
   const fs::path dir = fresh_temp_dir(name), file = dir / "magic.vf";
@@ -45,10 +39,6 @@ fs::path magic_queries(const std::string& name) {
                          "vf magic 0.375 0.25 1  0 0 0  1 0 0  0 1 0  0.375 0.25 -1  0 0 0  1 0 "
                          "0  0 1 0  1\n";
   return file;
-}
-
-bool has(const std::string& text, const std::string& what) {
-  return text.find(what) != std::string::npos;
 }
 
 TEST(Plugin, ClassifyShowsTheExampleBesideTheBuiltInMethods) {

@@ -18,6 +18,7 @@
 #include "cli_run.hpp"
 #include "fdh/os/child_process.hpp"
 #include "temp_dir.hpp"
+#include "text_file.hpp"
 #include "test_data.hpp"
 
 namespace fdh::verify {
@@ -26,17 +27,6 @@ namespace {
 namespace fs = std::filesystem;
 using Args = std::vector<std::string>;
 const std::string kTunable = FDH_TUNABLE_PLUGIN;
-
-std::string text_of(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-bool has(const std::string& text, const std::string& what) {
-  return text.find(what) != std::string::npos;
-}
 
 struct Ended {
   int status = -1;
