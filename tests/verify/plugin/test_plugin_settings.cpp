@@ -17,9 +17,10 @@
 #include "../../../verify/cli/src/progress.hpp"
 #include "cli_run.hpp"
 #include "fdh/os/child_process.hpp"
+#include "fdhcert_process.hpp"
 #include "temp_dir.hpp"
-#include "text_file.hpp"
 #include "test_data.hpp"
+#include "text_file.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -27,36 +28,6 @@ namespace {
 namespace fs = std::filesystem;
 using Args = std::vector<std::string>;
 const std::string kTunable = FDH_TUNABLE_PLUGIN;
-
-struct Ended {
-  int status = -1;
-  double seconds = 0;
-  std::string out, err;
-};
-
-// fdhcert `args` as a process of its own, standard output and error into files of `dir` (not
-// a terminal), timed by the wall clock.
-Ended run_fdhcert(const Args& args, const fs::path& dir) {
-  Args argv = {FDHCERT_BIN};
-  argv.insert(argv.end(), args.begin(), args.end());
-  std::vector<char*> a;
-  for (const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
-  a.push_back(nullptr);
-  const std::string out = (dir / "stdout").string(), err = (dir / "stderr").string();
-  const auto start = std::chrono::steady_clock::now();
-  ChildProcess process([&] {
-    ::dup2(::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 1);
-    ::dup2(::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 2);
-    ::execv(a[0], a.data());
-    return 127;
-  });
-  const ChildStatus s = process.wait();
-  Ended e;
-  e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  e.status = s.exited() ? s.exit_code() : -1;
-  e.out = text_of(out), e.err = text_of(err);
-  return e;
-}
 
 // A folder with `n` copies of one hit query, as a corpus or a query file.
 fs::path queries(const std::string& name, int n) {
