@@ -1,5 +1,5 @@
-// fdh::Query is the geometry alone: 8 points and a kind, no strings (issue 21), with named
-// vertices that read the points in the documented order.
+// fdh::Query is plain data: 8 points, a kind and the minimum separation, no strings (issue 21),
+// with named vertices that read the points in the documented order.
 #include "fdh/query.hpp"
 
 #include <gtest/gtest.h>
@@ -11,7 +11,8 @@ namespace {
 
 // No string, no provenance: a query is copied as plain memory.
 static_assert(std::is_trivially_copyable_v<Query>);
-static_assert(sizeof(Query) <= sizeof(QueryKind) + 8 * sizeof(Vec3) + alignof(Vec3));
+static_assert(sizeof(Query) <=
+              sizeof(QueryKind) + 8 * sizeof(Vec3) + sizeof(double) + alignof(Vec3));
 
 Query numbered() {
   Query q;

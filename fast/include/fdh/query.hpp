@@ -1,4 +1,5 @@
-// One collision query: the geometry alone, 8 points in plain doubles. Where a query came from
+// One collision query: the geometry, 8 points in plain doubles, and the minimum separation it
+// asks about (0: contact). Where a query came from
 // (a file's line, an id) and what a file says of it (its truth) is a record of verify/io
 // (fdh/io/query_record.hpp), not part of the query.
 #pragma once
@@ -18,6 +19,11 @@ struct Query {
   //   vertex-face: v, f0, f1, f2 (the vertex, then the triangle's corners);
   //   edge-edge:   ea0, ea1, eb0, eb1 (edge a's ends, then edge b's).
   std::array<Vec3, 8> x{};
+  // The minimum separation δ (docs/methods.md, "Minimum separation"): the query asks whether the
+  // closed primitives come within Euclidean distance δ, taken at the double's exact value, at
+  // some time of the step (the earliest such time is t*_δ). δ = 0 asks for contact, today's
+  // question, and every method answers it as it did before δ existed. Finite and >= 0.
+  double min_distance = 0;
 
   // Vertex-face.
   const Vec3& v_t0() const { return x[0]; }
