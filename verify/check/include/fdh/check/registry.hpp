@@ -88,7 +88,14 @@ struct Method {
   std::array<QueryToi, 2> toi{};
   TimePromise time_promise = TimePromise::None;
 
-  bool applies_to(const Query& q) const { return bool(test[std::size_t(decision_of(q))]); }
+  // It answers the minimum-separation question (Query::min_distance > 0) too; a method that does
+  // not is "n/a" on every query with δ > 0 (docs/methods.md, "Minimum separation").
+  bool answers_min_distance = false;
+
+  bool applies_to(const Query& q) const {
+    return bool(test[std::size_t(decision_of(q))]) &&
+           (q.min_distance == 0 || answers_min_distance);
+  }
   bool hit(const Query& q) const { return test[std::size_t(decision_of(q))](q); }
   bool gives_toi(const Query& q) const { return bool(toi[toi_index(toi_decision_of(q))]); }
   Toi time_of_impact(const Query& q, double width) const {
