@@ -38,4 +38,14 @@ unsigned call_flags(void* lib, const std::string& path) {
   return flags();
 }
 
+const fdh_min_distance* call_min_distance(void* lib, const std::string& path, bool* exported) {
+  const auto entry =
+      reinterpret_cast<fdh_plugin_min_distance_fn>(::dlsym(lib, "fdh_plugin_min_distance"));
+  if (exported) *exported = entry != nullptr;
+  if (!entry) return nullptr;
+  const CallSite site{path.c_str(), "fdh_plugin_min_distance"};
+  const InCall in(site);
+  return entry();
+}
+
 }  // namespace fdh::verify::plugin

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -38,6 +39,8 @@ struct Loaded {
   fdh_plugin api{};
   PluginSettings settings;
   unsigned flags = 0;  // FDH_PLUGIN_* bits
+  // Its minimum-separation functions (fdh_plugin_min_distance), when it exports them.
+  std::optional<fdh_min_distance> within;
   bool one_thread() const { return !(flags & FDH_PLUGIN_THREAD_SAFE); }
 };
 using LoadedPtr = std::shared_ptr<const Loaded>;
@@ -115,9 +118,47 @@ void check_settings(const std::string& path, const PluginSettings& settings) {
   }
 }
 
+// A promise of the ABI as an int in range, else refused.
+void check_promises(const std::string& path, const char* what, int promise, int time_promise) {
+  if (promise < FDH_PROMISE_NONE || promise > FDH_PROMISE_EXACT)
+    refuse(path, std::string(what) + "promise " + std::to_string(promise) + " is none of 0, 1, 2");
+  if (time_promise < FDH_TIME_NONE || time_promise > FDH_TIME_EXACT_ENCLOSURE)
+    refuse(path, std::string(what) + "time_promise " + std::to_string(time_promise) +
+                     " is none of 0, 1, 2");
+}
+
+// fdh_plugin_min_distance's struct, checked: a method answers δ for every decision (and time)
+// it answers at contact, or for none, since Method::answers_min_distance is one flag.
+std::optional<fdh_min_distance> within_struct(void* lib, const std::string& path,
+                                              const fdh_plugin& a) {
+  bool exported = false;
+  const fdh_min_distance* returned = plugin::call_min_distance(lib, path, &exported);
+  if (!exported) return std::nullopt;
+  if (!returned) refuse(path, "fdh_plugin_min_distance returned NULL");
+  const fdh_min_distance w = *returned;
+  check_promises(path, "fdh_plugin_min_distance's ", w.promise, w.time_promise);
+  const auto missing = [&](bool at_contact, bool within, const char* function) {
+    if (at_contact && !within)
+      refuse(path, std::string("fdh_plugin_min_distance gives no ") + function +
+                       ", which the plug-in answers at contact (a plug-in answers the minimum "
+                       "separation for every decision it makes, or for none)");
+  };
+  missing(a.point_triangle && !a.vertex_face_ccd, w.point_triangle || w.vertex_face_ccd,
+          "point_triangle");
+  missing(a.vertex_face_ccd, w.vertex_face_ccd, "vertex_face_ccd");
+  missing(a.edge_edge_ccd, w.edge_edge_ccd, "edge_edge_ccd");
+  missing(a.vertex_face_toi, w.vertex_face_toi, "vertex_face_toi");
+  missing(a.edge_edge_toi, w.edge_edge_toi, "edge_edge_toi");
+  if (!w.point_triangle && !w.vertex_face_ccd && !w.edge_edge_ccd && !w.vertex_face_toi &&
+      !w.edge_edge_toi)
+    refuse(path, "fdh_plugin_min_distance gives no function");
+  return w;
+}
+
 // The struct the entry point returns, checked field by field, after fdh_plugin_init took the
-// settings; `flags` gets fdh_plugin_flags().
-fdh_plugin entry_struct(const std::string& path, const PluginSettings& settings, unsigned& flags) {
+// settings; `flags` gets fdh_plugin_flags() and `within` fdh_plugin_min_distance's struct.
+fdh_plugin entry_struct(const std::string& path, const PluginSettings& settings, unsigned& flags,
+                        std::optional<fdh_min_distance>& within) {
   check_settings(path, settings);
   // A file path, never a name for dlopen to search for.
   const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
@@ -149,14 +190,12 @@ fdh_plugin entry_struct(const std::string& path, const PluginSettings& settings,
   const fdh_plugin* p = &a;
   if (!is_name(p->name))
     refuse(path, "its name is not a letter or digit, then up to 39 of a-z A-Z 0-9 . _ + -");
-  if (p->promise < FDH_PROMISE_NONE || p->promise > FDH_PROMISE_EXACT)
-    refuse(path, "promise " + std::to_string(p->promise) + " is none of 0, 1, 2");
-  if (p->time_promise < FDH_TIME_NONE || p->time_promise > FDH_TIME_EXACT_ENCLOSURE)
-    refuse(path, "time_promise " + std::to_string(p->time_promise) + " is none of 0, 1, 2");
+  check_promises(path, "", p->promise, p->time_promise);
   if ((p->kdop_ks & ~0xfu) || (p->kdop_ks != 0) != (p->kdop != nullptr))
     refuse(path, "kdop_ks must name the k of a kdop builder (FDH_KDOP_* bits), and only then");
+  within = within_struct(lib, path, a);
   if (!p->point_triangle && !p->vertex_face_ccd && !p->edge_edge_ccd && !p->kdop &&
-      !p->vertex_face_toi && !p->edge_edge_toi)
+      !p->vertex_face_toi && !p->edge_edge_toi && !within)
     refuse(path, "it has no function");
   return a;
 }
@@ -176,41 +215,68 @@ std::string shortest(double v) {
   return std::string(text, n);
 }
 
-// A query function as a registry test: the 8 points in, 0 or 1 out, anything else garbage.
-QueryTest query_test(const LoadedPtr& p, fdh_query_fn f, const char* function) {
-  return [p, f, function](const Query& q) {
-    double x[8][3];
-    for (int i = 0; i < 8; ++i) x[i][0] = q.x[i].x, x[i][1] = q.x[i].y, x[i][2] = q.x[i].z;
-    const CallSite site{p->name.c_str(), function, &q};
+// The ABI's plain rows of three doubles.
+using Points8 = double[8][3];
+void points_of(const Query& q, Points8& x) {
+  for (int i = 0; i < 8; ++i) x[i][0] = q.x[i].x, x[i][1] = q.x[i].y, x[i][2] = q.x[i].z;
+}
+
+// A plug-in's verdict: 0 or 1, anything else garbage.
+bool verdict(const LoadedPtr& p, const CallSite& site, int r) {
+  if (r != 0 && r != 1)
+    throw PluginFailure("plug-in " + p->name + " returned " + std::to_string(r) +
+                        " (garbage: not 0 or 1) " + plugin::where(site));
+  return r == 1;
+}
+
+// One decision's functions: at contact (`contact`) and within δ (`within`); either may be null.
+struct Verdicts {
+  fdh_query_fn contact = nullptr;
+  const char* contact_name = "";
+  fdh_min_distance_fn within = nullptr;
+  const char* within_name = "";
+};
+
+// A decision as a registry test: the 8 points in, 0 or 1 out. At δ = 0 the contact function
+// answers, as before δ existed; the δ function answers δ > 0, and δ = 0 where there is no other.
+QueryTest query_test(const LoadedPtr& p, const Verdicts& f) {
+  return [p, f](const Query& q) {
+    Points8 x;
+    points_of(q, x);
+    const bool at_contact = f.contact && q.min_distance == 0;
+    const CallSite site{p->name.c_str(), at_contact ? f.contact_name : f.within_name, &q};
     int r;
     {
       const InCall in(site);
-      r = f(x);
+      r = at_contact ? f.contact(x) : f.within(x, q.min_distance);
     }
-    if (r != 0 && r != 1)
-      throw PluginFailure("plug-in " + p->name + " returned " + std::to_string(r) +
-                          " (garbage: not 0 or 1) " + plugin::where(site));
-    return r == 1;
+    return verdict(p, site, r);
   };
 }
 
-// A TOI function as a registry time: 0 or 1 out, and with 1 an interval of [0, 1] in order;
-// anything else garbage.
-QueryToi query_toi(const LoadedPtr& p, fdh_toi_fn f, const char* function) {
-  return [p, f, function](const Query& q, double width) {
-    double x[8][3];
-    for (int i = 0; i < 8; ++i) x[i][0] = q.x[i].x, x[i][1] = q.x[i].y, x[i][2] = q.x[i].z;
-    const CallSite site{p->name.c_str(), function, &q};
+// One decision's times, as Verdicts.
+struct Times {
+  fdh_toi_fn contact = nullptr;
+  const char* contact_name = "";
+  fdh_min_distance_toi_fn within = nullptr;
+  const char* within_name = "";
+};
+
+// A TOI decision as a registry time: 0 or 1 out, and with 1 an interval of [0, 1] in order;
+// anything else garbage. Contact and δ as query_test.
+QueryToi query_toi(const LoadedPtr& p, const Times& f) {
+  return [p, f](const Query& q, double width) {
+    Points8 x;
+    points_of(q, x);
+    const bool at_contact = f.contact && q.min_distance == 0;
+    const CallSite site{p->name.c_str(), at_contact ? f.contact_name : f.within_name, &q};
     double lo = 1, hi = 1;
     int r;
     {
       const InCall in(site);
-      r = f(x, width, &lo, &hi);
+      r = at_contact ? f.contact(x, width, &lo, &hi) : f.within(x, q.min_distance, width, &lo, &hi);
     }
-    if (r != 0 && r != 1)
-      throw PluginFailure("plug-in " + p->name + " returned " + std::to_string(r) +
-                          " (garbage: not 0 or 1) " + plugin::where(site));
-    if (r == 0) return Toi{};
+    if (!verdict(p, site, r)) return Toi{};
     if (!(0 <= lo && lo <= hi && hi <= 1))  // NaN fails too
       throw PluginFailure("plug-in " + p->name + " returned a contact at [" + shortest(lo) + ", " +
                           shortest(hi) + "] (garbage: not 0 <= t_lo <= t_hi <= 1) " +
@@ -219,32 +285,55 @@ QueryToi query_toi(const LoadedPtr& p, fdh_toi_fn f, const char* function) {
   };
 }
 
+// The promise a method is held to: the weaker of its contact and δ promises where it has both
+// (the ABI's values grow with strength: NONE 0, CONSERVATIVE 1, EXACT 2).
+int weaker(bool has_contact, int contact, bool has_within, int within) {
+  if (has_contact && has_within) return std::min(contact, within);
+  return has_within ? within : contact;
+}
+
+// The verdict functions of each query decision, at contact and within δ. A still triangle is a
+// moving one that stays: the CCD decides when there is no static test.
+std::array<Verdicts, 3> verdicts_of(const fdh_plugin& a, const fdh_min_distance& w) {
+  std::array<Verdicts, 3> v;
+  v[std::size_t(Decision::PointTriangle)] = {
+      a.point_triangle ? a.point_triangle : a.vertex_face_ccd,
+      a.point_triangle ? "point_triangle" : "vertex_face_ccd",
+      w.point_triangle ? w.point_triangle : w.vertex_face_ccd,
+      w.point_triangle ? "point_triangle (min_distance)" : "vertex_face_ccd (min_distance)"};
+  v[std::size_t(Decision::VertexFaceCcd)] = {a.vertex_face_ccd, "vertex_face_ccd",
+                                             w.vertex_face_ccd, "vertex_face_ccd (min_distance)"};
+  v[std::size_t(Decision::EdgeEdgeCcd)] = {a.edge_edge_ccd, "edge_edge_ccd", w.edge_edge_ccd,
+                                           "edge_edge_ccd (min_distance)"};
+  return v;
+}
+
 Method query_method(const LoadedPtr& p) {
   Method m;
   m.name = p->name;
   m.one_thread = p->one_thread();  // docs/plugins.md: one thread unless it says it is safe
   m.summary = std::string(p->api.summary ? p->api.summary : "") + " (plug-in " + p->path + ")";
-  m.promise = Promise(p->api.promise == FDH_PROMISE_EXACT          ? Promise::Exact
-                      : p->api.promise == FDH_PROMISE_CONSERVATIVE ? Promise::Conservative
-                                                                   : Promise::None);
   const fdh_plugin& a = p->api;
-  // A still triangle is a moving one that stays: the CCD decides when there is no static test.
-  if (a.point_triangle || a.vertex_face_ccd)
-    m.test[std::size_t(Decision::PointTriangle)] =
-        a.point_triangle ? query_test(p, a.point_triangle, "point_triangle")
-                         : query_test(p, a.vertex_face_ccd, "vertex_face_ccd");
-  if (a.vertex_face_ccd)
-    m.test[std::size_t(Decision::VertexFaceCcd)] =
-        query_test(p, a.vertex_face_ccd, "vertex_face_ccd");
-  if (a.edge_edge_ccd)
-    m.test[std::size_t(Decision::EdgeEdgeCcd)] = query_test(p, a.edge_edge_ccd, "edge_edge_ccd");
-  if (a.vertex_face_toi)
-    m.toi[toi_index(Decision::VertexFaceToi)] = query_toi(p, a.vertex_face_toi, "vertex_face_toi");
-  if (a.edge_edge_toi)
-    m.toi[toi_index(Decision::EdgeEdgeToi)] = query_toi(p, a.edge_edge_toi, "edge_edge_toi");
-  m.time_promise = a.time_promise == FDH_TIME_EXACT_ENCLOSURE ? TimePromise::Enclosure
-                   : a.time_promise == FDH_TIME_NEVER_LATE    ? TimePromise::NeverLate
-                                                              : TimePromise::None;
+  const fdh_min_distance w = p->within.value_or(fdh_min_distance{});
+  m.answers_min_distance = p->within.has_value();
+  const std::array<Verdicts, 3> verdicts = verdicts_of(a, w);
+  for (std::size_t d = 0; d < verdicts.size(); ++d)
+    if (verdicts[d].contact || verdicts[d].within) m.test[d] = query_test(p, verdicts[d]);
+  const Times times[2] = {
+      {a.vertex_face_toi, "vertex_face_toi", w.vertex_face_toi, "vertex_face_toi (min_distance)"},
+      {a.edge_edge_toi, "edge_edge_toi", w.edge_edge_toi, "edge_edge_toi (min_distance)"}};
+  for (std::size_t d = 0; d < 2; ++d)
+    if (times[d].contact || times[d].within) m.toi[d] = query_toi(p, times[d]);
+  const int promise = weaker(a.point_triangle || a.vertex_face_ccd || a.edge_edge_ccd, a.promise,
+                             w.point_triangle || w.vertex_face_ccd || w.edge_edge_ccd, w.promise);
+  const int time_promise = weaker(a.vertex_face_toi || a.edge_edge_toi, a.time_promise,
+                                  w.vertex_face_toi || w.edge_edge_toi, w.time_promise);
+  m.promise = promise == FDH_PROMISE_EXACT          ? Promise::Exact
+              : promise == FDH_PROMISE_CONSERVATIVE ? Promise::Conservative
+                                                    : Promise::None;
+  m.time_promise = time_promise == FDH_TIME_EXACT_ENCLOSURE ? TimePromise::Enclosure
+                   : time_promise == FDH_TIME_NEVER_LATE    ? TimePromise::NeverLate
+                                                            : TimePromise::None;
   return m;
 }
 
@@ -296,12 +385,12 @@ void load_plugin(const std::string& path, const PluginSettings& settings) {
   auto loaded = std::make_shared<Loaded>();
   loaded->path = path;
   loaded->settings = settings;
-  loaded->api = entry_struct(path, settings, loaded->flags);
+  loaded->api = entry_struct(path, settings, loaded->flags, loaded->within);
   loaded->name = loaded->api.name;
   const LoadedPtr p = loaded;
   std::vector<Method> methods;
   if (p->api.point_triangle || p->api.vertex_face_ccd || p->api.edge_edge_ccd ||
-      p->api.vertex_face_toi || p->api.edge_edge_toi)
+      p->api.vertex_face_toi || p->api.edge_edge_toi || p->within)
     methods.push_back(query_method(p));
   std::vector<BoxMethod> boxes;
   for (int i = 0; i < 4; ++i)

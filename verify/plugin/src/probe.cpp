@@ -50,13 +50,27 @@ std::vector<QueryRecord> probe_queries() {
   };
 }
 
+// Each probe again at minimum separations δ > 0 (fdh_plugin_min_distance): a small one and one
+// larger than the probes' coordinates.
+std::vector<QueryRecord> with_min_distances(const std::vector<QueryRecord>& probes) {
+  std::vector<QueryRecord> all = probes;
+  for (const double delta : {0x1p-10, 0x1p+40})
+    for (QueryRecord r : probes) {
+      r.query.min_distance = delta;
+      r.id += delta < 1 ? "/min-distance-2^-10" : "/min-distance-2^40";
+      all.push_back(r);
+    }
+  return all;
+}
+
 void run_probes(const std::vector<Method>& methods, const std::vector<BoxMethod>& boxes) {
   const std::vector<QueryRecord> probes = probe_queries();
   for (const Method& m : methods)
-    for (const QueryRecord& r : probes) {
+    for (const QueryRecord& r : with_min_distances(probes)) {
       const RecordScope asking(r);  // a crash names the probe
       if (m.applies_to(r.query)) m.hit(r.query);
-      if (m.gives_toi(r.query)) m.time_of_impact(r.query, kDefaultToiWidth);
+      if (m.gives_toi(r.query) && (r.query.min_distance == 0 || m.answers_min_distance))
+        m.time_of_impact(r.query, kDefaultToiWidth);
     }
   double lo[13], hi[13];
   for (const BoxMethod& b : boxes)
@@ -168,6 +182,7 @@ std::optional<std::string> own_report(const Said& said) {
       reinterpret_cast<const void* (*)()>(f)();
       break;
     }
+  call_min_distance(lib, path);
   write_all(fd, "ok");
   ::_exit(0);
 }

@@ -9,7 +9,8 @@
  * and gives no time of impact. `fdhcert classify|fuzz|replay|certify
  * --plugin lib.so` loads it and runs its functions like the built-in methods, against the
  * exact twin of each decision, under the promise it declares. It may also export
- * fdh_plugin_init (settings) and fdh_plugin_flags (thread safety), below. Plain C: it compiles
+ * fdh_plugin_init (settings), fdh_plugin_flags (thread safety) and fdh_plugin_min_distance
+ * (minimum separation), below. Plain C: it compiles
  * as C and as C++. */
 #ifndef FDH_PLUGIN_H
 #define FDH_PLUGIN_H
@@ -120,6 +121,39 @@ const char* fdh_plugin_init(size_t n, const char* const* keys, const char* const
 
 typedef unsigned (*fdh_plugin_flags_fn)(void);
 unsigned fdh_plugin_flags(void);
+
+/* Minimum separation δ (issue 30; docs/plugins.md, "Minimum separation"): an optional export of
+ * either version, found by name (dlsym) after the entry point,
+ *
+ *     const struct fdh_min_distance* fdh_plugin_min_distance(void);
+ *
+ * returning a struct that lives as long as the library. A query then also asks whether the
+ * closed primitives come within Euclidean distance min_distance (a finite double >= 0, taken at
+ * its exact value) at some t in [0, 1]; the earliest such t is the time asked. fdhcert calls these
+ * functions on every query with min_distance > 0 (and at 0 where the plug-in has no contact
+ * function of that decision); at 0 it calls the contact functions above, as before. A plug-in
+ * without this export is n/a on every query with min_distance > 0.
+ * The struct must give a verdict for every query decision the plug-in decides at contact
+ * (point_triangle may be NULL: vertex_face_ccd then decides static queries), and a time for
+ * every time the plug-in gives at contact; fdhcert refuses it otherwise. The method is held to
+ * the weaker of its two promises (and of its two time promises) on every query. */
+typedef int (*fdh_min_distance_fn)(const double x[8][3], double min_distance);
+typedef int (*fdh_min_distance_toi_fn)(const double x[8][3], double min_distance, double width,
+                                       double* t_lo, double* t_hi);
+
+struct fdh_min_distance {
+  int promise; /* an fdh_promise, against the exact Euclidean answer at min_distance */
+  /* As the contact functions of struct fdh_plugin, with the minimum separation. */
+  fdh_min_distance_fn point_triangle; /* may be NULL: vertex_face_ccd decides static queries */
+  fdh_min_distance_fn vertex_face_ccd;
+  fdh_min_distance_fn edge_edge_ccd;
+  int time_promise; /* an fdh_time_promise, against the exact earliest time within min_distance */
+  fdh_min_distance_toi_fn vertex_face_toi;
+  fdh_min_distance_toi_fn edge_edge_toi;
+};
+
+typedef const struct fdh_min_distance* (*fdh_plugin_min_distance_fn)(void);
+const struct fdh_min_distance* fdh_plugin_min_distance(void);
 
 #ifdef __cplusplus
 }
