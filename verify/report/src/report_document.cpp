@@ -195,6 +195,7 @@ void measurement_sections(Out to, const Measurements& m) {
       m.per_point);
   stability_table(to, m.stability);
   toi_stability_section(to, m);
+  fmt::format_to(to, "{}", min_distance_markdown(m));
   fmt::format_to(to,
                  "\n## FDH k\n\nA cloth grid draped over a triangulated sphere ({} triangles), "
                  "the cloth tree swept over one step, traversal with the early-out slab along "
@@ -228,6 +229,11 @@ Report make_report(const CertifyOptions& options, const ProgressSink& progress) 
   step("time of impact");
   m.toi_speed = toi_speed(m.per_family, options.seed, progress);
   m.toi_stability = toi_stability(m.per_point, options.seed, progress);
+  step("minimum separation");  // few queries: the exact twin at δ > 0 costs more per query
+  m.per_delta = options.quick ? 10 : 40;
+  m.per_delta_point = options.quick ? 20 : 60;
+  m.min_distance_speed = min_distance_speed(m.per_delta, options.seed, progress);
+  m.min_distance_stability = min_distance_stability(m.per_delta_point, options.seed, progress);
   step("FDH k");
   for (const int grid : {30, 50, 100}) {
     const std::vector<KdopTreeRow> rows = kdop_tree(grid);
@@ -260,6 +266,8 @@ std::vector<std::string> report_outputs() {
           "data/toi_speed.csv",
           "data/toi_stability.csv",
           "data/kdop_tree.csv",
+          "data/min_distance_speed.csv",
+          "data/min_distance_stability.csv",
           "speed_accuracy.png",
           "speed_accuracy.svg",
           "stability.png",
@@ -270,6 +278,10 @@ std::vector<std::string> report_outputs() {
           "toi_stability.svg",
           "kdop_k.png",
           "kdop_k.svg",
+          "min_distance_speed.png",
+          "min_distance_speed.svg",
+          "min_distance_stability.png",
+          "min_distance_stability.svg",
           "report.md",
           "index.html"};
 }
@@ -287,7 +299,12 @@ void write_report(const Report& report) {
   write_file_atomically((dir / "data/toi_stability.csv").string(),
                         toi_stability_csv(m.toi_stability));
   write_file_atomically((dir / "data/kdop_tree.csv").string(), kdop_tree_csv(m.kdop));
+  write_file_atomically((dir / "data/min_distance_speed.csv").string(),
+                        min_distance_speed_csv(m.min_distance_speed));
+  write_file_atomically((dir / "data/min_distance_stability.csv").string(),
+                        min_distance_stability_csv(m.min_distance_stability));
   draw_report_charts(dir.string(), m);
+  draw_min_distance_charts(dir.string(), m);
   write_file_atomically((dir / "report.md").string(), report_markdown(report));
   write_file_atomically((dir / "index.html").string(), report_html(report, dir.string()));
 }

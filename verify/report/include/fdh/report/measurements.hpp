@@ -3,6 +3,7 @@
 // functions give the rows as the report's data files (docs/formats.md, "report").
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -123,6 +124,50 @@ struct KdopTreeRow {
 // one step, for k = 6, 14, 18, 26.
 std::vector<KdopTreeRow> kdop_tree(int grid);
 
+// One method at one minimum separation δ on the queries of every generator family of one kind
+// (issue 30): rates against the exact twin at that δ.
+struct MinDistanceSpeedRow {
+  std::string method;
+  int exponent = 0;  // δ = 2^-exponent times each query's own size; 0: δ = 0
+  std::string kind;  // "static" or "moving"
+  long queries = 0;  // the queries it answers (a method that does not answer δ > 0 has no row)
+  double ns_per_query = 0, fp_rate = 0, fn_rate = 0;
+};
+
+// The exponents e of δ = 2^-e times a query's size measured, 0 standing for δ = 0: 0, 40, 20, 10.
+const std::array<int, 4>& min_distance_exponents();
+
+// Every method on `per_family` queries of every generator family (family_queries), static and
+// moving apart, at each δ of min_distance_exponents(). A query's size is the largest extent of
+// its points along an axis, rounded down to a power of two (so δ is exact).
+std::vector<MinDistanceSpeedRow> min_distance_speed(long per_family, std::uint64_t seed,
+                                                    const ProgressSink& progress = {});
+
+// The D of the stability of the minimum separation: queries of about unit size asked at δ = D.
+inline constexpr double kMinDistanceStabilityD = 0x1p-20;
+
+// One method on the queries of one point of that stability: their least distance is exactly
+// H = D·(1 + side·2^-p) by construction (side 0: H = D), so the answer is "within" iff side <= 0.
+struct MinDistanceStabilityRow {
+  int side = 0, p = 0;  // side -1: H below D, +1: above
+  std::string method;
+  long queries = 0;
+  double failure_rate = 0;  // the share of its answers that are wrong
+  // Where the chart draws it: side·(60 - p), so that H = D is at 0 and each side's closest
+  // points lie next to it.
+  int x() const { return side * (60 - p); }
+};
+
+// The p of each side: 10, 15, ..., 50.
+const std::vector<int>& min_distance_stability_steps();
+
+// `per_point` queries per point (side, p), of five configurations in turn (a point over a
+// face's interior, beside an edge, beyond a corner; parallel edges; crossing edges), each at
+// least H apart at every time and exactly H apart at some, their axes permuted; every method
+// that answers them (the twin included) asked at δ = D.
+std::vector<MinDistanceStabilityRow> min_distance_stability(long per_point, std::uint64_t seed,
+                                                            const ProgressSink& progress = {});
+
 // The data files, header line first:
 //   method,family,queries,ns_per_query,fp_rate,fn_rate,kind
 std::string speed_accuracy_csv(const std::vector<SpeedAccuracyRow>& rows);
@@ -138,5 +183,9 @@ std::string toi_stability_csv(const std::vector<ToiStabilityRow>& rows);
 //   k,grid,cloth_triangles,obstacle_triangles,build_ms,refit_ms,traverse_ms,candidate_pairs,
 // with a blank line between grids (gnuplot draws one line per block).
 std::string kdop_tree_csv(const std::vector<KdopTreeRow>& rows);
+//   method,delta,kind,queries,ns_per_query,fp_rate,fn_rate (delta: 0 or 2^-e, times the size)
+std::string min_distance_speed_csv(const std::vector<MinDistanceSpeedRow>& rows);
+//   side,p,x,method,queries,failure_rate
+std::string min_distance_stability_csv(const std::vector<MinDistanceStabilityRow>& rows);
 
 }  // namespace fdh::verify

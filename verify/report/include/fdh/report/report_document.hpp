@@ -20,6 +20,11 @@ struct Measurements {
   std::vector<ToiSpeedRow> toi_speed;          // on the moving families of `speed`
   std::vector<ToiStabilityRow> toi_stability;  // per_point queries per parameter value
   std::vector<KdopTreeRow> kdop;               // one block of k per cloth grid: 30, 50, 100
+  // The minimum separation (issue 30): per_delta queries per family at each δ, and
+  // per_delta_point queries per point of its stability.
+  long per_delta = 0, per_delta_point = 0;
+  std::vector<MinDistanceSpeedRow> min_distance_speed;
+  std::vector<MinDistanceStabilityRow> min_distance_stability;
 };
 
 struct Report {
@@ -47,6 +52,10 @@ std::string report_markdown(const Report& report);
 void draw_report_charts(const std::string& dir, const Measurements& m);
 // The two time-of-impact charts of those (toi_speed, toi_stability).
 void draw_toi_charts(const std::string& dir, const Measurements& m);
+// The two minimum-separation charts (min_distance_speed, min_distance_stability).
+void draw_min_distance_charts(const std::string& dir, const Measurements& m);
+// report.md's minimum-separation section; empty when nothing of it was measured.
+std::string min_distance_markdown(const Measurements& m);
 
 // The certificate's part of report.md (certificate.md without its title): what `fdhcert
 // report` prints when it is done.
