@@ -126,6 +126,62 @@ TEST(Measurements, TheRatesAreTheSameForAnyThreadCount) {
   EXPECT_GT(lines(stab), 100u);
 }
 
+const Method& method_named(const std::string& name) {
+  static const std::vector<Method> methods = all_methods();
+  for (const Method& m : methods)
+    if (m.name == name) return m;
+  throw std::invalid_argument(name);
+}
+
+// At δ = 0 every method has its rows; above, only the methods that answer δ > 0.
+TEST(Measurements, MinimumSeparationSpeedAsksEachDeltaOfTheMethodsThatAnswerIt) {
+  const std::vector<MinDistanceSpeedRow> rows = min_distance_speed(2, 1);
+  std::set<std::string> at_zero;
+  for (const MinDistanceSpeedRow& r : rows) {
+    if (r.exponent == 0) at_zero.insert(r.method + " " + r.kind);
+    EXPECT_TRUE(r.exponent == 0 || method_named(r.method).answers_min_distance) << r.method;
+    EXPECT_GE(r.fp_rate + r.fn_rate, 0);
+    EXPECT_LE(r.fp_rate + r.fn_rate, 1);
+  }
+  EXPECT_TRUE(at_zero.count("robust static") && at_zero.count("robust moving"));
+  EXPECT_EQ(lines(min_distance_speed_csv(rows)), rows.size() + 1);
+}
+
+// The queries' least distance is H = D·(1 + s) by construction: the twin, where it answers δ,
+// is never wrong, and a row's place on the chart puts D at 0.
+TEST(Measurements, MinimumSeparationStabilityIsRightForTheTwinByConstruction) {
+  const std::vector<MinDistanceStabilityRow> rows = min_distance_stability(10, 3);
+  for (const MinDistanceStabilityRow& r : rows) {
+    EXPECT_TRUE(method_named(r.method).answers_min_distance) << r.method;
+    if (r.method == twin_name()) {
+      EXPECT_EQ(r.failure_rate, 0) << r.side << " " << r.p;
+    }
+    EXPECT_EQ(r.x(), r.side * (60 - r.p));
+  }
+  EXPECT_EQ(lines(min_distance_stability_csv(rows)), rows.size() + 1);
+}
+
+TEST(Report, TheMinimumSeparationSectionComesFromItsRows) {
+  Measurements m;
+  EXPECT_EQ(min_distance_markdown(m), "");  // not measured: no section
+  m.per_delta = 7;
+  m.min_distance_speed = {{"robust", 0, "static", 7, 12.5, 0, 0},
+                          {"robust", 20, "static", 7, 30, 0, 0},
+                          {"float-cubic", 20, "static", 7, 10, 0.25, 0.5}};
+  m.min_distance_stability = {{-1, 50, "robust", 10, 0},
+                              {1, 50, "robust", 10, 0},
+                              {-1, 50, "float-cubic", 10, 0.5},
+                              {1, 40, "float-cubic", 10, 0.2}};
+  const std::string md = min_distance_markdown(m);
+  EXPECT_NE(md.find("| static | robust | 12.5 ns, FP 0, FN 0 | n/a | 30.0 ns, FP 0, FN 0 | n/a |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| static | float-cubic | n/a | n/a | 10.0 ns, FP 0.25, FN 0.5 | n/a |"),
+            std::string::npos);
+  EXPECT_NE(md.find("| robust | 0 | 0 | never |"), std::string::npos);
+  EXPECT_NE(md.find("| float-cubic | 5 | 2 | s = -2^-50 |"), std::string::npos) << md;
+}
+
 Certificate two_promises() {
   Certificate c;
   c.commit = "abc";
