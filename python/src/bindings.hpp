@@ -13,6 +13,10 @@
 
 #include "fdh/query.hpp"
 
+namespace fdh::verify {
+struct Method;  // fdh/check/registry.hpp
+}
+
 namespace fdh::python {
 
 namespace py = pybind11;
@@ -32,9 +36,10 @@ void add_toi(py::module_& m);
 void add_audit(py::module_& m);
 
 // An N×8×3 array as N queries of `kind` (the order of fdh::Query: vertex-face v f0 f1 f2 at t = 0,
-// then at t = 1; edge-edge ea0 ea1 eb0 eb1, then at t = 1). ValueError for another shape or a
-// non-finite coordinate, naming the query.
-std::vector<Query> queries_of(const Points& a, QueryKind kind);
+// then at t = 1; edge-edge ea0 ea1 eb0 eb1, then at t = 1), each asking about the minimum
+// separation `min_distance` (0: contact). ValueError for another shape, a non-finite coordinate
+// (naming the query) or a min_distance that is not finite and >= 0.
+std::vector<Query> queries_of(const Points& a, QueryKind kind, double min_distance = 0);
 
 // An array (or anything numpy makes one of) of coordinates as float64, refusing what the
 // conversion would change: integers beyond 2^53 in magnitude, complex numbers, floats longer
@@ -53,6 +58,9 @@ void check_signals();
 
 // How often the long loops call check_signals: every so many queries (about a millisecond).
 inline constexpr std::size_t kQueriesPerSignalCheck = 1 << 14;
+
+// ValueError when `min_distance` > 0 and method `m` answers contact only.
+void check_answers_min_distance(const verify::Method& m, double min_distance);
 
 // "vertex-face" or "edge-edge"; ValueError naming the choices otherwise.
 QueryKind kind_named(const std::string& name);
