@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -12,10 +15,14 @@
 #include "fdh/check/classify.hpp"
 #include "fdh/check/registry.hpp"
 #include "fdh/plugin/loader.hpp"
+#include "temp_dir.hpp"
 #include "test_data.hpp"
+#include "text_file.hpp"
 
 namespace fdh::verify {
 namespace {
+
+namespace fs = std::filesystem;
 
 // Loads one plug-in in this process for one test, and ends the run after it.
 class Loaded {
@@ -165,6 +172,28 @@ TEST(PluginMinDistance, TheCheckerHoldsTheLinfExampleToItsPromiseAtADelta) {
   EXPECT_EQ(linf.tally.fn, 0);
   EXPECT_EQ(linf.against_exact.broken, 0);
   EXPECT_GE(linf.against_exact.allowed, 2);  // the two diagonals at 1.25 h (and 1.5 h)
+}
+
+// certify holds the example to both its promises, the verdicts' and the times' (at the δ of
+// the queries it checks: 0 until certify takes --min-distance).
+TEST(PluginMinDistance, CertifyCertifiesTheLinfExample) {
+  const fs::path out = fresh_temp_dir("linf_certify"), corpus = fresh_temp_dir("linf_corpus");
+  fs::copy(FDH_SOURCE_DIR "/corpus/queries", corpus / "queries");
+  const CliRun r =
+      fdhcert({"certify", "--quick", "--plugin", FDH_LINF_PLUGIN, "--corpus", corpus.string(),
+               "--out", out.string(), "--per-family", "10", "--soups", "1", kData + "moving.vf"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json c = nlohmann::json::parse(text_of(out / "certificate.json"));
+  std::set<std::string> decisions;
+  for (const auto& p : c["promises"])
+    if (p["method"] == "linf") {
+      EXPECT_EQ(p["promise"], "conservative");
+      EXPECT_GT(p["checked"], 0);
+      EXPECT_EQ(p["violations"], 0);
+      decisions.insert(p["decision"].get<std::string>());
+    }
+  EXPECT_EQ(decisions.size(), 3u);  // point-triangle, vertex-face-ccd, edge-edge-ccd
+  EXPECT_TRUE(has(text_of(out / "certificate.md"), "`linf`"));
 }
 
 }  // namespace

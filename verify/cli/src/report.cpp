@@ -36,6 +36,14 @@ The verification report, as `./run verify` makes it (into docs/report):
                               edge and the depth of a tangential dip go to 0
   DIR/kdop_k.png/svg          FDH tree build, refit and traversal time against
                               candidate pairs, k = 6, 14, 18, 26
+  DIR/min_distance_speed.png/svg
+                              the minimum separation δ: ns per query against
+                              FP + FN per method at δ = 0, 2^-40, 2^-20, 2^-10
+                              times each query's size
+  DIR/min_distance_stability.png/svg
+                              which methods answer right at δ = D as the true
+                              least distance D(1 + s) approaches D from below
+                              and above (s = ±2^-10 ... ±2^-50)
   DIR/report.md               all of it, with tables
   DIR/index.html              the same as one page to browse: the charts inline
                               (hover a point for its method, family, FP, FN
