@@ -80,9 +80,9 @@ Chart delta_stability_chart(const fs::path& dir, const Measurements& m) {
   for (const int p : min_distance_stability_steps())
     tics.push_back(fmt::format("'-2^-{0}' {1}, '+2^-{0}' {2}", p, -(60 - p), 60 - p));
   return {(dir / "min_distance_stability").string(), 1300, 650,
-          fmt::format("set title \"Minimum separation: share of answers wrong at δ = D = 2^-20 "
-                      "as the true least distance D·(1 + s) approaches D (within: s <= 0), {} "
-                      "queries per point; 0 drawn at 1e-4\"\nset logscale y\n"
+          fmt::format("set title \"Minimum separation: answers wrong at δ = D = 2^-20 as the least "
+                      "distance D·(1 + s) nears D (within iff s <= 0)\\n{} queries per point; 0 "
+                      "drawn at 1e-4\"\nset logscale y\n"
                       "set yrange [1e-4:1.5]\nset ylabel 'failure rate'\n"
                       "set xlabel 's (below D: left; above D: right)'\nset xtics ({}) rotate "
                       "by -45\nset key below horizontal\nplot {}\n",
