@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,9 @@ TEST(PluginMinDistance, APlugInWithoutTheExportIsNotApplicableAboveZero) {
   EXPECT_FALSE(m.answers_min_distance);
   EXPECT_TRUE(m.applies_to(above_face()));
   EXPECT_FALSE(m.applies_to(at(above_face(), h)));
+  // Asked all the same, it says so rather than calling a function it does not have.
+  EXPECT_THROW(m.hit(at(above_face(), h)), std::logic_error);
+  EXPECT_THROW(m.time_of_impact(at(above_face(), h), kDefaultToiWidth), std::logic_error);
 }
 
 TEST(PluginMinDistance, AStructThatLeavesADecisionOutIsRefused) {

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "elf_machine.hpp"
@@ -229,6 +230,13 @@ bool verdict(const LoadedPtr& p, const CallSite& site, int r) {
   return r == 1;
 }
 
+// A query with δ > 0 asked of a decision without a δ function: the caller should have seen that
+// the method does not apply (Method::applies_to, gives_toi), and no plug-in is to blame.
+[[noreturn]] void not_answered(const LoadedPtr& p, const Query& q) {
+  throw std::logic_error("plug-in " + p->name + " was asked about min_distance " +
+                         shortest(q.min_distance) + ", which it does not answer (n/a)");
+}
+
 // One decision's functions: at contact (`contact`) and within δ (`within`); either may be null.
 struct Verdicts {
   fdh_query_fn contact = nullptr;
@@ -244,6 +252,7 @@ QueryTest query_test(const LoadedPtr& p, const Verdicts& f) {
     Points8 x;
     points_of(q, x);
     const bool at_contact = f.contact && q.min_distance == 0;
+    if (!at_contact && !f.within) not_answered(p, q);
     const CallSite site{p->name.c_str(), at_contact ? f.contact_name : f.within_name, &q};
     int r;
     {
@@ -269,6 +278,7 @@ QueryToi query_toi(const LoadedPtr& p, const Times& f) {
     Points8 x;
     points_of(q, x);
     const bool at_contact = f.contact && q.min_distance == 0;
+    if (!at_contact && !f.within) not_answered(p, q);
     const CallSite site{p->name.c_str(), at_contact ? f.contact_name : f.within_name, &q};
     double lo = 1, hi = 1;
     int r;
