@@ -54,14 +54,15 @@ std::string delta_speed_panel(const Measurements& m, const std::string& kind) {
 }
 
 Chart delta_speed_chart(const fs::path& dir, const Measurements& m) {
-  return {(dir / "min_distance_speed").string(), 1500, 650,
-          fmt::format("set multiplot layout 1,2 title \"Minimum separation: speed against "
-                      "accuracy at δ = 0, 2^-40, 2^-20, 2^-10 times each query's size, {} "
-                      "queries per family (fdhcert report)\"\nset logscale x\n"
-                      "set xlabel 'ns per query (log)'\nset ylabel 'error rate (FP + FN) vs the "
-                      "exact twin at δ'\nset yrange [-0.02:1.02]\nset key below horizontal\n"
-                      "{}{}unset multiplot",
-                      m.per_delta, delta_speed_panel(m, "static"), delta_speed_panel(m, "moving"))};
+  return {
+      (dir / "min_distance_speed").string(), 1300, 1000,
+      fmt::format("set multiplot layout 2,1 title \"Minimum separation: speed against "
+                  "accuracy at δ = 0, 2^-40, 2^-20, 2^-10 times each query's size, {} "
+                  "queries per family (fdhcert report)\"\nset logscale x\n"
+                  "set xlabel 'ns per query (log)'\nset ylabel 'error rate (FP + FN) vs the "
+                  "exact twin at δ'\nset yrange [-0.02:1.02]\nset key outside right top vertical\n"
+                  "{}{}unset multiplot",
+                  m.per_delta, delta_speed_panel(m, "static"), delta_speed_panel(m, "moving"))};
 }
 
 Chart delta_stability_chart(const fs::path& dir, const Measurements& m) {
