@@ -120,7 +120,7 @@ def test_the_answers_equal_the_programs_on_the_same_queries(delta, tmp_path):
         path, out = tmp_path / f"q.{kind}", tmp_path / f"{kind}.csv"
         write_vf(path, kind, queries)
         r = subprocess.run([FDHCERT, "classify", path, "--methods", ",".join(methods),
-                            "--min-distance", delta.hex(), "--per-query", out],
+                            "--min-distance", repr(delta), "--per-query", out],
                            capture_output=True, text=True)
         assert r.returncode == 0, r.stderr
         rows = list(csv.DictReader(out.open()))
