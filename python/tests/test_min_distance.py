@@ -115,11 +115,12 @@ def write_vf(path, kind, queries):
 def test_the_answers_equal_the_programs_on_the_same_queries(delta, tmp_path):
     methods = [m for m in ("exact", "robust", "float-cubic")
                if delta == 0 or m in fdhcert.min_distance_methods()]
-    for kind, test, queries in (("vf", fdhcert.vertex_face_ccd, known_vertex_face()),
-                                ("ee", fdhcert.edge_edge_ccd, known_edge_edge())):
+    cases = (("vf", fdhcert.vertex_face_ccd, fdhcert.vertex_face_toi, known_vertex_face()),
+             ("ee", fdhcert.edge_edge_ccd, fdhcert.edge_edge_toi, known_edge_edge()))
+    for kind, test, toi, queries in cases:
         path, out = tmp_path / f"q.{kind}", tmp_path / f"{kind}.csv"
         write_vf(path, kind, queries)
-        r = subprocess.run([FDHCERT, "classify", path, "--methods", ",".join(methods),
+        r = subprocess.run([FDHCERT, "classify", path, "--methods", ",".join(methods), "--toi",
                             "--min-distance", repr(delta), "--per-query", out],
                            capture_output=True, text=True)
         assert r.returncode == 0, r.stderr
@@ -127,3 +128,9 @@ def test_the_answers_equal_the_programs_on_the_same_queries(delta, tmp_path):
         for method in methods:
             mine = test(queries, method, min_distance=delta)
             assert [int(row[method]) for row in rows] == [int(v) for v in mine], (method, delta)
+            hit, t_lo, t_hi = toi(queries, method, 2.0**-30, min_distance=delta)
+            for i, row in enumerate(rows):  # the program's enclosure, empty without a hit
+                lo, hi = row[f"{method} t_lo"], row[f"{method} t_hi"]
+                assert bool(hit[i]) == (lo != ""), (method, delta, i)
+                if hit[i]:
+                    assert (t_lo[i], t_hi[i]) == (float(lo), float(hi)), (method, delta, i)
