@@ -1,7 +1,7 @@
-# The labels of fdh_tests' tests beyond `unit`, by test name (Suite.Test, whatever file or folder
+# The labels of fdh_tests' tests: `unit`, or those given here by test name (Suite.Test, whatever file or folder
 # holds it). ctest reads this after the tests are discovered (tests/CMakeLists.txt), with their
-# names in fdh_tests_TESTS; a name that no longer exists labels nothing. A test named here loses
-# `unit` (fast, in-process) for the labels it is given (docs/building.md, "Tests by label"):
+# names in fdh_tests_TESTS; a name that no longer exists labels nothing. A test named here has
+# the labels it is given instead of `unit` (fast, in-process; docs/building.md, "Tests by label"):
 #   whole-job  a whole fdhcert job through the program (scene runs, report and fuzz killed and
 #              resumed, certify with a one-thread plug-in): minutes under the sanitizers, left
 #              out there (.ci/run)
@@ -45,7 +45,8 @@ foreach(test IN LISTS fdh_tests_TESTS)
       list(APPEND labels ${label})
     endif()
   endforeach()
-  if(labels)
-    set_tests_properties(${test} PROPERTIES LABELS "${labels}")
+  if(NOT labels)
+    set(labels unit)
   endif()
+  set_tests_properties(${test} PROPERTIES LABELS "${labels}")
 endforeach()
