@@ -1,6 +1,6 @@
 /* A plug-in of ABI version 2 that takes settings (fdh_plugin_init) and declares flags
-   (fdh_plugin_flags), for tests/verify/plugin/test_plugin.cpp and the budget test of
-   tests/CMakeLists.txt. It says "hit" to every query (conservative: it misses no hit), unless
+   (fdh_plugin_flags), for the settings and budget tests of
+   tests/verify/plugin/test_plugin_settings.cpp. It says "hit" to every query (conservative: it misses no hit), unless
    told otherwise:
      delay=SECONDS     each call sleeps that long first (a slow library; default 0)
      answer=0          it says "no" to every query instead (and so breaks its promise)
