@@ -189,6 +189,29 @@ TEST(ExactSeparation, TheWindowIsSearchedOnly) {
   EXPECT_FALSE(ccd_toi(q, 0.875, 1, 0x1p-30).hit);
 }
 
+TEST(ExactSeparation, ExtremeDistancesStayExact) {
+  // The falling point meets the face at t = 1/2: within the smallest subnormal δ a hair before,
+  // within 2^-1000 a little before that; within 1e300 (far beyond the scene) from the start.
+  const Vec3 p0{0.25, 0.25, 1}, p1{0.25, 0.25, -1};
+  expect_exact_time(point_past_triangle(p0, p1, 0x1p-40), 0.5 - 0x1p-41);  // |1 - 2t| <= δ
+  for (const double d : {0x1p-1074, 0x1p-1000}) {  // t* = 1/2 - δ/2: no double but 1/2 near
+    SCOPED_TRACE(d);
+    const Query q = point_past_triangle(p0, p1, d);
+    const double below = std::nextafter(0.5, 0.0);
+    EXPECT_EQ(compare_with_toi(q, 0.5), 1);
+    EXPECT_EQ(compare_with_toi(q, below), -1);
+    EXPECT_LT(compare_distance_at(q, 0.5), 0);
+    EXPECT_GT(compare_distance_at(q, below), 0);
+    const Toi toi = ccd_toi(q, 0, 1, kMinToiWidth);
+    EXPECT_EQ(toi.t_lo, below);
+    EXPECT_EQ(toi.t_hi, 0.5);
+  }
+  expect_exact_time(point_past_triangle(p0, p1, 1e300), 0);
+  const Vec3 far{1e20, -3e19, 7e18};
+  EXPECT_FALSE(ccd_hit(point_past_triangle(far, far, 1e19)));
+  EXPECT_TRUE(ccd_hit(point_past_triangle(far, far, 1.1e20)));
+}
+
 TEST(ExactSeparation, BadDistancesAreRefused) {
   Query q = point_past_triangle({0, 0, 1}, {0, 0, 1}, -1);
   EXPECT_THROW(ccd_hit(q), std::invalid_argument);
