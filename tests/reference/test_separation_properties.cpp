@@ -8,12 +8,15 @@
 #include <rapidcheck.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "../properties/test_name.hpp"
 #include "fdh/exact/ccd.hpp"
 #include "fdh/exact/distance.hpp"
+#include "fdh/gen/rapidcheck.hpp"
 #include "fdh/io/query_io.hpp"
 
 namespace fdh::exact {
@@ -90,6 +93,36 @@ TEST(SeparationProperties, WithinDeltaIsMonotoneInDelta) {
     RC_ASSERT(compare_with_toi(wider, toi.t_hi) >= 0);  // t*_wider <= t*_δ <= t_hi
   }));
 }
+
+// A moving family's query (near-contact constructions, large and tiny coordinates) within
+// δ = 2^-k of its largest coordinate: the enclosure against compare_with_toi and CGAL, and a
+// contact within δ no later.
+class SeparationFamily : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SeparationFamily, AgreesWithCgalAndContact) {
+  const verify::Family& f = *verify::family_named(GetParam());
+  EXPECT_TRUE(rc::check("separation-family/" + f.name, [&f] {
+    Query q = (*verify::gen_family(f)).query;
+    const Toi contact = ccd_toi(q, 0, 1, 0x1p-30);
+    double scale = 0;
+    for (const Vec3& p : q.x)
+      scale = std::max({scale, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    RC_PRE(scale > 0);
+    q.min_distance = std::ldexp(scale, -*rc::gen::element(10, 20, 40));
+    const Toi toi = ccd_toi(q, 0, 1, 0x1p-30);
+    RC_ASSERT(toi.hit == ccd_hit(q));
+    if (contact.hit) RC_ASSERT(toi.hit && compare_with_toi(q, contact.t_hi) >= 0);
+    for (const double t : {0.0, 0.25, 0.5, 0.75, 1.0})
+      if (compare_distance_at(q, t) <= 0) RC_ASSERT(toi.hit && compare_with_toi(q, t) >= 0);
+    if (!toi.hit) return;
+    RC_ASSERT(toi.t_hi - toi.t_lo <= 0x1p-30);
+    RC_ASSERT(compare_with_toi(q, toi.t_lo) <= 0 && compare_with_toi(q, toi.t_hi) >= 0);
+    if (compare_with_toi(q, toi.t_lo) < 0) RC_ASSERT(compare_distance_at(q, toi.t_lo) > 0);
+  }));
+}
+
+INSTANTIATE_TEST_SUITE_P(All, SeparationFamily, ::testing::ValuesIn(verify::family_names(true)),
+                         [](const auto& info) { return test_name(info.param); });
 
 TEST(SeparationProperties, ASampleContactIsWithinEveryDeltaNoLater) {
   namespace fs = std::filesystem;
