@@ -22,7 +22,11 @@ py::dict summary_of(const verify::SceneRun& r) {
   s["grid"] = r.grid, s["frames"] = r.frames, s["particles"] = r.particles, s["dt"] = r.dt;
   s["ms_per_frame"] = r.ms_per_frame(), s["candidates"] = r.candidates;
   s["collisions"] = r.collisions, s["fp"] = r.fp, s["fn"] = r.fn;
-  s["inside"] = r.audit.inside, s["crossing"] = r.audit.crossing;
+  // The exact frame audit (None when not checked): the counts of simulate --json.
+  s["crossing"] = r.audited_frames ? py::object(py::int_(r.audit.obstacle_intersections))
+                                   : py::object(py::none());
+  s["self_crossing"] =
+      r.self_audited ? py::object(py::int_(r.audit.self_intersections)) : py::object(py::none());
   return s;
 }
 

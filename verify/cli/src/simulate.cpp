@@ -34,9 +34,10 @@ Prints the mean time per frame split into those five parts, the candidate
 pairs and collisions, and two checks, both untimed:
   accuracy  every narrow-phase query against the exact point-triangle test
             (false positives and false negatives);
-  audit     after every frame, the exact count of cloth particles strictly
-            inside an obstacle and of cloth edges crossing an obstacle
-            triangle, summed over the frames.)";
+  audit     after every frame (or the scene's audit_every-th and the last),
+            the exact count of cloth triangles meeting an obstacle
+            triangle (touching counts), summed over the frames: the
+            engine of `fdhcert audit`, each frame on its own.)";
 
 const char* const kSimulateFooter =
     R"(If the scene's dt is above the cloth's stable step (it shrinks as the grid
@@ -159,9 +160,9 @@ void print_counts(std::ostream& out, const SimulateOptions& o, const cloth::Scen
         "test\n",
         r.fp, r.fn);
     out << fmt::format(
-        "audit (exact)  {} particles inside, {} crossing edges, summed over the "
-        "frames (last frame: {} and {})\n",
-        r.audit.inside, r.audit.crossing, r.audit_last_inside, r.audit_last_crossing);
+        "audit (exact)  {} cloth triangles meeting an obstacle triangle, summed over the "
+        "frames (last frame: {})\n",
+        r.audit.obstacle_intersections, r.audit_last.obstacle_intersections);
   }
   if (scene.self_collision)
     out << fmt::format(
@@ -171,9 +172,9 @@ void print_counts(std::ostream& out, const SimulateOptions& o, const cloth::Scen
         r.self_zone_particles, r.self_stops);
   if (r.self_audited)
     out << fmt::format(
-        "self (exact)   {} cloth edges through the cloth's own triangles, summed "
-        "over the frames\n",
-        r.audit.self_crossing);
+        "self (exact)   {} pairs of cloth triangles sharing no particle that meet, "
+        "summed over the frames\n",
+        r.audit.self_intersections);
   if (!o.png.empty()) out << "picture        " << o.png << "\n";
   if (!o.movie.empty() && r.frames > 0) out << "movie          " << o.movie << "\n";
   if (!o.record.empty()) out << "queries        " << o.record << "\n";
@@ -255,8 +256,8 @@ void add_scene_options(CLI::App& cmd, SimulateOptions& o) {
       ->type_name("on|off")
       ->check(one_of({"on", "off"}));
   cmd.add_flag("--audit-self", o.run.audit_self,
-               "count self-crossings (cloth edges through the cloth's own\n"
-               "triangles) even without the self-collision pass");
+               "count self-crossings (cloth triangles meeting cloth triangles\n"
+               "that share no particle) even without the self-collision pass");
 }
 
 void add_output_options(CLI::App& cmd, SimulateOptions& o) {
