@@ -4,7 +4,7 @@
 
 #include "bindings.hpp"
 #include "fdh/io/scene_file.hpp"
-#include "fdh/run/scene_run.hpp"
+#include "fdh/scene/scene_run.hpp"
 
 namespace fdh::python {
 namespace {

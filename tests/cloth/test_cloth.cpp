@@ -22,7 +22,7 @@
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_file.hpp"
-#include "fdh/run/scene_run.hpp"
+#include "fdh/scene/scene_run.hpp"
 #include "temp_dir.hpp"
 
 namespace fdh::cloth {

@@ -19,7 +19,7 @@
 #include "fdh/report/report_html.hpp"
 #include "fdh/report/report_summary.hpp"
 #include "fdh/run/build_info.hpp"
-#include "fdh/run/scene_report.hpp"
+#include "fdh/scene/scene_report.hpp"
 #include "fdh/table1/table1.hpp"
 #include "temp_dir.hpp"
 

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/run/scene_report.hpp"
+#include "fdh/scene/scene_report.hpp"
 #include "progress.hpp"
 #include "suite_commands.hpp"
 

@@ -9,7 +9,7 @@
 
 #include "fdh/io/charts.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/run/scene_report.hpp"
+#include "fdh/scene/scene_report.hpp"
 
 namespace fdh::verify {
 namespace {

@@ -11,7 +11,7 @@
 
 #include "fdh/cloth/scene.hpp"
 #include "fdh/os/progress.hpp"
-#include "fdh/run/scene_run.hpp"
+#include "fdh/scene/scene_run.hpp"
 
 namespace fdh::verify {
 

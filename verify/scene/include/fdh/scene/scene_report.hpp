@@ -13,7 +13,7 @@
 #include "fdh/mesh.hpp"
 #include "fdh/os/progress.hpp"
 #include "fdh/run/json_text.hpp"
-#include "fdh/run/scene_run.hpp"
+#include "fdh/scene/scene_run.hpp"
 
 namespace fdh::verify {
 

@@ -1,4 +1,4 @@
-#include "fdh/run/scene_run.hpp"
+#include "fdh/scene/scene_run.hpp"
 
 #include <algorithm>
 #include <optional>

@@ -1,4 +1,4 @@
-#include "fdh/run/scene_report.hpp"
+#include "fdh/scene/scene_report.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
