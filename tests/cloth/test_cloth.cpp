@@ -1,34 +1,24 @@
-// The cloth of issue 3: the response formulas by hand, the meshes, the shipped scenes (stable
-// step, the exact frame audit 0 with robust), a cloth resting on a table for 1,000 frames
-// (audited by the audit engine, every frame and step), and the energy of a swinging pinned cloth.
+// The cloth of issue 3: the response formulas by hand, the meshes, a cloth resting on a table
+// for 1,000 frames (audited by the audit engine, every frame and step), and the energy of a
+// swinging pinned cloth. The shipped scenes are the scene job's (tests/verify/scene/).
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <tuple>
 
 #include "fdh/audit/auditor.hpp"
 #include "fdh/audit/counts.hpp"
-#include "fdh/cli/cli.hpp"
 #include "fdh/cloth/response.hpp"
 #include "fdh/cloth/self_collision.hpp"
 #include "fdh/cloth/simulation.hpp"
 #include "fdh/exact/ccd.hpp"
-#include "fdh/io/input_error.hpp"
-#include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_file.hpp"
 #include "fdh/scene/scene_run.hpp"
-#include "temp_dir.hpp"
 
 namespace fdh::cloth {
 namespace {
 
-namespace fs = std::filesystem;
 const std::string kScenes = FDH_SOURCE_DIR "/corpus/scenes/";
 
 void expect_vec(const Vec3& got, const Vec3& want) {
@@ -213,90 +203,6 @@ TEST(SelfCollision, WindyBarCrossesItselfOnlyWithoutThePass) {
   EXPECT_EQ(r.audit.obstacle_intersections + r.fp + r.fn, 0);
 }
 
-// --- Scenes ---
-
-std::vector<fs::path> shipped_scenes() {
-  std::vector<fs::path> s;
-  for (const auto& e : fs::directory_iterator(kScenes))
-    if (e.path().extension() == ".scene") s.push_back(e.path());
-  std::sort(s.begin(), s.end());
-  return s;
-}
-
-TEST(Scenes, ShipAtLeastTheFourOfThePaperAndAStableStep) {
-  const auto scenes = shipped_scenes();
-  ASSERT_GE(scenes.size(), 4u);
-  for (const auto& p : scenes) {
-    const Scene s = verify::read_scene(p.string());
-    EXPECT_LE(s.dt, Cloth(s.cloth).stable_dt()) << p << ": a shipped scene must be stable";
-  }
-}
-
-TEST(Scenes, BadInputNamesTheFileAndLine) {
-  const fs::path dir = fresh_temp_dir("bad_scene");
-  const auto error_of = [&](const std::string& text) {
-    const std::string path = (dir / "bad.scene").string();
-    std::ofstream(path) << text;
-    try {
-      verify::read_scene(path);
-    } catch (const verify::InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_NE(error_of("grid 10\nwobble 3\n").find("bad.scene:2: unknown keyword 'wobble'"),
-            std::string::npos);
-  EXPECT_NE(error_of("grid 1\n").find("bad.scene:1: grid must be"), std::string::npos);
-  EXPECT_NE(error_of("# c\nsphere 0 0 0\n").find("bad.scene:2: 'sphere' takes 4 to 5"),
-            std::string::npos);
-  EXPECT_NE(error_of("box 0 0 0 1 -1 1\n").find("bad.scene:1: box"), std::string::npos);
-  EXPECT_NE(error_of("dt nan\n").find("bad.scene:1: dt: 'nan' is not a finite number"),
-            std::string::npos);
-  EXPECT_NE(error_of("dt 1\ndt 2\n").find("bad.scene:2: 'dt' given twice"), std::string::npos);
-  // Through the CLI: exit status 2 and the same message.
-  std::ostringstream out, err;
-  EXPECT_EQ(verify::run_cli({"simulate", (dir / "bad.scene").string()}, out, err), 2);
-  EXPECT_NE(err.str().find("bad.scene:2"), std::string::npos);
-}
-
-// With robust, every shipped scene ends with nothing inside and no edge crossing, in every
-// frame, and the narrow phase agrees with the exact test on every query. Each scene runs at most
-// 2e6 particle-frames: every 25x25 scene whole, but only the first 50 frames of the 200x200 fold
-// (its whole run takes minutes; `fdhcert scenes`, in ./run verify, audits it).
-TEST(Scenes, RobustKeepsTheAuditAtZeroOnEveryShippedScene) {
-  for (const auto& p : shipped_scenes()) {
-    const Scene s = verify::read_scene(p.string());
-    verify::SceneRunOptions opt;
-    opt.narrow = "robust";
-    opt.frames = verify::bounded_frames(s, s.frames, 2000000);
-    const bool whole = opt.frames == s.frames;
-    const verify::SceneRun r = verify::run_scene(s, opt);
-    EXPECT_FALSE(r.dt_reduced) << p;
-    EXPECT_EQ(r.audit.obstacle_intersections, 0) << p;
-    EXPECT_EQ(r.fp, 0) << p;
-    EXPECT_EQ(r.fn, 0) << p;
-    if (s.self_collision) {
-      EXPECT_TRUE(r.self_audited) << p;
-      EXPECT_EQ(r.audit.self_intersections, 0) << p;
-      if (whole) {
-        EXPECT_GT(r.self_hits, 0) << p << ": the cloth never met itself";
-      }
-    }
-    if (!s.obstacles.empty() && whole) {
-      EXPECT_GT(r.collisions, 0) << p << ": the cloth never arrived";
-    }
-  }
-}
-
-// Without the skin, a point-only test lets cloth edges cut the table's corners: the audit can
-// fail, and does.
-TEST(Scenes, WithoutTheSkinEdgesCutTheTableCorners) {
-  Scene s = verify::read_scene(kScenes + "table.scene");
-  s.thickness = 0;
-  const verify::SceneRun r = verify::run_scene(s, {});
-  EXPECT_GT(r.audit.obstacle_intersections, 0);
-}
-
 // A cloth laid on the table top, just above its skin, stays above the table for 1,000 frames.
 TEST(Cloth, RestingOnTheTableStaysAboveItFor1000Frames) {
   Scene s = verify::read_scene(kScenes + "table.scene");
@@ -347,44 +253,6 @@ TEST(Cloth, SwingingPinnedClothGainsNoEnergyUpToTheStableStep) {
   EXPECT_LE(energy_growth(s, s.dt), 1e-9);      // the shipped step
   EXPECT_LE(energy_growth(s, bound), 1e-9);     // the documented bound itself
   EXPECT_GT(energy_growth(s, 1.5 * bound), 1);  // and the test can fail: beyond it, it explodes
-}
-
-// --- The commands ---
-
-TEST(Simulate, RecordsQueriesThatClassifyReplays) {
-  const fs::path dir = fresh_temp_dir("simulate");
-  const std::string rec = (dir / "run.vf").string(), png = (dir / "last.png").string();
-  std::ostringstream out, err;
-  ASSERT_EQ(
-      verify::run_cli({"simulate", kScenes + "table.scene", "--grid", "10", "--frames", "600",
-                       "--record", rec, "--png", png, "--obj", (dir / "obj").string(), "--json"},
-                      out, err),
-      0)
-      << err.str();
-  for (const char* key : {"\"springs\"", "\"refit\"", "\"traversal\"", "\"narrow\"", "\"response\"",
-                          "\"candidates\"", "\"inside\": 0", "\"crossing\": 0"})
-    EXPECT_NE(out.str().find(key), std::string::npos) << key << " in " << out.str();
-  EXPECT_TRUE(fs::exists(dir / "obj" / "frame_00600.obj"));
-  EXPECT_GT(fs::file_size(png), 1000u);
-  const auto queries = verify::read_query_file(rec);
-  ASSERT_FALSE(queries.empty());
-  std::ostringstream cout_, cerr_;
-  EXPECT_EQ(
-      verify::run_cli({"classify", rec, "--methods", "exact,robust", "--check"}, cout_, cerr_), 0)
-      << cerr_.str();
-}
-
-TEST(Table1, JsonHasOneRowPerMethodKAndGrid) {
-  std::ostringstream out, err;
-  ASSERT_EQ(
-      verify::run_cli({"table1", "--scene", kScenes + "table.scene", "--frames", "3", "--json"},
-                      out, err),
-      0)
-      << err.str();
-  const nlohmann::json j = nlohmann::json::parse(out.str());
-  EXPECT_EQ(j["rows"].size(), 24u);  // 6 rows × 4 grids
-  EXPECT_EQ(j["paper"]["grids"], nlohmann::json({15, 25, 30, 50}));
-  EXPECT_NE(out.str().find("15.27"), std::string::npos);
 }
 
 }  // namespace

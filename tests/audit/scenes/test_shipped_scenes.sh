@@ -44,8 +44,14 @@ for scene in "$repo"/corpus/scenes/*.scene; do
   python3 "$repo/tests/audit/check_audit_json.py" "$dir.audit.json" "$dir/audit" \
     --frames $((frames + 1)) --status "$status" --cloth-vertices $((grid * grid)) >"$dir.check.txt" ||
     { cat "$dir.check.txt"; failed+=("$name (the certificate)"); }
-  python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); sys.exit(s["crossing"] != 0 or s["self_crossing"] != 0)' \
-    "$dir.simulate.json" || failed+=("$name (simulate's frame audit is not clean)")
+  # One line per scene; exit 1 unless simulate's frame audit found nothing.
+  python3 - "$name" "$dir.simulate.json" "$dir.audit.json" <<'PY' || failed+=("$name (simulate's frame audit is not clean)")
+import json, sys
+name, sim, audit = sys.argv[1], json.load(open(sys.argv[2])), json.load(open(sys.argv[3]))
+print(f"{name}: {sim['frames']} frames; simulate's frame audit: crossing {sim['crossing']}, "
+      f"self_crossing {sim['self_crossing']}; fdhcert audit: {audit['summary']}")
+sys.exit(sim["crossing"] != 0 or sim["self_crossing"] != 0)
+PY
   [ "$status" -eq 0 ] || failed+=("$name (fdhcert audit found violations)")
   rm -rf "$dir"  # the fold's frames are large: one scene's on disk at a time
 done

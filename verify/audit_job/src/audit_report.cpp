@@ -1,4 +1,4 @@
-#include "fdh/run/audit_report.hpp"
+#include "fdh/audit_job/audit_report.hpp"
 
 #include <fmt/format.h>
 #include <sys/resource.h>
