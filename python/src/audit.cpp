@@ -63,10 +63,10 @@ class ArrayFrames : public verify::FrameSource {
       : frames_(frames), obstacles_(obstacles), topology_(std::move(t)) {}
   const audit::Topology& topology() const override { return topology_; }
   int frames() const override { return int(frames_.shape(0)); }
-  MeshFrame read(int i) override {
+  verify::MeshFrame read(int i) override {
     py::gil_scoped_acquire gil;
     check_signals();
-    MeshFrame m;
+    verify::MeshFrame m;
     m.index = i;
     m.cloth = frame_of(frames_, i);
     if (obstacles_) m.obstacle = frame_of(*obstacles_, i);

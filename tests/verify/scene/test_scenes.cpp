@@ -72,9 +72,10 @@ TEST(Scenes, BadInputNamesTheFileAndLine) {
 }
 
 // With robust, no cloth triangle of any shipped scene meets an obstacle's (nor, with the
-// self-collision pass, another cloth triangle) in any checked frame, and the narrow phase agrees with the exact test on every query. Each scene runs at most
-// 2e6 particle-frames: every 25x25 scene whole, but only the first 50 frames of the 200x200 fold
-// (its whole run takes minutes; `fdhcert scenes`, in ./run verify, audits it).
+// self-collision pass, another cloth triangle) in any checked frame, and the narrow phase agrees
+// with the exact test on every query. Each scene runs at most 2e6 particle-frames: every 25x25
+// scene whole, but only the first 50 frames of the 200x200 fold (its whole run takes minutes;
+// `fdhcert scenes`, in ./run verify, audits it).
 TEST(Scenes, RobustKeepsTheAuditAtZeroOnEveryShippedScene) {
   for (const auto& p : shipped_scenes()) {
     const Scene s = read_scene(p.string());
@@ -113,11 +114,10 @@ TEST(Simulate, RecordsQueriesThatClassifyReplays) {
   const fs::path dir = fresh_temp_dir("simulate");
   const std::string rec = (dir / "run.vf").string(), png = (dir / "last.png").string();
   std::ostringstream out, err;
-  ASSERT_EQ(
-      run_cli({"simulate", kScenes + "table.scene", "--grid", "10", "--frames", "600",
-                       "--record", rec, "--png", png, "--obj", (dir / "obj").string(), "--json"},
-                      out, err),
-      0)
+  ASSERT_EQ(run_cli({"simulate", kScenes + "table.scene", "--grid", "10", "--frames", "600",
+                     "--record", rec, "--png", png, "--obj", (dir / "obj").string(), "--json"},
+                    out, err),
+            0)
       << err.str();
   for (const char* key : {"\"springs\"", "\"refit\"", "\"traversal\"", "\"narrow\"", "\"response\"",
                           "\"candidates\"", "\"crossing\": 0"})
@@ -127,8 +127,7 @@ TEST(Simulate, RecordsQueriesThatClassifyReplays) {
   const auto queries = read_query_file(rec);
   ASSERT_FALSE(queries.empty());
   std::ostringstream cout_, cerr_;
-  EXPECT_EQ(
-      run_cli({"classify", rec, "--methods", "exact,robust", "--check"}, cout_, cerr_), 0)
+  EXPECT_EQ(run_cli({"classify", rec, "--methods", "exact,robust", "--check"}, cout_, cerr_), 0)
       << cerr_.str();
 }
 

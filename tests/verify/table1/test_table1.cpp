@@ -15,10 +15,9 @@ const std::string kTable1Scenes = FDH_SOURCE_DIR "/corpus/scenes/";
 
 TEST(Table1, JsonHasOneRowPerMethodKAndGrid) {
   std::ostringstream out, err;
-  ASSERT_EQ(
-      run_cli({"table1", "--scene", kTable1Scenes + "table.scene", "--frames", "3", "--json"},
-                      out, err),
-      0)
+  ASSERT_EQ(run_cli({"table1", "--scene", kTable1Scenes + "table.scene", "--frames", "3", "--json"},
+                    out, err),
+            0)
       << err.str();
   const nlohmann::json j = nlohmann::json::parse(out.str());
   EXPECT_EQ(j["rows"].size(), 24u);  // 6 rows × 4 grids
