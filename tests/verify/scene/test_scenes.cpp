@@ -1,11 +1,12 @@
 // The scene job (verify/scene/): the shipped scenes (a stable step; robust keeps the exact frame
 // audit and FP/FN at 0), their bad input, the audit failing without the skin, and simulate's
-// recorded queries, picture and frames.
+// recorded queries, picture and frames; simulate's JSON, and `fdhcert scenes`.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "fdh/cli/cli.hpp"
@@ -13,6 +14,7 @@
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_file.hpp"
+#include "fdh/scene/scene_report.hpp"
 #include "fdh/scene/scene_run.hpp"
 #include "temp_dir.hpp"
 
@@ -129,6 +131,53 @@ TEST(Simulate, RecordsQueriesThatClassifyReplays) {
   std::ostringstream cout_, cerr_;
   EXPECT_EQ(run_cli({"classify", rec, "--methods", "exact,robust", "--check"}, cout_, cerr_), 0)
       << cerr_.str();
+}
+
+TEST(SceneReport, JsonIsSimulatesWithNullsForWhatWasNotCounted) {
+  cloth::Scene scene;
+  scene.name = "s";
+  SceneRunOptions opt;
+  opt.check = false;
+  SceneRun run;
+  run.frames = 2;
+  run.time.springs = 0.001;
+  const auto j = scene_run_json(scene, opt, run);
+  EXPECT_EQ(j["scene"], "s");
+  EXPECT_EQ(j["narrow"], opt.narrow);
+  EXPECT_TRUE(j["fp"].is_null());
+  EXPECT_TRUE(j["crossing"].is_null());
+  EXPECT_TRUE(j["self_crossing"].is_null());
+  EXPECT_DOUBLE_EQ(j["ms_per_frame"]["springs"].get<double>(), 0.5);
+  opt.check = true;
+  EXPECT_EQ(scene_run_json(scene, opt, run)["crossing"], 0);
+  EXPECT_FALSE(scene_run_json(scene, opt, run).contains("inside"));
+}
+
+// The table scene cut to a few frames, alone in a folder.
+std::filesystem::path short_scene_folder() {
+  const std::filesystem::path dir = fresh_temp_dir("scenes_in");
+  std::ifstream in(FDH_SOURCE_DIR "/corpus/scenes/table.scene");
+  std::ofstream out(dir / "table.scene");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("frames", 0) != 0) out << line << "\n";
+  out << "frames 20\n";
+  return dir;
+}
+
+TEST(Scenes, EachSceneGetsAPictureAJsonAndALine) {
+  const std::filesystem::path in = short_scene_folder(), out = fresh_temp_dir("scenes_out");
+  std::ostringstream so, se;
+  ASSERT_EQ(run_cli({"scenes", "--scenes", in.string(), "--out", out.string()}, so, se), 0)
+      << se.str();
+  EXPECT_EQ(so.str().rfind("table ", 0), 0u) << so.str();
+  EXPECT_NE(so.str().find("crossing 0 self-crossing -"), std::string::npos) << so.str();
+  EXPECT_GT(std::filesystem::file_size(out / "table.png"), 1000u);
+  std::ifstream json(out / "table.json");
+  const auto j = nlohmann::json::parse(json);
+  EXPECT_EQ(j["frames"], 20);
+  EXPECT_EQ(j["crossing"], 0);
+  std::ostringstream so2, se2;
+  EXPECT_EQ(run_cli({"scenes", "--scenes", (in / "none").string()}, so2, se2), 2);
 }
 
 }  // namespace
