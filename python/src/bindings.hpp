@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "fdh/query.hpp"
 
 namespace fdh::python {
@@ -53,6 +55,10 @@ void check_signals();
 
 // How often the long loops call check_signals: every so many queries (about a millisecond).
 inline constexpr std::size_t kQueriesPerSignalCheck = 1 << 14;
+
+// A job's JSON object as the dicts, lists, numbers and strings json.loads would give for its
+// text, built directly (json_object.cpp).
+py::object python_object(const nlohmann::ordered_json& j);
 
 // "vertex-face" or "edge-edge"; ValueError naming the choices otherwise.
 QueryKind kind_named(const std::string& name);

@@ -228,6 +228,19 @@ def test_a_scene_runs_into_arrays():
     assert run["triangles"].shape == (2 * 9 * 9, 3)
     assert (run["positions"][-1] == run["final"]).all()
     assert run["summary"]["frames"] == 20 and run["summary"]["particles"] == 100
+    # Not checked: no audit counts.
+    assert run["summary"]["crossing"] is None and run["summary"]["self_crossing"] is None
+
+
+def test_a_checked_scene_has_the_frame_audit():
+    # The exact frame audit of simulate --json (the audit engine): the obstacles, and with the
+    # self-collision pass the cloth against itself.
+    run = fdhcert.simulate(str(SOURCE / "corpus/scenes/windy-bar.scene"), frames=30, grid=8,
+                           check=True)
+    assert run["summary"]["crossing"] == 0 and run["summary"]["self_crossing"] == 0
+    run = fdhcert.simulate(str(SOURCE / "corpus/scenes/table.scene"), frames=10, grid=8,
+                           check=True)
+    assert run["summary"]["crossing"] == 0 and run["summary"]["self_crossing"] is None
 
 
 def test_bad_input_raises_the_programs_message(scratch):

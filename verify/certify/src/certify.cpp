@@ -24,8 +24,8 @@
 #include "fdh/io/scene_schema.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/run/build_info.hpp"
-#include "fdh/run/scene_report.hpp"
-#include "fdh/run/scene_run.hpp"
+#include "fdh/scene/scene_report.hpp"
+#include "fdh/scene/scene_run.hpp"
 
 #include "certifier.hpp"
 

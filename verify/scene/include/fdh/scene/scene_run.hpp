@@ -1,15 +1,18 @@
 // Runs a scene frame by frame with a chosen narrow phase and k, and checks it: every
-// narrow-phase query against the exact point–triangle test (FP, FN), and every frame against
-// the exact audit (particles inside, edges crossing). Shared by `simulate` and `table1`.
+// narrow-phase query against the exact point–triangle test (FP, FN), and every checked frame
+// against the exact frame audit (the audit engine, fdh/audit/auditor.hpp: cloth triangles that
+// meet an obstacle triangle or, when asked, another cloth triangle sharing no particle).
+// Shared by `simulate`, `scenes`, `table1` and Python's fdhcert.simulate.
 #pragma once
 
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "fdh/audit/counts.hpp"
 #include "fdh/check/registry.hpp"
 #include "fdh/cloth/simulation.hpp"
-#include "fdh/exact/audit.hpp"
+#include "fdh/mesh.hpp"
 
 namespace fdh::verify {
 
@@ -18,8 +21,8 @@ struct SceneRunOptions {
   int k = 18;
   int frames = -1;    // < 0: the scene's
   bool check = true;  // FP/FN and the audit (untimed)
-  // Audit the cloth against itself too (exact::self_crossings, every frame). On by default
-  // when the scene runs the self-collision pass.
+  // Audit the cloth against itself too (every checked frame). On by default when the scene
+  // runs the self-collision pass.
   bool audit_self = false;
   // Called once before the first step, with the scene's initial state (frame 0), e.g. to write
   // it as an OBJ (an audit of the frames then covers the first step too).
@@ -34,10 +37,12 @@ struct SceneRun {
   bool dt_reduced = false;  // the scene's Δt was above stable_dt, so 0.9·stable_dt was used
   cloth::FrameTimes time;   // summed over the frames, s
   long candidates = 0, collisions = 0, fp = 0, fn = 0;
-  long broken = 0;           // narrow-phase verdicts that break the method's promise (checker.hpp)
-  exact::AuditCounts audit;  // summed over the checked frames
-  long audited_frames = 0;   // checked: every frame, or the scene's audit_every-th and the last
-  long audit_last_inside = 0, audit_last_crossing = 0;
+  long broken = 0;  // narrow-phase verdicts that break the method's promise (checker.hpp)
+  // The frame audit, each checked frame on its own (no steps: checked frames may be far apart):
+  // obstacle_intersections, and self_intersections when self_audited.
+  audit::AuditCounts audit;       // summed over the checked frames
+  audit::AuditCounts audit_last;  // the last checked frame's
+  long audited_frames = 0;  // checked: every frame, or the scene's audit_every-th and the last
   bool self_audited = false;
   // The self-collision pass: its queries and contacts, and how often each stage of its response
   // ended a frame (fdh/cloth/self_collision.hpp): frames whose contacts took particle stops,
@@ -52,6 +57,9 @@ struct SceneRun {
 
   double ms_per_frame() const { return frames ? 1e3 * time.total() / frames : 0; }
 };
+
+// The scene's obstacles as one triangle mesh.
+TriMesh obstacles_of(const cloth::Scene& scene);
 
 SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt);
 

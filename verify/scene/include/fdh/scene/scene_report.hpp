@@ -13,17 +13,14 @@
 #include "fdh/mesh.hpp"
 #include "fdh/os/progress.hpp"
 #include "fdh/run/json_text.hpp"
-#include "fdh/run/scene_run.hpp"
+#include "fdh/scene/scene_run.hpp"
 
 namespace fdh::verify {
 
-// The object `fdhcert simulate --json` prints (docs/formats.md, "simulate output"); fp, fn,
-// inside and crossing are null when the run was not checked, self_crossing unless audited.
+// The object `fdhcert simulate --json` prints (docs/formats.md, "simulate output"); fp, fn and
+// crossing are null when the run was not checked, self_crossing unless audited.
 nlohmann::ordered_json scene_run_json(const cloth::Scene& scene, const SceneRunOptions& opt,
                                       const SceneRun& run);
-
-// The scene's obstacles as one triangle mesh.
-TriMesh obstacles_of(const cloth::Scene& scene);
 
 // The last frame of `run` rendered to a PNG: the cloth and the scene's obstacles.
 void write_scene_png(const std::string& path, const cloth::Scene& scene, const SceneRun& run);
@@ -69,7 +66,7 @@ std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
                                              const SceneFolderOptions& opt = {});
 
 // One line for people: the scene, its grid and frames, ms per frame, FP and FN, the exact
-// audit (inside, crossing, self-crossing).
+// frame audit (crossing, self-crossing).
 std::string scene_summary_line(const SceneFolderRun& r);
 
 }  // namespace fdh::verify

@@ -1,4 +1,4 @@
-#include "fdh/run/audit_report.hpp"
+#include "fdh/audit_job/audit_report.hpp"
 
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -12,6 +12,9 @@ namespace fdh::verify {
 namespace {
 
 using Json = nlohmann::ordered_json;
+using audit::AuditCounts;
+using audit::count_of;
+using audit::counts_of;
 using audit::ViolationKind;
 
 constexpr ViolationKind kKinds[] = {
@@ -19,20 +22,6 @@ constexpr ViolationKind kKinds[] = {
     ViolationKind::SelfVertexFace,       ViolationKind::SelfEdgeEdge,
     ViolationKind::ClothVertexObstacle,  ViolationKind::ObstacleVertexCloth,
     ViolationKind::ClothEdgeObstacleEdge};
-
-long count_of(const AuditCounts& c, ViolationKind k) {
-  if (const auto counter = audit::counter_of(k)) return c.step.*counter;
-  return k == ViolationKind::SelfIntersection ? c.self_intersections : c.obstacle_intersections;
-}
-
-AuditCounts counts_of(const audit::FrameReport& r) {
-  AuditCounts c;
-  c.self_intersections = r.self_intersections;
-  c.obstacle_intersections = r.obstacle_intersections;
-  c.static_candidates = r.static_candidates;
-  if (r.has_step) c.step = r.step;
-  return c;
-}
 
 // Which of a step violation's four query vertices are the cloth's (the rest are the
 // obstacles'), in fdh::Query's order (vertex-face: v f0 f1 f2; edge-edge: a0 a1 b0 b1).
@@ -97,18 +86,6 @@ std::string frame_counts(const AuditCounts& c, std::size_t frame) {
 }
 
 }  // namespace
-
-void AuditCounts::add(const AuditCounts& c) {
-  self_intersections += c.self_intersections;
-  obstacle_intersections += c.obstacle_intersections;
-  static_candidates += c.static_candidates;
-  step.self_vertex_face += c.step.self_vertex_face;
-  step.self_edge_edge += c.step.self_edge_edge;
-  step.cloth_vertex_obstacle += c.step.cloth_vertex_obstacle;
-  step.obstacle_vertex_cloth += c.step.obstacle_vertex_cloth;
-  step.cloth_edge_obstacle_edge += c.step.cloth_edge_obstacle_edge;
-  step.candidates += c.step.candidates;
-}
 
 AuditReport::AuditReport(const audit::Topology& topology, const audit::Options& options, int keep,
                          bool case_files)

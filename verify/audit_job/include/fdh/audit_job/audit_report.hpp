@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fdh/audit/auditor.hpp"
+#include "fdh/audit/counts.hpp"
 #include "fdh/io/mesh_sequence.hpp"
 #include "fdh/io/query_record.hpp"
 
@@ -33,14 +34,7 @@ struct KeptViolation {
   std::string case_file;            // relative to the --out folder; "" when none is written
 };
 
-// What the certificate counts, per frame and in total.
-struct AuditCounts {
-  long self_intersections = 0, obstacle_intersections = 0;
-  audit::StepCounts step;
-  long static_candidates = 0;
-  long total() const { return self_intersections + obstacle_intersections + step.total(); }
-  void add(const AuditCounts& c);
-};
+using audit::AuditCounts;  // what the certificate counts, per frame and in total
 
 // A kept step violation's case: its query, an id naming the kind, the step and the vertices, the
 // exact truth 1, and `file` its case file.

@@ -1,8 +1,10 @@
-#include "fdh/run/scene_run.hpp"
+#include "fdh/scene/scene_run.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
+#include "fdh/audit/auditor.hpp"
 #include "fdh/check/checker.hpp"
 #include "fdh/exact/ccd.hpp"
 
@@ -12,6 +14,37 @@ int bounded_frames(const cloth::Scene& scene, long frames, long particle_frames)
   const long particles = long(scene.cloth.grid) * scene.cloth.grid;
   return int(std::min({long(scene.frames), frames, std::max(1L, particle_frames / particles)}));
 }
+
+TriMesh obstacles_of(const cloth::Scene& scene) {
+  TriMesh obstacles;
+  for (const auto& o : scene.obstacles) obstacles.append(cloth::obstacle_mesh(o));
+  return obstacles;
+}
+
+namespace {
+
+// The cloth's triangles and the scene's obstacles, as the audit engine takes them.
+audit::Topology audit_topology(const cloth::Scene& scene, const cloth::Simulation& sim) {
+  audit::Topology t;
+  t.cloth_vertices = sim.cloth().n();
+  t.cloth = sim.cloth().triangles();
+  const TriMesh obstacles = obstacles_of(scene);
+  t.obstacle_vertices = int(obstacles.x.size());
+  t.obstacle = obstacles.tris;
+  return t;
+}
+
+// Each checked frame on its own, the cloth against itself only when asked; on every core (as
+// --threads allows), with the engine's own k, as `fdhcert audit`.
+audit::Options frame_audit_options(bool self) {
+  audit::Options o;
+  o.keep = 0;
+  o.steps = false;
+  o.self = self;
+  return o;
+}
+
+}  // namespace
 
 SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
   SceneRun r;
@@ -28,18 +61,14 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
   cloth::Simulation sim(scene, narrow_phase_named(opt.narrow), opt.k, r.dt, &exact::ccd_hit,
                         &exact::ccd_toi);
   r.self_audited = opt.check && (opt.audit_self || scene.self_collision);
-  std::vector<TriMesh> obstacles;
-  for (const auto& o : scene.obstacles) obstacles.push_back(cloth::obstacle_mesh(o));
-  const exact::Audit audit(obstacles);
+  std::optional<audit::Auditor> audit;
+  if (opt.check) audit.emplace(audit_topology(scene, sim), frame_audit_options(r.self_audited));
+  const std::vector<Vec3> obstacles = obstacles_of(scene).x;  // still: the same every frame
   // The exact audit of the cloth as it ends a checked frame.
   const auto audit_frame = [&](const cloth::Simulation& sim) {
     ++r.audited_frames;
-    exact::AuditCounts c = audit.count(sim.cloth().x(), sim.cloth().edges());
-    if (r.self_audited)
-      c.self_crossing =
-          exact::self_crossings(sim.cloth().x(), sim.cloth().edges(), sim.cloth().triangles());
-    r.audit += c;
-    r.audit_last_inside = c.inside, r.audit_last_crossing = c.crossing;
+    r.audit_last = audit::counts_of(audit->add_frame(sim.cloth().x(), obstacles));
+    r.audit.add(r.audit_last);
   };
   r.energy_start = sim.cloth().energy();
   if (opt.on_start) opt.on_start(sim);

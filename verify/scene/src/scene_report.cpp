@@ -1,4 +1,4 @@
-#include "fdh/run/scene_report.hpp"
+#include "fdh/scene/scene_report.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -61,8 +61,7 @@ json scene_run_json(const cloth::Scene& scene, const SceneRunOptions& opt, const
           {"collisions", r.collisions},
           {"fp", counted(opt.check, r.fp)},
           {"fn", counted(opt.check, r.fn)},
-          {"inside", counted(opt.check, r.audit.inside)},
-          {"crossing", counted(opt.check, r.audit.crossing)},
+          {"crossing", counted(opt.check, r.audit.obstacle_intersections)},
           {"self_collision", scene.self_collision},
           {"self_queries", r.self_queries},
           {"self_hits", r.self_hits},
@@ -71,7 +70,7 @@ json scene_run_json(const cloth::Scene& scene, const SceneRunOptions& opt, const
           {"self_zone_particles", r.self_zone_particles},
           {"self_stops", r.self_stops},
           {"self_motion_kept", motion_kept(r)},
-          {"self_crossing", counted(r.self_audited, r.audit.self_crossing)},
+          {"self_crossing", counted(r.self_audited, r.audit.self_intersections)},
           {"energy_start", six_digits(r.energy_start)},
           {"energy_end", six_digits(r.energy_end)}};
 }
@@ -81,12 +80,6 @@ namespace {
 const std::array<double, 3> kCloth = {0.85, 0.25, 0.2}, kObstacles = {0.7, 0.7, 0.65};
 
 }  // namespace
-
-TriMesh obstacles_of(const cloth::Scene& scene) {
-  TriMesh obstacles;
-  for (const auto& o : scene.obstacles) obstacles.append(cloth::obstacle_mesh(o));
-  return obstacles;
-}
 
 void write_scene_png(const std::string& path, const cloth::Scene& scene, const SceneRun& run) {
   const TriMesh obstacles = obstacles_of(scene);
@@ -159,10 +152,11 @@ std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
 std::string scene_summary_line(const SceneFolderRun& r) {
   const SceneRun& s = r.run;
   return fmt::format(
-      "{:<14} {:>3}x{:<3} {:>5} frames {:>8.4f} ms/frame  FP {} FN {}  inside {} crossing {} "
+      "{:<14} {:>3}x{:<3} {:>5} frames {:>8.4f} ms/frame  FP {} FN {}  crossing {} "
       "self-crossing {}",
-      r.scene.name, s.grid, s.grid, s.frames, s.ms_per_frame(), s.fp, s.fn, s.audit.inside,
-      s.audit.crossing, s.self_audited ? std::to_string(s.audit.self_crossing) : "-");
+      r.scene.name, s.grid, s.grid, s.frames, s.ms_per_frame(), s.fp, s.fn,
+      s.audit.obstacle_intersections,
+      s.self_audited ? std::to_string(s.audit.self_intersections) : "-");
 }
 
 }  // namespace fdh::verify

@@ -1,6 +1,6 @@
-// The audit's certificate (fdh/run/audit_report.hpp) from frame reports made by hand: counts,
+// The audit's certificate (fdh/audit_job/audit_report.hpp) from frame reports made by hand: counts,
 // the first violation, the cap, case files, and the JSON's and Markdown's agreement.
-#include "fdh/run/audit_report.hpp"
+#include "fdh/audit_job/audit_report.hpp"
 
 #include <gtest/gtest.h>
 
