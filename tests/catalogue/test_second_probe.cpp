@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "fdh/os/child_process.hpp"
-#include "fdh/run/json_text.hpp"
+#include "fdh/io/json_text.hpp"
 #include "temp_dir.hpp"
 #include "test_data.hpp"
 

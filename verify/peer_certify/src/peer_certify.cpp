@@ -11,7 +11,7 @@
 #include "fdh/io/peer_case_file.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/peers/peers.hpp"
-#include "fdh/run/build_info.hpp"
+#include "fdh/os/build_info.hpp"
 
 namespace fdh::verify {
 namespace fs = std::filesystem;

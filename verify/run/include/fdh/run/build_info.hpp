@@ -1,13 +1,5 @@
-// What this build is: fixed when CMake configures, so that a run never asks git.
+// Moved to fdh/os/build_info.hpp (issue 29). Kept only for the files another change is moving
+// out of verify/run/ (certify's scene runs); it goes with this folder.
 #pragma once
 
-#include <string>
-
-namespace fdh::verify {
-
-// `git rev-parse --short=12 HEAD` of the source tree when the build was configured, or
-// "unknown" outside a git checkout. A new commit re-runs the configure step (the ref files are
-// its dependencies) and recompiles one file.
-std::string build_commit();
-
-}  // namespace fdh::verify
+#include "fdh/os/build_info.hpp"

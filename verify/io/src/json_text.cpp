@@ -1,4 +1,4 @@
-#include "fdh/run/json_text.hpp"
+#include "fdh/io/json_text.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
