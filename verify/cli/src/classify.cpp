@@ -99,7 +99,9 @@ int run_classify(const ClassifyCli& o, const Io& io) {
     print_json(io.out, r.to_json());
   else
     io.out << r.text();
-  io.err << r.findings_text();
+  // Only when there is something to say: standard error is tied to standard output, so a write
+  // to it flushes the output before run_cli checks it (and an error's reason would be lost).
+  if (const std::string found = r.findings_text(); !found.empty()) io.err << found;
   return o.check && r.broken() > 0 ? 1 : 0;
 }
 
