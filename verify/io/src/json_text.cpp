@@ -156,10 +156,6 @@ std::string json_text(const json& j, const std::string& what) {
   return dumped(j, what, 2) + "\n";
 }
 
-std::string json_line(const json& j, const std::string& what) {
-  return dumped(j, what, -1);
-}
-
 double six_digits(double v) {
   // Read back with from_chars: std::stod follows LC_NUMERIC, which a Python host may set.
   const std::string s = fmt::format("{:.6g}", v);
