@@ -106,7 +106,7 @@ py::object audit(const py::object& frames_in, const py::object& faces,
     py::gil_scoped_release release;
     result.emplace(verify::run_audit(source, opt));  // std::invalid_argument: ValueError
   }
-  return python_object(result->to_json());
+  return python_value(result->to_json());
 }
 
 }  // namespace

@@ -14,11 +14,11 @@
 
 #include "fdh/certify/certify.hpp"
 #include "fdh/check/registry.hpp"
+#include "fdh/os/build_info.hpp"
 #include "fdh/report/measurements.hpp"
 #include "fdh/report/report_document.hpp"
 #include "fdh/report/report_html.hpp"
 #include "fdh/report/report_summary.hpp"
-#include "fdh/run/build_info.hpp"
 #include "temp_dir.hpp"
 
 namespace fdh::verify {

@@ -12,7 +12,7 @@
 #include "fdh/io/query_io.hpp"
 #include "fdh/kdop.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/run/json_text.hpp"
+#include "fdh/io/json_text.hpp"
 #include "violation_picture.hpp"
 
 namespace fdh::verify {

@@ -8,7 +8,7 @@
 #include "fdh/audit_job/audit_job.hpp"
 #include "fdh/io/mesh_sequence.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/run/json_text.hpp"
+#include "fdh/io/json_text.hpp"
 #include "progress.hpp"
 #include "threads_option.hpp"
 

@@ -14,7 +14,7 @@
 #include "fdh/io/scene_file.hpp"
 #include "fdh/io/scene_output.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/run/json_text.hpp"
+#include "fdh/io/json_text.hpp"
 
 namespace fdh::verify {
 namespace {

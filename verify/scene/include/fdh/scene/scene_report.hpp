@@ -12,7 +12,7 @@
 #include "fdh/io/movie.hpp"
 #include "fdh/mesh.hpp"
 #include "fdh/os/progress.hpp"
-#include "fdh/run/json_text.hpp"
+#include "fdh/io/json_text.hpp"
 #include "fdh/scene/scene_run.hpp"
 
 namespace fdh::verify {

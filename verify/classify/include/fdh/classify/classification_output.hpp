@@ -14,7 +14,8 @@
 namespace fdh::verify {
 
 struct ReportContext {
-  int gate_k = 0;  // the --gate in force, 0 if none
+  int gate_k = 0;           // the --gate in force, 0 if none
+  double min_distance = 0;  // the δ every query was asked at (0: contact, not mentioned)
 };
 
 // One classification per file, in the order read, and their total.
@@ -24,7 +25,7 @@ struct FileClassification {
 };
 
 // One block per file when there are several, then the total. A method that applies to none of
-// a block's queries shows "n/a".
+// a block's queries shows "n/a". A δ > 0 is named in each block's title line.
 void print_table(std::ostream& os, const std::vector<FileClassification>& files,
                  const Classification& total, const ReportContext& ctx);
 

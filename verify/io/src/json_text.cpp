@@ -1,4 +1,4 @@
-#include "fdh/run/json_text.hpp"
+#include "fdh/io/json_text.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -154,10 +154,6 @@ std::string bytes_of_json_string(std::string_view text) {
 
 std::string json_text(const json& j, const std::string& what) {
   return dumped(j, what, 2) + "\n";
-}
-
-std::string json_line(const json& j, const std::string& what) {
-  return dumped(j, what, -1);
 }
 
 double six_digits(double v) {

@@ -14,9 +14,6 @@ namespace fdh::verify {
 // that is not UTF-8 is written, never an abort.
 std::string json_text(const nlohmann::ordered_json& j, const std::string& what);
 
-// The same, on one line (the Python module's dicts are read from it).
-std::string json_line(const nlohmann::ordered_json& j, const std::string& what);
-
 // Names are bytes (docs/formats.md, "Names that are not UTF-8"): `bytes` as valid UTF-8, by one
 // reversible rule. Each byte 0x80-0xFF that does not belong to a valid UTF-8 sequence (RFC
 // 3629) becomes the private-use character U+EF00 + byte (U+EF80-U+EFFF); a valid sequence is

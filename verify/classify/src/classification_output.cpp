@@ -1,4 +1,4 @@
-#include "fdh/run/classification_output.hpp"
+#include "fdh/classify/classification_output.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -9,7 +9,7 @@
 
 #include "fdh/check/contact.hpp"
 #include "fdh/check/registry.hpp"
-#include "fdh/run/toi_report.hpp"
+#include "fdh/classify/toi_report.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -43,6 +43,7 @@ void print_block(std::ostream& os, const std::string& title, const Classificatio
                  const ReportContext& ctx) {
   os << fmt::format("{}: {}; counted against {}", title, kinds(c), truth_words(c.truth));
   if (ctx.gate_k) os << fmt::format("; paper methods gated by {}-DOP overlap", ctx.gate_k);
+  if (ctx.min_distance > 0) os << fmt::format("; asked at minimum separation {}", ctx.min_distance);
   os << fmt::format("\n  {:<16} {:>8} {:>8} {:>8} {:>8} {:>8} {:>12}\n", "method", "TP", "TN", "FP",
                     "FN", "n/a", "ns/query");
   for (const MethodResult& m : c.methods) {

@@ -1,4 +1,4 @@
-#include "fdh/run/toi_report.hpp"
+#include "fdh/classify/toi_report.hpp"
 
 #include <fmt/format.h>
 

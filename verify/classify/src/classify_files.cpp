@@ -1,6 +1,4 @@
-#include "fdh/run/classify_files.hpp"
-
-#include <optional>
+#include "fdh/classify/classify_files.hpp"
 
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
@@ -8,13 +6,20 @@
 
 namespace fdh::verify {
 
+void ask_at(std::vector<QueryRecord>& records, double min_distance) {
+  for (QueryRecord& r : records) {
+    if (r.query.min_distance != min_distance) r.truth = Truth::Unknown;
+    r.query.min_distance = min_distance;
+  }
+}
+
 ClassifiedFiles classify_files(const std::vector<std::string>& files,
-                               const std::vector<Method>& methods, const std::string& kind) {
-  std::optional<QueryKind> k;
-  if (!kind.empty()) k = kind == "ee" ? QueryKind::EdgeEdge : QueryKind::VertexFace;
+                               const std::vector<Method>& methods, std::optional<QueryKind> kind,
+                               double min_distance) {
   std::vector<std::pair<std::string, std::vector<QueryRecord>>> read;  // every file read first
   for (const std::string& f : files) {
-    std::vector<QueryRecord> qs = read_query_file(f, k);
+    std::vector<QueryRecord> qs = read_query_file(f, kind);
+    ask_at(qs, min_distance);
     if (!qs.empty()) read.emplace_back(f, std::move(qs));
   }
   if (read.empty()) throw InputError(files.empty() ? "" : files.front(), 0, "no query to classify");
