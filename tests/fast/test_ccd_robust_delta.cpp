@@ -1,0 +1,249 @@
+// `robust` within the minimum separation δ (q.min_distance > 0) on its own, before its exact
+// twin: hand-made queries whose distance is known, where the filter must decide (and rightly),
+// and random ones where each certain answer must agree with a brute-force look at the distance
+// in long double: No, the distance sampled densely (and refined around its least sample) stays
+// > δ; Yes, it comes within δ by the time the filter names, and not before the time it
+// names as free. The float baseline
+// (float_cubic at δ > 0) on the queries it should get right.
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "fdh/ccd/float_cubic.hpp"
+#include "fdh/ccd/robust.hpp"
+#include "fdh/ccd/toi.hpp"
+
+namespace fdh {
+namespace {
+
+using L = long double;
+struct P {
+  L x, y, z;
+};
+P operator-(P a, P b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+P operator+(P a, P b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+P operator*(L s, P a) {
+  return {s * a.x, s * a.y, s * a.z};
+}
+L dot(P a, P b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+P cross(P a, P b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+L clamp01(L x) {
+  return std::clamp<L>(x, 0, 1);
+}
+
+// Brute force, by the closed sets' definitions: a point against a segment, a triangle (inside
+// its plane's projection, else its three sides), two segments (the lines' closest pair when
+// both parameters fall inside, else an end against the other segment).
+L point_segment(P p, P a, P b) {
+  const P e = b - a;
+  const L ee = dot(e, e);
+  const L s = ee > 0 ? clamp01(dot(p - a, e) / ee) : 0;
+  const P d = p - (a + s * e);
+  return std::sqrt(dot(d, d));
+}
+L point_triangle(P p, P a, P b, P c) {
+  L best = std::min({point_segment(p, a, b), point_segment(p, b, c), point_segment(p, c, a)});
+  const P n = cross(b - a, c - a);
+  const L nn = dot(n, n);
+  if (nn > 0 && dot(cross(b - a, p - a), n) >= 0 && dot(cross(c - b, p - b), n) >= 0 &&
+      dot(cross(a - c, p - c), n) >= 0)
+    best = std::min(best, std::fabs(dot(p - a, n)) / std::sqrt(nn));
+  return best;
+}
+L segment_segment(P a0, P a1, P b0, P b1) {
+  L best = std::min({point_segment(a0, b0, b1), point_segment(a1, b0, b1),
+                     point_segment(b0, a0, a1), point_segment(b1, a0, a1)});
+  const P ea = a1 - a0, eb = b1 - b0, w = a0 - b0;
+  const L a = dot(ea, ea), b = dot(ea, eb), e = dot(eb, eb), d = dot(ea, w), f = dot(eb, w);
+  const L den = a * e - b * b;
+  if (den > 0) {
+    const L s = (b * f - d * e) / den, u = (a * f - b * d) / den;
+    if (s >= 0 && s <= 1 && u >= 0 && u <= 1) {
+      const P g = (a0 + s * ea) - (b0 + u * eb);
+      best = std::min(best, std::sqrt(dot(g, g)));
+    }
+  }
+  return best;
+}
+
+L distance_at(const Query& q, L t) {
+  P x[4];
+  for (int i = 0; i < 4; ++i) {
+    const Vec3 &u = q.x[i], &v = q.x[i + 4];
+    x[i] = {u.x + t * (v.x - u.x), u.y + t * (v.y - u.y), u.z + t * (v.z - u.z)};
+  }
+  return q.kind == QueryKind::VertexFace ? point_triangle(x[0], x[1], x[2], x[3])
+                                         : segment_segment(x[0], x[1], x[2], x[3]);
+}
+
+// The least distance over [0, t_end]: 4096 samples, then a golden-section refinement around
+// the least.
+L least_distance(const Query& q, L t_end) {
+  constexpr int n = 4096;
+  int best = 0;
+  L dmin = distance_at(q, 0);
+  for (int i = 1; i <= n; ++i) {
+    const L d = distance_at(q, t_end * i / n);
+    if (d < dmin) dmin = d, best = i;
+  }
+  L lo = t_end * std::max(0, best - 1) / n, hi = t_end * std::min(n, best + 1) / n;
+  const L g = (std::sqrt(L(5)) - 1) / 2;
+  for (int it = 0; it < 100; ++it) {
+    const L m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+    const L d1 = distance_at(q, m1), d2 = distance_at(q, m2);
+    dmin = std::min({dmin, d1, d2});
+    (d1 < d2 ? hi : lo) = d1 < d2 ? m2 : m1;
+  }
+  return dmin;
+}
+
+Query make(QueryKind kind, const Vec3 (&x)[8], double delta) {
+  Query q;
+  q.kind = kind;
+  for (int i = 0; i < 8; ++i) q.x[i] = x[i];
+  q.min_distance = delta;
+  return q;
+}
+
+// The point slides at height h over the still unit triangle z = 0, from above its interior to
+// past its hypotenuse: the distance is h while inside.
+Query sliding_point(double h, double delta) {
+  return make(
+      QueryKind::VertexFace,
+      {{0.1, 0.1, h}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 2, h}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+      delta);
+}
+// Two parallel edges at distance d: the x axis's [0, 1] and the same at y = d, drifting in x.
+Query parallel_edges(double d, double delta) {
+  return make(QueryKind::EdgeEdge,
+              {{0, 0, 0},
+               {1, 0, 0},
+               {0.5, d, 0},
+               {1.5, d, 0},
+               {0, 0, 0},
+               {1, 0, 0},
+               {-0.5, d, 0},
+               {0.5, d, 0}},
+              delta);
+}
+// The point falls past the triangle's corner (1, 0, 0) outside it, at least `gap` from it.
+Query passing_corner(double gap, double delta) {
+  return make(QueryKind::VertexFace,
+              {{1 + gap, 0, 1},
+               {0, 0, 0},
+               {1, 0, 0},
+               {0, 1, 0},
+               {1 + gap, 0, -1},
+               {0, 0, 0},
+               {1, 0, 0},
+               {0, 1, 0}},
+              delta);
+}
+
+TEST(CcdRobustDelta, DecidesClearQueriesRightly) {
+  for (const double h : {0.5, 1e-3, 1e-6}) {
+    EXPECT_EQ(robust_ccd_filter(sliding_point(h, 1.01 * h)), Filtered::Yes) << h;
+    EXPECT_EQ(robust_ccd_filter(sliding_point(h, 0.99 * h)), Filtered::No) << h;
+    EXPECT_EQ(robust_ccd_filter(parallel_edges(h, 1.01 * h)), Filtered::Yes) << h;
+    EXPECT_EQ(robust_ccd_filter(parallel_edges(h, 0.99 * h)), Filtered::No) << h;
+    EXPECT_EQ(robust_ccd_filter(passing_corner(h, 1.01 * h)), Filtered::Yes) << h;
+    EXPECT_EQ(robust_ccd_filter(passing_corner(h, 0.99 * h)), Filtered::No) << h;
+  }
+}
+
+TEST(CcdRobustDelta, ExactlyAtTheDistanceIsLeftToTheExactTest) {
+  // The point passes exactly δ = 1/2 from the corner: no floating-point margin either way.
+  EXPECT_EQ(robust_ccd_filter(passing_corner(0.5, 0.5)), Filtered::Uncertain);
+  EXPECT_EQ(robust_ccd(passing_corner(0.5, 0.5), [](const Query&) { return true; }), true);
+}
+
+TEST(CcdRobustDelta, ZeroDeltaIsTodaysContact) {
+  // A contact at t = 1/2; at δ = 0 the same verdict as the contact filter, and within δ too.
+  Query q = sliding_point(0, 0);
+  q.x[0].z = 1, q.x[4] = {0.1, 0.1, -1};
+  EXPECT_EQ(robust_ccd_filter(q), Filtered::Yes);
+  q.min_distance = 1e-6;
+  EXPECT_EQ(robust_ccd_filter(q), Filtered::Yes);
+}
+
+// The falling point reaches height δ at t = 1/2 - δ/2 (a dyadic δ: exact), its enclosure found
+// by the filter alone, and never late.
+TEST(CcdRobustDelta, EnclosesTheFirstTimeWithinDelta) {
+  for (const double delta : {0x1p-4, 0x1p-20}) {
+    Query q = sliding_point(0, delta);
+    q.x[0].z = 1, q.x[4] = {0.1, 0.1, -1};
+    const double t_star = 0.5 - delta / 2;
+    for (const double w : {0x1p-30, 0x1p-40}) {
+      const Toi toi = robust_ccd_toi(q, w, [](const Query&, double, double, double) {
+        ADD_FAILURE() << "the exact fallback was not needed";
+        return Toi{};
+      });
+      ASSERT_TRUE(toi.hit);
+      EXPECT_LE(toi.t_lo, t_star);
+      EXPECT_GE(toi.t_hi, t_star);
+      EXPECT_LE(toi.t_hi - toi.t_lo, w);
+      EXPECT_GT(toi.t_lo, 0);
+    }
+  }
+}
+
+TEST(CcdRobustDelta, FloatBaselineAnswersClearQueries) {
+  for (const double h : {0.5, 1e-3}) {
+    EXPECT_TRUE(float_cubic(sliding_point(h, 1.01 * h))) << h;
+    EXPECT_FALSE(float_cubic(sliding_point(h, 0.99 * h))) << h;
+    EXPECT_TRUE(float_cubic(parallel_edges(h, 1.01 * h))) << h;
+    EXPECT_FALSE(float_cubic(parallel_edges(h, 0.99 * h))) << h;
+    EXPECT_TRUE(float_cubic(passing_corner(h, 1.01 * h))) << h;
+    EXPECT_FALSE(float_cubic(passing_corner(h, 0.99 * h))) << h;
+  }
+  Query q = sliding_point(0, 0x1p-4);
+  q.x[0].z = 1, q.x[4] = {0.1, 0.1, -1};
+  const Toi toi = float_cubic_toi(q);
+  ASSERT_TRUE(toi.hit);
+  EXPECT_NEAR(toi.t_lo, 0.5 - 0x1p-5, 1e-12);
+}
+
+// A random query in [-1, 1]^3 and a δ near its distance at a random time (so that many are
+// close calls), or a plain random δ.
+Query random_delta_query() {
+  Query q;
+  q.kind = *rc::gen::element(QueryKind::VertexFace, QueryKind::EdgeEdge);
+  for (Vec3& v : q.x) {
+    const auto c = [] { return *rc::gen::inRange(-1000000, 1000001) * 1e-6; };
+    v = {c(), c(), c()};
+  }
+  const double t = *rc::gen::inRange(0, 1025) / 1024.0;
+  const double scale = 1 + *rc::gen::inRange(-1000, 1001) * 1e-5;
+  q.min_distance = *rc::gen::arbitrary<bool>() ? double(distance_at(q, t)) * scale
+                                               : *rc::gen::inRange(1, 1000001) * 1e-6;
+  return q;
+}
+
+TEST(CcdRobustDelta, CertainAnswersAgreeWithTheDistance) {
+  EXPECT_TRUE(rc::check("robust-within-delta-sound", [] {
+    const Query q = random_delta_query();
+    const FilteredToi f = robust_ccd_toi_filter(q, 0x1p-30);
+    RC_ASSERT(f.verdict == robust_ccd_filter(q));
+    const L delta = q.min_distance;
+    if (f.verdict == Filtered::No) RC_ASSERT(least_distance(q, 1) > delta);
+    if (f.verdict == Filtered::Yes) {
+      // Within δ by t1: at t1 itself, where the filter certified it, or before.
+      RC_ASSERT(std::min(distance_at(q, f.t1), least_distance(q, f.t1)) <= delta * (1 + 1e-12L));
+      if (f.t0 > 0) RC_ASSERT(least_distance(q, f.t0) > delta * (1 - 1e-12L));
+    }
+    RC_TAG(f.verdict == Filtered::Yes ? "yes" : f.verdict == Filtered::No ? "no" : "uncertain");
+  }));
+}
+
+}  // namespace
+}  // namespace fdh
