@@ -118,6 +118,15 @@ IV3 point3(const Vec3& v) {
   return {Interval::point(v.x), Interval::point(v.y), Interval::point(v.z)};
 }
 
+// Whether s + u <= 1 exactly (s, u >= 0): the rounded sum decides unless it is 1, where its
+// rounding error (Knuth's TwoSum, exact) does.
+bool at_most_one(double s, double u) {
+  const double sum = s + u;
+  if (sum != 1) return sum < 1;
+  const double uu = sum - s;
+  return (s - (sum - uu)) + (u - uu) <= 0;
+}
+
 // Certain: the distance at t is <= δ. The pair the closest point c names is a pair of points of
 // the two closed primitives (its parameters checked to be convex weights, exactly): their
 // distance, rounded up, is an upper bound of the primitives'.
@@ -126,7 +135,7 @@ bool within_at(const Query& q, const Interval& d2, const Points& p, const Closes
   if (!(c.s >= 0 && c.u >= 0)) return false;
   IV3 diff;
   if (q.kind == QueryKind::VertexFace) {
-    if (!((s + u).hi <= 1)) return false;
+    if (!at_most_one(c.s, c.u)) return false;
     diff = p.x[0] - (p.x[1] + s * (p.x[2] - p.x[1]) + u * (p.x[3] - p.x[1]));
   } else {
     if (!(c.s <= 1 && c.u <= 1)) return false;

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 
 #include "fdh/ccd/float_cubic.hpp"
 #include "fdh/ccd/robust.hpp"
@@ -213,19 +214,29 @@ TEST(CcdRobustDelta, FloatBaselineAnswersClearQueries) {
   EXPECT_NEAR(toi.t_lo, 0.5 - 0x1p-5, 1e-12);
 }
 
-// A random query in [-1, 1]^3 and a δ near its distance at a random time (so that many are
-// close calls), or a plain random δ.
+// A random query in [-1, 1]^3 (coordinates on a grid of 10^-6, so that parallels and shared
+// points occur), and a δ within 1% of its least distance over the step or of its distance at a
+// random time (close calls both ways), or a plain random δ.
 Query random_delta_query() {
   Query q;
   q.kind = *rc::gen::element(QueryKind::VertexFace, QueryKind::EdgeEdge);
+  const int grid = *rc::gen::element(1, 4, 1000000);
   for (Vec3& v : q.x) {
-    const auto c = [] { return *rc::gen::inRange(-1000000, 1000001) * 1e-6; };
+    const auto c = [grid] { return double(*rc::gen::inRange(-grid, grid + 1)) / grid; };
     v = {c(), c(), c()};
   }
-  const double t = *rc::gen::inRange(0, 1025) / 1024.0;
   const double scale = 1 + *rc::gen::inRange(-1000, 1001) * 1e-5;
-  q.min_distance = *rc::gen::arbitrary<bool>() ? double(distance_at(q, t)) * scale
-                                               : *rc::gen::inRange(1, 1000001) * 1e-6;
+  switch (*rc::gen::inRange(0, 3)) {
+    case 0:
+      q.min_distance = double(least_distance(q, 1)) * scale;
+      break;
+    case 1:
+      q.min_distance = double(distance_at(q, *rc::gen::inRange(0, 1025) / 1024.0)) * scale;
+      break;
+    default:
+      q.min_distance = *rc::gen::inRange(1, 1000001) * 1e-6;
+  }
+  RC_PRE(q.min_distance > 0);
   return q;
 }
 
@@ -235,11 +246,18 @@ TEST(CcdRobustDelta, CertainAnswersAgreeWithTheDistance) {
     const FilteredToi f = robust_ccd_toi_filter(q, 0x1p-30);
     RC_ASSERT(f.verdict == robust_ccd_filter(q));
     const L delta = q.min_distance;
-    if (f.verdict == Filtered::No) RC_ASSERT(least_distance(q, 1) > delta);
+    RC_LOG() << std::setprecision(17) << (q.kind == QueryKind::VertexFace ? "vf" : "ee")
+             << " delta " << q.min_distance << " verdict " << int(f.verdict) << " t0 " << f.t0
+             << " t1 " << f.t1 << "\n";
+    for (const Vec3& v : q.x)
+      RC_LOG() << std::setprecision(17) << v.x << " " << v.y << " " << v.z << "\n";
+    // The brute force resolves distances to about 1e-18 here (coordinates near 1, long double),
+    // and to 1e-15 at a crossing (the refinement's last bracket): the slack of each check.
+    if (f.verdict == Filtered::No) RC_ASSERT(least_distance(q, 1) > delta - 1e-18L);
     if (f.verdict == Filtered::Yes) {
       // Within δ by t1: at t1 itself, where the filter certified it, or before.
-      RC_ASSERT(std::min(distance_at(q, f.t1), least_distance(q, f.t1)) <= delta * (1 + 1e-12L));
-      if (f.t0 > 0) RC_ASSERT(least_distance(q, f.t0) > delta * (1 - 1e-12L));
+      RC_ASSERT(std::min(distance_at(q, f.t1), least_distance(q, f.t1)) <= delta + 1e-15L);
+      if (f.t0 > 0) RC_ASSERT(least_distance(q, f.t0) > delta - 1e-18L);
     }
     RC_TAG(f.verdict == Filtered::Yes ? "yes" : f.verdict == Filtered::No ? "no" : "uncertain");
   }));
