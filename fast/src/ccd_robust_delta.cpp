@@ -194,20 +194,56 @@ constexpr int kMaxPieces = 24;  // pieces looked at per query, beyond which the 
 constexpr int kMaxDepth = 30;   // a piece no narrower than 2^-30 of the window
 constexpr int kMaxNarrowing = 64;
 
-// The window [a, b] (no δ-contact in [0, a), one at b) narrowed by halving to `width`: each
-// middle m is certainly free ([a, m] apart) or certainly within δ. Enclosed if it got there.
+// Certain: the distance stays > δ over [a, b].
+bool apart_over(const Query& q, const Interval& d2, double a, double b) {
+  return apart(q, d2, points_at(q, a), points_at(q, b), closest_at(q, b).dir);
+}
+// Certain: the distance at t is <= δ.
+bool within_at_time(const Query& q, const Interval& d2, double t) {
+  const Closest c = closest_at(q, t);
+  return c.dist2 <= d2.hi && within_at(q, d2, points_at(q, t), c);
+}
+
+// A guess of t*_δ in [a, b] (the distance > δ at a, <= δ at b), in plain doubles: regula falsi
+// with Illinois' halving (Dowell and Jarratt 1971) on distance - δ, to about `width` / 8. Where
+// to probe, never part of a verdict.
+double guess_time(const Query& q, double delta, double a, double b, double width) {
+  const auto phi = [&](double t) { return std::sqrt(closest_at(q, t).dist2) - delta; };
+  double fa = phi(a), fb = phi(b);
+  for (int i = 0, side = 0; i < 40 && b - a > width / 8; ++i) {
+    double t = (a * fb - b * fa) / (fb - fa);
+    if (!(t > a && t < b)) t = a + (b - a) / 2;  // NaN too
+    const double ft = phi(t);
+    if (ft > 0) {
+      a = t, fa = ft, fb = side == -1 ? fb / 2 : fb, side = -1;
+    } else {
+      b = t, fb = ft, fa = side == 1 ? fa / 2 : fa, side = 1;
+    }
+  }
+  return a + (b - a) / 2;
+}
+
+// The window [a, b] (no δ-contact in [0, a), one at b) narrowed to `width`: probes a quarter of
+// the width either side of a guess of t*_δ (free up to the lower one, within δ at the upper),
+// else halving, each middle m certainly free ([a, m] apart) or certainly within δ. The probe
+// from a fails while [a, probe] is too long for one separating test: the halvings shorten it.
+// Enclosed if it got there.
 FilteredToi narrow(const Query& q, const Interval& d2, double a, double b, double width) {
+  const double h = width / 4, g = guess_time(q, q.min_distance, a, b, width);
   for (int i = 0; i < kMaxNarrowing && (b - a > width || a == 0); ++i) {
+    bool moved = false;
+    if (g - h > a && g + h <= b) {
+      if (g + h < b && within_at_time(q, d2, g + h)) b = g + h, moved = true;
+      if (apart_over(q, d2, a, g - h)) a = g - h, moved = true;
+      if (b - a <= width && a > 0) break;
+    }
     const double m = a + (b - a) / 2;
     if (!(m > a && m < b)) break;
-    const Closest c = closest_at(q, m);
-    const Points pm = points_at(q, m);
-    if (apart(q, d2, points_at(q, a), pm, c.dir))
-      a = m;
-    else if (c.dist2 <= d2.hi && within_at(q, d2, pm, c))
-      b = m;
-    else
-      break;
+    if (apart_over(q, d2, a, m))
+      a = m, moved = true;
+    else if (within_at_time(q, d2, m))
+      b = m, moved = true;
+    if (!moved) break;
   }
   return {Filtered::Yes, a, b, b - a <= width && a > 0};
 }

@@ -258,6 +258,7 @@ TEST(CcdRobustDelta, CertainAnswersAgreeWithTheDistance) {
       // Within δ by t1: at t1 itself, where the filter certified it, or before.
       RC_ASSERT(std::min(distance_at(q, f.t1), least_distance(q, f.t1)) <= delta + 1e-15L);
       if (f.t0 > 0) RC_ASSERT(least_distance(q, f.t0) > delta - 1e-18L);
+      if (f.enclosed) RC_ASSERT(f.t1 - f.t0 <= 0x1p-30 && (f.t0 > 0 || f.t1 == 0));
     }
     RC_TAG(f.verdict == Filtered::Yes ? "yes" : f.verdict == Filtered::No ? "no" : "uncertain");
   }));
