@@ -271,17 +271,22 @@ bool apart_by_volume(const Query& q, double volume_lo) {
   // det(ea, b0 - a0, b1 - a0) = (b0 - a0) . n): a lower bound of the primitives' distance
   // wherever n != 0, and f = 0 where n = 0. |n| <= |e1| |e2| for its two edge vectors, each of
   // which is linear in t, so largest at t = 0 or 1.
+  // In plain doubles with relative margins: a rounded |e|² is below the exact one by at most
+  // 6 eps of it (the differences' roundings counted twice, the squares' and sums' once), or
+  // 2^-1070 where it underflows; (1 ± 2^-40) covers every relative rounding below, and 2^-600
+  // every underflow (< 2^-1074 each, scaled by at most 2^406: coordinates and δ are within
+  // 2^100).
   if (!(volume_lo > 0)) return false;
-  const int i1 = q.kind == QueryKind::VertexFace ? 1 : 0, j1 = i1 + 1;
-  const int i2 = q.kind == QueryKind::VertexFace ? 1 : 2, j2 = 3;
+  const bool vf = q.kind == QueryKind::VertexFace;
+  const int i1 = vf ? 1 : 0, j1 = i1 + 1, i2 = vf ? 1 : 2, j2 = 3;
   double n1 = 0, n2 = 0;
   for (const int t : {0, 4}) {
-    const IV3 e1 = point3(q.x[j1 + t]) - point3(q.x[i1 + t]),
-              e2 = point3(q.x[j2 + t]) - point3(q.x[i2 + t]);
-    n1 = std::max(n1, dot(e1, e1).hi), n2 = std::max(n2, dot(e2, e2).hi);
+    const Vec3 e1 = q.x[j1 + t] - q.x[i1 + t], e2 = q.x[j2 + t] - q.x[i2 + t];
+    n1 = std::max(n1, dot(e1, e1)), n2 = std::max(n2, dot(e2, e2));
   }
-  const Interval v = Interval::point(volume_lo);
-  return (v * v).lo > (delta_squared(q) * Interval::point(n1) * Interval::point(n2)).hi;
+  const double d = q.min_distance;
+  const double bound = (d * d) * (n1 + 0x1p-1070) * (n2 + 0x1p-1070) * (1 + 0x1p-40) + 0x1p-600;
+  return volume_lo * volume_lo * (1 - 0x1p-40) > bound;
 }
 
 FilteredToi robust_delta_search(const Query& q, double width, double contact_by) {
