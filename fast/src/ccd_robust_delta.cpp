@@ -101,16 +101,54 @@ Closest closest_at(const Query& q, double t) {
                                          : segment_segment(x[0], x[1], x[2], x[3]);
 }
 
+// The closest pair's motion over the step (its points' displacements, at the same parameters).
+Vec3 relative_motion(const Query& q, const Closest& c) {
+  Vec3 d[4];
+  for (int i = 0; i < 4; ++i) d[i] = q.x[i + 4] - q.x[i];
+  if (q.kind == QueryKind::VertexFace)
+    return d[0] - (d[1] + c.s * (d[2] - d[1]) + c.u * (d[3] - d[1]));
+  return (d[0] + c.s * (d[1] - d[0])) - (d[2] + c.u * (d[3] - d[2]));
+}
+
+// From t, a time in [lo, hi] where the distance is least nearby, in plain doubles: the zero of
+// h = dir . v, half the derivative of the squared distance (the closest pair's parameters are
+// optimal, so their own change does not count: the envelope theorem), by one Newton step that
+// keeps the parameters (h' ~ |v|²), then secant steps. Never part of a verdict by itself.
+double nearest_time(const Query& q, Closest c, double t, double lo, double hi) {
+  const Vec3 v = relative_motion(q, c);
+  double h = dot(c.dir, v), next = t - h / dot(v, v);
+  for (int i = 0; i < 4 && c.dist2 > 0; ++i) {
+    const double clamped = std::min(hi, std::max(lo, next));  // NaN: stays
+    if (!(clamped != t)) break;
+    const double t_prev = t, h_prev = h;
+    t = clamped, c = closest_at(q, t), h = dot(c.dir, relative_motion(q, c));
+    next = t - h * (t - t_prev) / (h - h_prev);
+  }
+  return t;
+}
+
 // ---- Rigorous bounds: intervals (fdh/interval.hpp) around the exact positions.
 
-// The four points at the double t, exactly enclosed.
+// A coordinate at the double t, enclosed: v = x0 + t (x1 - x0) in three roundings is off by at
+// most eps |v| + 2.01 eps |t (x1 - x0)| (the difference's and the product's relative errors
+// carried by the product), 2^-52 (|v| + 3 |m|) allowing for more, and 2^-1070 for an
+// underflowed product. A third of an interval lerp's cost.
+Interval coordinate_at(double x0, double x1, double t) {
+  const double m = t * (x1 - x0), v = x0 + m;
+  const double err = (std::fabs(v) + 3 * std::fabs(m)) * 0x1p-52 + 0x1p-1070;
+  return {round_down(v - err), round_up(v + err)};
+}
+
+// The four points at the double t, enclosed.
 struct Points {
   IV3 x[4];
 };
 Points points_at(const Query& q, double t) {
-  const Interval time = Interval::point(t);
   Points r;
-  for (int i = 0; i < 4; ++i) r.x[i] = at(q.x[i], q.x[i + 4], time);
+  for (int i = 0; i < 4; ++i) {
+    const Vec3 &a = q.x[i], &b = q.x[i + 4];
+    r.x[i] = {coordinate_at(a.x, b.x, t), coordinate_at(a.y, b.y, t), coordinate_at(a.z, b.z, t)};
+  }
   return r;
 }
 
@@ -130,9 +168,12 @@ bool at_most_one(double s, double u) {
 // Certain: the distance at t is <= δ. The pair the closest point c names is a pair of points of
 // the two closed primitives (its parameters checked to be convex weights, exactly): their
 // distance, rounded up, is an upper bound of the primitives'.
-bool within_at(const Query& q, const Interval& d2, const Points& p, const Closest& c) {
-  const Interval s = Interval::point(c.s), u = Interval::point(c.u);
+bool within_at(const Query& q, const Interval& d2, const Points& p, Closest c) {
   if (!(c.s >= 0 && c.u >= 0)) return false;
+  // Rounded barycentric coordinates may sum to a hair above 1: the larger gives way.
+  if (q.kind == QueryKind::VertexFace && !at_most_one(c.s, c.u))
+    (c.s >= c.u ? c.s : c.u) = 1 - (c.s >= c.u ? c.u : c.s);
+  const Interval s = Interval::point(c.s), u = Interval::point(c.u);
   IV3 diff;
   if (q.kind == QueryKind::VertexFace) {
     if (!at_most_one(c.s, c.u)) return false;
@@ -185,9 +226,11 @@ bool apart(const Query& q, const Interval& d2, const Points& a, const Points& b,
 
 // ---- The search.
 
+// A piece of the window: its ends and depth only (the points at its ends are found again: an
+// array of them would be zeroed on every call, costing more than the search).
 struct Piece {
   double ta, tb;
-  Points a, b;  // the points at ta and at tb
+  int depth;
 };
 
 constexpr int kMaxPieces = 24;  // pieces looked at per query, beyond which the exact test decides
@@ -297,22 +340,24 @@ FilteredToi robust_delta_search(const Query& q, double width, double contact_by)
   const double end = std::min(contact_by, 1.0);
   // Depth first, the earlier half on top: pieces in time order.
   Piece stack[kMaxDepth + 2];
-  int depth[kMaxDepth + 2], top = 0, pieces = 0;
-  depth[top] = 0, stack[top++] = {0, end, p0, points_at(q, end)};
+  int top = 0, pieces = 0;
+  stack[top++] = {0, end, 0};
   while (top > 0) {
     const Piece p = stack[--top];
-    const int level = depth[top];
     const double tm = p.ta + (p.tb - p.ta) / 2;
     const Closest c = closest_at(q, tm);
-    if (apart(q, s.d2, p.a, p.b, c.dir)) continue;
-    const Points pm = points_at(q, tm);
-    if (c.dist2 <= s.d2.hi && within_at(q, s.d2, pm, c)) return found(s, p.ta, tm);
-    if (level == kMaxDepth || ++pieces > kMaxPieces || !(tm > p.ta && tm < p.tb)) {
+    if (apart(q, s.d2, p.ta == 0 ? p0 : points_at(q, p.ta), points_at(q, p.tb), c.dir)) continue;
+    if (c.dist2 <= s.d2.hi && within_at(q, s.d2, points_at(q, tm), c)) return found(s, p.ta, tm);
+    // Where the closest pair's motion brings it nearest inside the piece: a dip below δ there is
+    // found at once, not after halving down to its width.
+    const double tn = nearest_time(q, c, tm, p.ta, p.tb);
+    if (tn != tm && within_at_time(q, s.d2, tn)) return found(s, p.ta, tn);
+    if (p.depth == kMaxDepth || ++pieces > kMaxPieces || !(tm > p.ta && tm < p.tb)) {
       s.open = std::min(s.open, p.ta);
       continue;
     }
-    depth[top] = level + 1, stack[top++] = {tm, p.tb, pm, p.b};
-    depth[top] = level + 1, stack[top++] = {p.ta, tm, p.a, pm};
+    stack[top++] = {tm, p.tb, p.depth + 1};
+    stack[top++] = {p.ta, tm, p.depth + 1};
   }
   if (contact_by <= 1) return {Filtered::Yes, std::min(s.open, end), end, false};
   if (s.open < 2) return {Filtered::Uncertain, width > 0 ? s.open : 0, 1, false};
