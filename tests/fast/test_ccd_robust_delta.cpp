@@ -12,6 +12,7 @@
 #include <cmath>
 #include <iomanip>
 
+#include "brute_distance.hpp"
 #include "fdh/ccd/float_cubic.hpp"
 #include "fdh/ccd/robust.hpp"
 #include "fdh/ccd/toi.hpp"
@@ -19,73 +20,8 @@
 namespace fdh {
 namespace {
 
-using L = long double;
-struct P {
-  L x, y, z;
-};
-P operator-(P a, P b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-P operator+(P a, P b) {
-  return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-P operator*(L s, P a) {
-  return {s * a.x, s * a.y, s * a.z};
-}
-L dot(P a, P b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-P cross(P a, P b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-L clamp01(L x) {
-  return std::clamp<L>(x, 0, 1);
-}
-
-// Brute force, by the closed sets' definitions: a point against a segment, a triangle (inside
-// its plane's projection, else its three sides), two segments (the lines' closest pair when
-// both parameters fall inside, else an end against the other segment).
-L point_segment(P p, P a, P b) {
-  const P e = b - a;
-  const L ee = dot(e, e);
-  const L s = ee > 0 ? clamp01(dot(p - a, e) / ee) : 0;
-  const P d = p - (a + s * e);
-  return std::sqrt(dot(d, d));
-}
-L point_triangle(P p, P a, P b, P c) {
-  L best = std::min({point_segment(p, a, b), point_segment(p, b, c), point_segment(p, c, a)});
-  const P n = cross(b - a, c - a);
-  const L nn = dot(n, n);
-  if (nn > 0 && dot(cross(b - a, p - a), n) >= 0 && dot(cross(c - b, p - b), n) >= 0 &&
-      dot(cross(a - c, p - c), n) >= 0)
-    best = std::min(best, std::fabs(dot(p - a, n)) / std::sqrt(nn));
-  return best;
-}
-L segment_segment(P a0, P a1, P b0, P b1) {
-  L best = std::min({point_segment(a0, b0, b1), point_segment(a1, b0, b1),
-                     point_segment(b0, a0, a1), point_segment(b1, a0, a1)});
-  const P ea = a1 - a0, eb = b1 - b0, w = a0 - b0;
-  const L a = dot(ea, ea), b = dot(ea, eb), e = dot(eb, eb), d = dot(ea, w), f = dot(eb, w);
-  const L den = a * e - b * b;
-  if (den > 0) {
-    const L s = (b * f - d * e) / den, u = (a * f - b * d) / den;
-    if (s >= 0 && s <= 1 && u >= 0 && u <= 1) {
-      const P g = (a0 + s * ea) - (b0 + u * eb);
-      best = std::min(best, std::sqrt(dot(g, g)));
-    }
-  }
-  return best;
-}
-
-L distance_at(const Query& q, L t) {
-  P x[4];
-  for (int i = 0; i < 4; ++i) {
-    const Vec3 &u = q.x[i], &v = q.x[i + 4];
-    x[i] = {u.x + t * (v.x - u.x), u.y + t * (v.y - u.y), u.z + t * (v.z - u.z)};
-  }
-  return q.kind == QueryKind::VertexFace ? point_triangle(x[0], x[1], x[2], x[3])
-                                         : segment_segment(x[0], x[1], x[2], x[3]);
-}
+using brute::distance_at;
+using brute::L;
 
 // The least distance over [0, t_end]: 4096 samples, then a golden-section refinement around
 // the least.

@@ -1,6 +1,6 @@
 // `robust` within δ against its exact twin (exact::ccd_hit, ccd_toi and compare_with_toi at
 // q.min_distance > 0): on the moving generator families' cases at δ of several sizes, and on
-// close calls (δ = the distance at a drawn time, decided exactly, times 1 ± 2^-k), every certain
+// close calls (δ = the distance at a drawn time times 1 ± 2^-k), every certain
 // answer of the filter is exact's (0 FP, 0 FN), and robust_ccd_toi's enclosure holds t*_δ (never
 // late), no wider than asked.
 #include <gtest/gtest.h>
@@ -10,10 +10,10 @@
 #include <sstream>
 #include <string>
 
+#include "brute_distance.hpp"
 #include "fdh/ccd/robust.hpp"
 #include "fdh/ccd/toi.hpp"
 #include "fdh/exact/ccd.hpp"
-#include "fdh/exact/distance.hpp"
 #include "fdh/gen/families.hpp"
 #include "fdh/gen/rapidcheck.hpp"
 
@@ -52,18 +52,6 @@ double size_of(const Query& q) {
   return m > 0 ? m : 1;
 }
 
-// dist(t) rounded up to a double: bisection on δ, each step decided exactly.
-double distance_at(Query q, double t) {
-  double lo = 0, hi = 16;  // coordinates within [-1, 1]: distances below 2 sqrt(3)
-  for (int i = 0; i < 2100; ++i) {
-    const double mid = lo + (hi - lo) / 2;
-    if (!(mid > lo && mid < hi)) break;
-    q.min_distance = mid;
-    (exact::compare_distance_at(q, t) <= 0 ? hi : lo) = mid;
-  }
-  return hi;
-}
-
 TEST(CcdRobustDeltaExact, MovingFamiliesAtSeveralDeltas) {
   int checked = 0, decided = 0;
   for (const verify::Family& fam : verify::all_families()) {
@@ -92,11 +80,12 @@ TEST(CcdRobustDeltaExact, CloseCallsBothWays) {
       const auto c = [grid] { return double(*rc::gen::inRange(-grid, grid + 1)) / grid; };
       v = {c(), c(), c()};
     }
-    // The distance at a dyadic time (to a double), nudged by 2^-k either way.
+    // The distance at a dyadic time (long double's, to a double), nudged by 2^-k either way.
     const double t = *rc::gen::inRange(0, 65) / 64.0;
     const int k = *rc::gen::inRange(8, 50);
     const double nudge = std::ldexp(1.0, -k);
-    q.min_distance = distance_at(q, t) * (*rc::gen::arbitrary<bool>() ? 1 + nudge : 1 - nudge);
+    q.min_distance =
+        double(brute::distance_at(q, t)) * (*rc::gen::arbitrary<bool>() ? 1 + nudge : 1 - nudge);
     RC_PRE(q.min_distance > 0);
     const std::string broken = broken_delta_promise(q, kDefaultToiWidth);
     RC_LOG() << describe(q);
