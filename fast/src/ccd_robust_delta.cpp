@@ -247,23 +247,22 @@ bool within_at_time(const Query& q, const Interval& d2, double t) {
   return c.dist2 <= d2.hi && within_at(q, d2, points_at(q, t), c);
 }
 
-// A guess of t*_δ in [a, b] (the distance > δ at a, <= δ at b), in plain doubles: regula falsi
-// with Illinois' halving (Dowell and Jarratt 1971) on distance - δ, to about `width` / 8. Where
-// to probe, never part of a verdict.
+// A guess of t*_δ in [a, b] (the distance > δ at a, <= δ at b), in plain doubles: Newton steps
+// on distance - δ from b (its derivative is h / distance, h as in nearest_time()), kept inside
+// the bracket, which a step that leaves it halves instead; until a step moves less than
+// `width` / 8. Where to probe, never part of a verdict.
 double guess_time(const Query& q, double delta, double a, double b, double width) {
-  const auto phi = [&](double t) { return std::sqrt(closest_at(q, t).dist2) - delta; };
-  double fa = phi(a), fb = phi(b);
-  for (int i = 0, side = 0; i < 40 && b - a > width / 8; ++i) {
-    double t = (a * fb - b * fa) / (fb - fa);
-    if (!(t > a && t < b)) t = a + (b - a) / 2;  // NaN too
-    const double ft = phi(t);
-    if (ft > 0) {
-      a = t, fa = ft, fb = side == -1 ? fb / 2 : fb, side = -1;
-    } else {
-      b = t, fb = ft, fa = side == 1 ? fa / 2 : fa, side = 1;
-    }
+  double t = b;
+  for (int i = 0; i < 40; ++i) {
+    const Closest c = closest_at(q, t);
+    const double d = std::sqrt(c.dist2), phi = d - delta;
+    (phi > 0 ? a : b) = t;
+    double next = t - phi * d / dot(c.dir, relative_motion(q, c));
+    if (!(next > a && next < b)) next = a + (b - a) / 2;  // NaN too
+    if (std::fabs(next - t) < width / 8 || !(b - a > width / 8)) return next;
+    t = next;
   }
-  return a + (b - a) / 2;
+  return t;
 }
 
 // The window [a, b] (no δ-contact in [0, a), one at b) narrowed to `width`: probes a quarter of

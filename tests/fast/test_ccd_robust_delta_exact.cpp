@@ -90,6 +90,9 @@ TEST(CcdRobustDeltaExact, CloseCallsBothWays) {
     const std::string broken = broken_delta_promise(q, kDefaultToiWidth);
     RC_LOG() << describe(q);
     RC_ASSERT(broken == "");
+    const Filtered f = robust_ccd_filter(q);
+    RC_TAG(exact::ccd_hit(q) ? "hit" : "miss",
+           f == Filtered::Uncertain ? "left to exact" : "filter decided");
   }));
 }
 
