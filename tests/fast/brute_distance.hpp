@@ -1,4 +1,5 @@
-// The distance of a query's primitives at a time, by brute force in long double, for the tests of
+// The distance of a query's primitives at a time (and its least over a span of the step), by brute
+// force in long double, for the tests of
 // `robust` within δ: by the closed sets' definitions, a point against a segment, a triangle
 // (inside its plane's projection, else its three sides), two segments (the lines' closest pair
 // when both parameters fall inside, else an end against the other segment). Degenerate
@@ -75,6 +76,27 @@ inline L distance_at(const Query& q, L t) {
   }
   return q.kind == QueryKind::VertexFace ? point_triangle(x[0], x[1], x[2], x[3])
                                          : segment_segment(x[0], x[1], x[2], x[3]);
+}
+
+// The least distance over [0, t_end]: 4096 samples, then a golden-section refinement around
+// the least.
+inline L least_distance(const Query& q, L t_end) {
+  constexpr int n = 4096;
+  int best = 0;
+  L dmin = distance_at(q, 0);
+  for (int i = 1; i <= n; ++i) {
+    const L d = distance_at(q, t_end * i / n);
+    if (d < dmin) dmin = d, best = i;
+  }
+  L lo = t_end * std::max(0, best - 1) / n, hi = t_end * std::min(n, best + 1) / n;
+  const L g = (std::sqrt(L(5)) - 1) / 2;
+  for (int it = 0; it < 100; ++it) {
+    const L m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+    const L d1 = distance_at(q, m1), d2 = distance_at(q, m2);
+    dmin = std::min({dmin, d1, d2});
+    (d1 < d2 ? hi : lo) = d1 < d2 ? m2 : m1;
+  }
+  return dmin;
 }
 
 }  // namespace fdh::brute

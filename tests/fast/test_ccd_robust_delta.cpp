@@ -22,27 +22,7 @@ namespace {
 
 using brute::distance_at;
 using brute::L;
-
-// The least distance over [0, t_end]: 4096 samples, then a golden-section refinement around
-// the least.
-L least_distance(const Query& q, L t_end) {
-  constexpr int n = 4096;
-  int best = 0;
-  L dmin = distance_at(q, 0);
-  for (int i = 1; i <= n; ++i) {
-    const L d = distance_at(q, t_end * i / n);
-    if (d < dmin) dmin = d, best = i;
-  }
-  L lo = t_end * std::max(0, best - 1) / n, hi = t_end * std::min(n, best + 1) / n;
-  const L g = (std::sqrt(L(5)) - 1) / 2;
-  for (int it = 0; it < 100; ++it) {
-    const L m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-    const L d1 = distance_at(q, m1), d2 = distance_at(q, m2);
-    dmin = std::min({dmin, d1, d2});
-    (d1 < d2 ? hi : lo) = d1 < d2 ? m2 : m1;
-  }
-  return dmin;
-}
+using brute::least_distance;
 
 Query make(QueryKind kind, const Vec3 (&x)[8], double delta) {
   Query q;

@@ -1,8 +1,8 @@
 // `robust` within δ against its exact twin (exact::ccd_hit, ccd_toi and compare_with_toi at
 // q.min_distance > 0): on the moving generator families' cases at δ of several sizes, and on
-// close calls (δ = the distance at a drawn time times 1 ± 2^-k), every certain
-// answer of the filter is exact's (0 FP, 0 FN), and robust_ccd_toi's enclosure holds t*_δ (never
-// late), no wider than asked.
+// close calls (δ = the least distance, or the distance at a drawn time, times 1 ± 2^-k), every
+// certain answer of the filter is exact's (0 FP, 0 FN), and robust_ccd_toi's enclosure holds t*_δ
+// (never late), no wider than asked.
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
@@ -80,12 +80,14 @@ TEST(CcdRobustDeltaExact, CloseCallsBothWays) {
       const auto c = [grid] { return double(*rc::gen::inRange(-grid, grid + 1)) / grid; };
       v = {c(), c(), c()};
     }
-    // The distance at a dyadic time (long double's, to a double), nudged by 2^-k either way.
-    const double t = *rc::gen::inRange(0, 65) / 64.0;
+    // The least distance over the step, or the distance at a dyadic time (long double's brute
+    // force), nudged by 2^-k either way: close calls, hits and misses.
+    const long double d = *rc::gen::arbitrary<bool>()
+                              ? brute::least_distance(q, 1)
+                              : brute::distance_at(q, *rc::gen::inRange(0, 65) / 64.0);
     const int k = *rc::gen::inRange(8, 50);
     const double nudge = std::ldexp(1.0, -k);
-    q.min_distance =
-        double(brute::distance_at(q, t)) * (*rc::gen::arbitrary<bool>() ? 1 + nudge : 1 - nudge);
+    q.min_distance = double(d) * (*rc::gen::arbitrary<bool>() ? 1 + nudge : 1 - nudge);
     RC_PRE(q.min_distance > 0);
     const std::string broken = broken_delta_promise(q, kDefaultToiWidth);
     RC_LOG() << describe(q);
