@@ -1,9 +1,8 @@
-// The distance of a query's primitives at a time (and its least over a span of the step), by brute
-// force in long double, for the tests of
-// `robust` within δ: by the closed sets' definitions, a point against a segment, a triangle
-// (inside its plane's projection, else its three sides), two segments (the lines' closest pair
-// when both parameters fall inside, else an end against the other segment). Degenerate
-// triangles and zero-length segments come out as the sets they are.
+// The distance of a query's primitives at a time, and its least over a span of the step, by brute
+// force in long double, for the tests of `robust` within δ: by the closed sets' definitions, a
+// point against a segment, a triangle (inside its plane's projection, else its three sides), two
+// segments (the lines' closest pair when both parameters fall inside, else an end against the
+// other segment). Degenerate triangles and zero-length segments come out as the sets they are.
 #pragma once
 
 #include <algorithm>
