@@ -6,10 +6,13 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "fdh/query.hpp"
 
@@ -61,6 +64,10 @@ inline constexpr std::size_t kQueriesPerSignalCheck = 1 << 14;
 
 // ValueError when `min_distance` > 0 and method `m` answers contact only.
 void check_answers_min_distance(const verify::Method& m, double min_distance);
+
+// A job's result object (its to_json) as Python dicts, lists and scalars, key order kept: the
+// dict `fdhcert ... --json` prints, without JSON text in between (json_values.cpp).
+py::object python_value(const nlohmann::ordered_json& j);
 
 // "vertex-face" or "edge-edge"; ValueError naming the choices otherwise.
 QueryKind kind_named(const std::string& name);
