@@ -115,6 +115,8 @@ def write_vf(path, kind, queries):
 def test_the_answers_equal_the_programs_on_the_same_queries(delta, tmp_path):
     methods = [m for m in ("exact", "robust", "float-cubic")
                if delta == 0 or m in fdhcert.min_distance_methods()]
+    if not methods:
+        pytest.skip("no method of the registry answers min_distance > 0 yet")
     cases = (("vf", fdhcert.vertex_face_ccd, fdhcert.vertex_face_toi, known_vertex_face()),
              ("ee", fdhcert.edge_edge_ccd, fdhcert.edge_edge_toi, known_edge_edge()))
     for kind, test, toi, queries in cases:
