@@ -61,7 +61,7 @@ struct Auditor::Impl {
   Options options;
   MeshParts cloth, obstacle;
   std::unique_ptr<Trees> trees;
-  std::unique_ptr<InsideCount> inside;  // the cloth's particles in the closed obstacles
+  std::unique_ptr<InsideCount> inside;              // the cloth's particles in the closed obstacles
   std::vector<Vec3> cloth_before, obstacle_before;  // the previous frame
   int frames = 0;
   std::optional<tbb::task_arena> arena;  // with Options::threads > 0
