@@ -23,6 +23,7 @@ py::dict summary_of(const verify::SceneRun& r, bool checked) {
   s["ms_per_frame"] = r.ms_per_frame(), s["candidates"] = r.candidates;
   s["collisions"] = r.collisions, s["fp"] = r.fp, s["fn"] = r.fn;
   // The exact frame audit (None when not checked): the counts of simulate --json.
+  s["inside"] = checked ? py::object(py::int_(r.audit.inside)) : py::object(py::none());
   s["crossing"] =
       checked ? py::object(py::int_(r.audit.obstacle_intersections)) : py::object(py::none());
   s["self_crossing"] =

@@ -254,6 +254,7 @@ def test_a_scene_runs_into_arrays():
     assert (run["positions"][-1] == run["final"]).all()
     assert run["summary"]["frames"] == 20 and run["summary"]["particles"] == 100
     # Not checked: no audit counts.
+    assert run["summary"]["inside"] is None
     assert run["summary"]["crossing"] is None and run["summary"]["self_crossing"] is None
 
 
@@ -262,9 +263,11 @@ def test_a_checked_scene_has_the_frame_audit():
     # self-collision pass the cloth against itself.
     run = fdhcert.simulate(str(SOURCE / "corpus/scenes/windy-bar.scene"), frames=30, grid=8,
                            check=True)
+    assert run["summary"]["inside"] == 0
     assert run["summary"]["crossing"] == 0 and run["summary"]["self_crossing"] == 0
     run = fdhcert.simulate(str(SOURCE / "corpus/scenes/table.scene"), frames=10, grid=8,
                            check=True)
+    assert run["summary"]["inside"] == 0
     assert run["summary"]["crossing"] == 0 and run["summary"]["self_crossing"] is None
 
 

@@ -75,6 +75,25 @@ TEST(AuditReport, CountsTheFirstViolationAndTheCap) {
       << r.text();
 }
 
+// Vertices inside a closed obstacle are counted beside the verdict: in the JSON and a text line,
+// without making the certificate unclean.
+TEST(AuditReport, InsideIsCountedBesideTheVerdict) {
+  AuditReport r(square(), {}, 16);
+  audit::FrameReport f0, f1;
+  f1.frame = 1, f1.has_step = true;
+  EXPECT_FALSE(r.add(f0));
+  EXPECT_EQ(r.json()["inside"], 0);
+  EXPECT_EQ(r.text().find("inside"), std::string::npos);
+  f0.inside = 2, f1.inside = 1;
+  AuditReport s(square(), {}, 16);
+  s.add(f0), s.add(f1);
+  EXPECT_TRUE(s.clean());
+  EXPECT_EQ(s.json()["inside"], 3);
+  EXPECT_EQ(s.json()["violations"], 0);
+  EXPECT_NE(s.text().find("3 cloth vertices strictly inside a closed obstacle"), std::string::npos)
+      << s.text();
+}
+
 TEST(AuditReport, ArraysHaveNoPlacesAndNoCaseFiles) {
   AuditReport r(square(), {}, 16);
   audit::FrameReport f0, f1;

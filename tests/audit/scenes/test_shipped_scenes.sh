@@ -48,9 +48,10 @@ for scene in "$repo"/corpus/scenes/*.scene; do
   python3 - "$name" "$dir.simulate.json" "$dir.audit.json" <<'PY' || failed+=("$name (simulate's frame audit is not clean)")
 import json, sys
 name, sim, audit = sys.argv[1], json.load(open(sys.argv[2])), json.load(open(sys.argv[3]))
-print(f"{name}: {sim['frames']} frames; simulate's frame audit: crossing {sim['crossing']}, "
-      f"self_crossing {sim['self_crossing']}; fdhcert audit: {audit['summary']}")
-sys.exit(sim["crossing"] != 0 or sim["self_crossing"] != 0)
+print(f"{name}: {sim['frames']} frames; simulate's frame audit: inside {sim['inside']}, "
+      f"crossing {sim['crossing']}, self_crossing {sim['self_crossing']}; "
+      f"fdhcert audit: {audit['summary']}")
+sys.exit(sim["inside"] != 0 or sim["crossing"] != 0 or sim["self_crossing"] != 0)
 PY
   [ "$status" -eq 0 ] || failed+=("$name (fdhcert audit found violations)")
   rm -rf "$dir"  # the fold's frames are large: one scene's on disk at a time

@@ -73,7 +73,8 @@ TEST(Scenes, BadInputNamesTheFileAndLine) {
   EXPECT_NE(err.str().find("bad.scene:2"), std::string::npos);
 }
 
-// With robust, no cloth triangle of any shipped scene meets an obstacle's (nor, with the
+// With robust, no cloth particle of any shipped scene is inside an obstacle and no cloth
+// triangle meets an obstacle's (nor, with the
 // self-collision pass, another cloth triangle) in any checked frame, and the narrow phase agrees
 // with the exact test on every query. Each scene runs at most 2e6 particle-frames: every 25x25
 // scene whole, but only the first 50 frames of the 200x200 fold (its whole run takes minutes;
@@ -87,6 +88,7 @@ TEST(Scenes, RobustKeepsTheAuditAtZeroOnEveryShippedScene) {
     const bool whole = opt.frames == s.frames;
     const SceneRun r = run_scene(s, opt);
     EXPECT_FALSE(r.dt_reduced) << p;
+    EXPECT_EQ(r.audit.inside, 0) << p;
     EXPECT_EQ(r.audit.obstacle_intersections, 0) << p;
     EXPECT_EQ(r.fp, 0) << p;
     EXPECT_EQ(r.fn, 0) << p;
@@ -109,6 +111,7 @@ TEST(Scenes, WithoutTheSkinEdgesCutTheTableCorners) {
   Scene s = read_scene(kScenes + "table.scene");
   s.thickness = 0;
   const SceneRun r = run_scene(s, {});
+  EXPECT_EQ(r.audit.inside, 0);
   EXPECT_GT(r.audit.obstacle_intersections, 0);
 }
 
@@ -122,7 +125,7 @@ TEST(Simulate, RecordsQueriesThatClassifyReplays) {
             0)
       << err.str();
   for (const char* key : {"\"springs\"", "\"refit\"", "\"traversal\"", "\"narrow\"", "\"response\"",
-                          "\"candidates\"", "\"crossing\": 0"})
+                          "\"candidates\"", "\"inside\": 0", "\"crossing\": 0"})
     EXPECT_NE(out.str().find(key), std::string::npos) << key << " in " << out.str();
   EXPECT_TRUE(fs::exists(dir / "obj" / "frame_00600.obj"));
   EXPECT_GT(fs::file_size(png), 1000u);
@@ -145,12 +148,13 @@ TEST(SceneReport, JsonIsSimulatesWithNullsForWhatWasNotCounted) {
   EXPECT_EQ(j["scene"], "s");
   EXPECT_EQ(j["narrow"], opt.narrow);
   EXPECT_TRUE(j["fp"].is_null());
+  EXPECT_TRUE(j["inside"].is_null());
   EXPECT_TRUE(j["crossing"].is_null());
   EXPECT_TRUE(j["self_crossing"].is_null());
   EXPECT_DOUBLE_EQ(j["ms_per_frame"]["springs"].get<double>(), 0.5);
   opt.check = true;
   EXPECT_EQ(scene_run_json(scene, opt, run)["crossing"], 0);
-  EXPECT_FALSE(scene_run_json(scene, opt, run).contains("inside"));
+  EXPECT_EQ(scene_run_json(scene, opt, run)["inside"], 0);
 }
 
 // The table scene cut to a few frames, alone in a folder.
@@ -170,11 +174,12 @@ TEST(Scenes, EachSceneGetsAPictureAJsonAndALine) {
   ASSERT_EQ(run_cli({"scenes", "--scenes", in.string(), "--out", out.string()}, so, se), 0)
       << se.str();
   EXPECT_EQ(so.str().rfind("table ", 0), 0u) << so.str();
-  EXPECT_NE(so.str().find("crossing 0 self-crossing -"), std::string::npos) << so.str();
+  EXPECT_NE(so.str().find("inside 0 crossing 0 self-crossing -"), std::string::npos) << so.str();
   EXPECT_GT(std::filesystem::file_size(out / "table.png"), 1000u);
   std::ifstream json(out / "table.json");
   const auto j = nlohmann::json::parse(json);
   EXPECT_EQ(j["frames"], 20);
+  EXPECT_EQ(j["inside"], 0);
   EXPECT_EQ(j["crossing"], 0);
   std::ostringstream so2, se2;
   EXPECT_EQ(run_cli({"scenes", "--scenes", (in / "none").string()}, so2, se2), 2);

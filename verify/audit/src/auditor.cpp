@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "inside_count.hpp"
 #include "mesh_parts.hpp"
 #include "trees.hpp"
 
@@ -60,6 +61,7 @@ struct Auditor::Impl {
   Options options;
   MeshParts cloth, obstacle;
   std::unique_ptr<Trees> trees;
+  std::unique_ptr<InsideCount> inside;              // the cloth's particles in the closed obstacles
   std::vector<Vec3> cloth_before, obstacle_before;  // the previous frame
   int frames = 0;
   std::optional<tbb::task_arena> arena;  // with Options::threads > 0
@@ -91,6 +93,7 @@ Auditor::Auditor(Topology topology, Options options) : impl_(std::make_unique<Im
     throw std::invalid_argument("a vertex count is negative");
   impl_->cloth = mesh_parts(topology.cloth_vertices, topology.cloth, "cloth");
   impl_->obstacle = mesh_parts(topology.obstacle_vertices, topology.obstacle, "obstacle");
+  impl_->inside = std::make_unique<InsideCount>(impl_->obstacle.tris);
   impl_->topology = std::move(topology);
   impl_->options = options;
   if (options.threads > 0) impl_->arena.emplace(options.threads);
@@ -137,6 +140,7 @@ FrameReport Auditor::Impl::frame(const std::vector<Vec3>& x, const std::vector<V
   r.obstacle_intersections = all.obstacle_intersections;
   r.static_candidates = all.static_candidates;
   r.step = all.step;
+  r.inside = inside->count(x, cloth.owned_vertices, y);
   r.violations = std::move(all.kept);
   cloth_before = x;
   obstacle_before = y;

@@ -6,6 +6,7 @@ void AuditCounts::add(const AuditCounts& c) {
   self_intersections += c.self_intersections;
   obstacle_intersections += c.obstacle_intersections;
   static_candidates += c.static_candidates;
+  inside += c.inside;
   step.self_vertex_face += c.step.self_vertex_face;
   step.self_edge_edge += c.step.self_edge_edge;
   step.cloth_vertex_obstacle += c.step.cloth_vertex_obstacle;
@@ -19,6 +20,7 @@ AuditCounts counts_of(const FrameReport& r) {
   c.self_intersections = r.self_intersections;
   c.obstacle_intersections = r.obstacle_intersections;
   c.static_candidates = r.static_candidates;
+  c.inside = r.inside;
   if (r.has_step) c.step = r.step;
   return c;
 }

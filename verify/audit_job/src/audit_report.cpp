@@ -157,6 +157,10 @@ std::string AuditReport::text(int max_frames) const {
     out += fmt::format("  frame {}: {}\n", f, frame_counts(c, f));
   }
   if (more) out += fmt::format("  ... and {} more frames with violations\n", more);
+  if (total_.inside > 0)
+    out += fmt::format(
+        "  {} cloth vertices strictly inside a closed obstacle, summed over the frames\n",
+        total_.inside);
   return out;
 }
 
@@ -205,7 +209,8 @@ nlohmann::ordered_json AuditReport::json() const {
       {"k", options_.k},
       {"violations", total_.total()},
       {"totals", counts_json(total_, true)},
-      {"candidates", {{"static", total_.static_candidates}, {"ccd", total_.step.candidates}}}};
+      {"candidates", {{"static", total_.static_candidates}, {"ccd", total_.step.candidates}}},
+      {"inside", total_.inside}};
   j["first_violation"] = kept_.empty() ? Json(nullptr) : violation_json(kept_.front(), topology_);
   Json frames_j = Json::array();
   for (std::size_t f = 0; f < per_frame_.size(); ++f) {

@@ -35,7 +35,10 @@ Decided exactly (robust's filters with their exact fallbacks):
                   against cloth triangles, cloth edges against obstacle edges.
 For each violation: the frame or the step, the primitives (indices into the
 cloth's and the obstacles' vertices and triangles, and FILE:LINE of each), and
-a certified enclosure of the time of impact within the step.)";
+a certified enclosure of the time of impact within the step. Also counted,
+beside the verdict: cloth vertices strictly inside a closed obstacle (each
+connected piece of the obstacles that is a closed manifold mesh; open pieces
+have no inside).)";
 
 const char* const kAuditFooter =
     R"(Prints a summary line and a line per frame with violations (--json: the

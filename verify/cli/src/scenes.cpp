@@ -19,8 +19,9 @@ Runs each *.scene of the folder (in name order) as `fdhcert simulate SCENE
 robust, k = 18, writes OUT/NAME.png and OUT/NAME.json (the object of
 simulate --json, docs/formats.md), and prints one line per scene: its grid,
 frames, ms per frame, FP and FN against the exact test, and the exact audit
-(crossing: cloth triangles meeting an obstacle triangle; self-crossing:
-cloth triangles meeting one sharing no particle, - where not audited).
+(inside: cloth particles strictly inside an obstacle; crossing: cloth
+triangles meeting an obstacle triangle; self-crossing: cloth triangles
+meeting one sharing no particle, - where not audited).
 With --movies, also OUT/NAME-movie.png: the run as an animated PNG.
 `./run verify` runs it into docs/scenes.
 )";

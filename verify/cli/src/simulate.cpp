@@ -36,7 +36,8 @@ pairs and collisions, and two checks, both untimed:
   accuracy  every narrow-phase query against the exact point-triangle test
             (false positives and false negatives);
   audit     after every frame (or the scene's audit_every-th and the last),
-            the exact count of cloth triangles meeting an obstacle
+            the exact count of cloth particles strictly inside an
+            obstacle and of cloth triangles meeting an obstacle
             triangle (touching counts), summed over the frames: the
             engine of `fdhcert audit`, each frame on its own.)";
 
@@ -103,9 +104,10 @@ void print_counts(std::ostream& out, const SimulateOptions& o, const cloth::Scen
         "test\n",
         r.fp, r.fn);
     out << fmt::format(
-        "audit (exact)  {} cloth triangles meeting an obstacle triangle, summed over the "
-        "frames (last frame: {})\n",
-        r.audit.obstacle_intersections, r.audit_last.obstacle_intersections);
+        "audit (exact)  {} particles inside, {} cloth triangles meeting an obstacle "
+        "triangle, summed over the frames (last frame: {} and {})\n",
+        r.audit.inside, r.audit.obstacle_intersections, r.audit_last.inside,
+        r.audit_last.obstacle_intersections);
   }
   if (scene.self_collision)
     out << fmt::format(

@@ -61,6 +61,7 @@ json scene_run_json(const cloth::Scene& scene, const SceneRunOptions& opt, const
           {"collisions", r.collisions},
           {"fp", counted(opt.check, r.fp)},
           {"fn", counted(opt.check, r.fn)},
+          {"inside", counted(opt.check, r.audit.inside)},
           {"crossing", counted(opt.check, r.audit.obstacle_intersections)},
           {"self_collision", scene.self_collision},
           {"self_queries", r.self_queries},
@@ -152,9 +153,9 @@ std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
 std::string scene_summary_line(const SceneFolderRun& r) {
   const SceneRun& s = r.run;
   return fmt::format(
-      "{:<14} {:>3}x{:<3} {:>5} frames {:>8.4f} ms/frame  FP {} FN {}  crossing {} "
+      "{:<14} {:>3}x{:<3} {:>5} frames {:>8.4f} ms/frame  FP {} FN {}  inside {} crossing {} "
       "self-crossing {}",
-      r.scene.name, s.grid, s.grid, s.frames, s.ms_per_frame(), s.fp, s.fn,
+      r.scene.name, s.grid, s.grid, s.frames, s.ms_per_frame(), s.fp, s.fn, s.audit.inside,
       s.audit.obstacle_intersections,
       s.self_audited ? std::to_string(s.audit.self_intersections) : "-");
 }

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "fdh/audit/auditor.hpp"
 #include "fdh/check/checker.hpp"
 #include "fdh/exact/ccd.hpp"
+#include "fdh/exact/inside.hpp"
 
 namespace fdh::verify {
 
@@ -34,6 +36,15 @@ audit::Topology audit_topology(const cloth::Scene& scene, const cloth::Simulatio
   return t;
 }
 
+// A scene's obstacles are solids: each must have an inside for the audit's `inside` count (the
+// engine skips open pieces, as `fdhcert audit` must; a scene has none).
+void check_closed_obstacles(const cloth::Scene& scene) {
+  for (std::size_t o = 0; o < scene.obstacles.size(); ++o)
+    if (!exact::is_closed_manifold(cloth::obstacle_mesh(scene.obstacles[o])))
+      throw std::invalid_argument("obstacle " + std::to_string(o + 1) +
+                                  " is not a closed manifold mesh");
+}
+
 // Each checked frame on its own, the cloth against itself only when asked; on every core (as
 // --threads allows), with the engine's own k, as `fdhcert audit`.
 audit::Options frame_audit_options(bool self) {
@@ -57,6 +68,7 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
   r.skin = scene.skin();
   r.frames = opt.frames >= 0 ? opt.frames : scene.frames;
 
+  check_closed_obstacles(scene);
   const Method narrow = select_methods({opt.narrow}).front();
   cloth::Simulation sim(scene, narrow_phase_named(opt.narrow), opt.k, r.dt, &exact::ccd_hit,
                         &exact::ccd_toi);

@@ -84,6 +84,11 @@ struct FrameReport {
   int frame = 0;
   long self_intersections = 0, obstacle_intersections = 0;  // within the frame
   long static_candidates = 0;                               // triangle pairs tested
+  // Cloth vertices (those in a triangle) strictly inside a closed obstacle at the frame: each
+  // connected piece of the obstacles that is a closed manifold mesh, exactly (ray parity,
+  // fdh/exact/inside.hpp; on the surface is not inside); open pieces have no inside. A cloth
+  // piece wholly inside an obstacle meets none of its triangles: only this count sees it.
+  long inside = 0;
   bool has_step = false;  // frame > 0: `step` is the step from frame - 1 to this frame
   StepCounts step;
   double seconds = 0;  // wall time of this frame's checks (broad and narrow phase)

@@ -11,6 +11,9 @@ struct AuditCounts {
   long self_intersections = 0, obstacle_intersections = 0;  // within the frames
   StepCounts step;                                          // during the steps
   long static_candidates = 0;                               // triangle pairs tested
+  // Cloth vertices strictly inside a closed obstacle (FrameReport::inside), summed over the
+  // frames: a count of particles, not of violations, so not in total().
+  long inside = 0;
   long total() const { return self_intersections + obstacle_intersections + step.total(); }
   void add(const AuditCounts& c);
 };

@@ -18,7 +18,7 @@
 namespace fdh::verify {
 
 // The object `fdhcert simulate --json` prints (docs/formats.md, "simulate output"); fp, fn and
-// crossing are null when the run was not checked, self_crossing unless audited.
+// inside and crossing are null when the run was not checked, self_crossing unless audited.
 nlohmann::ordered_json scene_run_json(const cloth::Scene& scene, const SceneRunOptions& opt,
                                       const SceneRun& run);
 
@@ -66,7 +66,7 @@ std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
                                              const SceneFolderOptions& opt = {});
 
 // One line for people: the scene, its grid and frames, ms per frame, FP and FN, the exact
-// frame audit (crossing, self-crossing).
+// frame audit (inside, crossing, self-crossing).
 std::string scene_summary_line(const SceneFolderRun& r);
 
 }  // namespace fdh::verify

@@ -1,7 +1,8 @@
 // Runs a scene frame by frame with a chosen narrow phase and k, and checks it: every
 // narrow-phase query against the exact point–triangle test (FP, FN), and every checked frame
-// against the exact frame audit (the audit engine, fdh/audit/auditor.hpp: cloth triangles that
-// meet an obstacle triangle or, when asked, another cloth triangle sharing no particle).
+// against the exact frame audit (the audit engine, fdh/audit/auditor.hpp: cloth particles
+// strictly inside an obstacle, cloth triangles that meet an obstacle triangle or, when asked,
+// another cloth triangle sharing no particle). Every obstacle must be a closed manifold mesh.
 // Shared by `simulate`, `scenes`, `table1` and Python's fdhcert.simulate.
 #pragma once
 
@@ -39,7 +40,7 @@ struct SceneRun {
   long candidates = 0, collisions = 0, fp = 0, fn = 0;
   long broken = 0;  // narrow-phase verdicts that break the method's promise (checker.hpp)
   // The frame audit, each checked frame on its own (no steps: checked frames may be far apart):
-  // obstacle_intersections, and self_intersections when self_audited.
+  // inside and obstacle_intersections, and self_intersections when self_audited.
   audit::AuditCounts audit;       // summed over the checked frames
   audit::AuditCounts audit_last;  // the last checked frame's
   long audited_frames = 0;  // checked: every frame, or the scene's audit_every-th and the last
