@@ -58,6 +58,7 @@ Command add_generate(CLI::App& app) {
   CLI::App* cmd = add_command(app, "generate", kGenerateAbout, kGenerateFooter);
   std::vector<std::string> families;
   for (const Family& f : all_families()) families.push_back(f.name);
+  for (const Family& f : delta_families()) families.push_back(f.name);
   cmd->add_option("FAMILY", o->family, "a generator family (below)")
       ->required()
       ->check(one_of(families));
