@@ -61,8 +61,7 @@ TEST(DeltaFamilies, AreNamedApartFromTheContactFamilies) {
     EXPECT_EQ(f.name.rfind("delta-", 0), 0u) << f.name;
     for (const Family& c : all_families()) EXPECT_NE(c.name, f.name);
   }
-  for (const Family& c : all_families())
-    EXPECT_EQ(generate(c, 7).query.min_distance, 0) << c.name;
+  for (const Family& c : all_families()) EXPECT_EQ(generate(c, 7).query.min_distance, 0) << c.name;
 }
 
 // Shrinking keeps δ: every simplification keeps it, but a scale, which scales it with the points.
