@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "fdh/certify/certify.hpp"
+#include "fdh/gen/families.hpp"
 #include "temp_dir.hpp"
 
 namespace fdh::verify {
