@@ -6,7 +6,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include "earliest_contact.hpp"
+#include "moving_points.hpp"
 #include "polynomial.hpp"
+#include "separation.hpp"
 
 namespace fdh::exact {
 namespace {
@@ -14,24 +17,6 @@ namespace {
 using algebra::Poly;
 using algebra::Root;
 using algebra::sign_at;
-
-// A point or vector whose coordinates are polynomials in t.
-struct PVec {
-  Poly x, y, z;
-  bool is_zero() const { return x.is_zero() && y.is_zero() && z.is_zero(); }
-};
-PVec operator-(const PVec& a, const PVec& b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-PVec cross(const PVec& a, const PVec& b) {
-  using algebra::sum_of_products;
-  return {sum_of_products({{a.y, b.z}, {a.z, b.y, true}}),
-          sum_of_products({{a.z, b.x}, {a.x, b.z, true}}),
-          sum_of_products({{a.x, b.y}, {a.y, b.x, true}})};
-}
-Poly dot(const PVec& a, const PVec& b) {
-  return algebra::sum_of_products({{a.x, b.x}, {a.y, b.y}, {a.z, b.z}});
-}
 
 // A point or vector at one dyadic time t = a / 2^k with its coordinates scaled by 2^k (each
 // coordinate of a moving point is linear: c0 2^k + c1 a). The contact conditions are
@@ -117,29 +102,6 @@ int integer_sign(const algebra::Int& x) {
   return x.sign();
 }
 
-// The four moving points with their coordinates scaled by one power of two into integers:
-// every condition below is homogeneous in the coordinates, so no sign changes.
-std::array<PVec, 4> integer_paths(const Query& q) {
-  algebra::Binary d[24];  // x = m 2^e; scaled by 2^k, each is the integer m 2^(e + k)
-  long k = 0;
-  for (int i = 0; i < 8; ++i)
-    for (int j = 0; j < 3; ++j) {
-      algebra::Binary& e = d[3 * i + j];
-      e = algebra::Binary::of(j == 0 ? q.x[i].x : j == 1 ? q.x[i].y : q.x[i].z);
-      if (e.m != 0) k = std::max(k, -long(e.e));
-    }
-  algebra::Int c[24];
-  for (int i = 0; i < 24; ++i)
-    if (d[i].m != 0) mul_2exp(c[i], algebra::Int(d[i].m), (unsigned long)(d[i].e + k));
-  std::array<PVec, 4> v;
-  for (int i = 0; i < 4; ++i) {
-    v[i].x = Poly::linear(c[3 * i], c[3 * i + 12]);
-    v[i].y = Poly::linear(c[3 * i + 1], c[3 * i + 13]);
-    v[i].z = Poly::linear(c[3 * i + 2], c[3 * i + 14]);
-  }
-  return v;
-}
-
 class Search {
  public:
   Search(const CcdOptions& o, bool want_time)
@@ -148,22 +110,10 @@ class Search {
   void vertex_face(const PVec& p, const PVec& a, const PVec& b, const PVec& c);
   void edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVec& b1);
 
-  // The earliest contact found, refined to width < 2^-bits (bits = 0: as found). May be called
-  // again with more bits: the candidates' intervals are refined in place.
-  CcdContact result(unsigned long bits);
-
-  // The earliest contact found as doubles, outward, refined until they are at most `width`
-  // apart and t_lo > 0 unless t* = 0 (see ccd_toi). No strings, no rationals: dyadics only.
-  Toi toi(double width);
-
-  // Where the window's end t1 lies against the earliest contact t* found in [t0, t1] (there must
-  // be one): 0 if t* = t1, +1 if t* < t1. A candidate is exact at t1 or lies in an open interval
-  // (lo, hi) with hi <= t1 (polynomial.hpp's Root), so no refinement is needed.
-  int end_against_contact() const {
-    for (const Root& r : found_)
-      if (!r.exact() || r.lo().value() != t1_.value()) return 1;
-    return 0;
-  }
+  // The earliest contact found (earliest_contact.hpp).
+  CcdContact result(unsigned long bits) { return earliest_contact(found_, bits, want_time_); }
+  Toi toi(double width) { return earliest_toi(found_, width); }
+  int end_against_contact() const { return window_end_against_earliest(found_, t1_); }
 
  private:
   // Records the first of `roots` (increasing) where `ok` holds.
@@ -300,73 +250,6 @@ void Search::edge_edge(const PVec& a0, const PVec& a1, const PVec& b0, const PVe
                 {{&a0, &b0, &b1}, {&a1, &b0, &b1}, {&b0, &a0, &a1}, {&b1, &a0, &a1}});
 }
 
-// Bounds as doubles, outward: get_d truncates, which rounds down for q >= 0.
-double up(const mpq_class& q) {
-  const double d = q.get_d();
-  return mpq_class(d) < q ? std::nextafter(d, 2.0) : d;
-}
-
-// The bits that make an exact interval narrower than `width`, with two more for the outward
-// rounding to doubles (each end moves by less than 2^-53 in [0, 1]).
-unsigned long bits_for(double width) {
-  return unsigned(std::max(0, -std::ilogb(width))) + 2;
-}
-
-// A dyadic rounded to a double downward or upward: to nearest by its leading bits, then one
-// step where that went the wrong way.
-double rounded(const algebra::Dyadic& x, bool upward) {
-  long e = 0;
-  const double m = x.a.frexp(&e);
-  double d = std::ldexp(m, int(e - long(x.k)));
-  const int c = algebra::compare(algebra::Dyadic::of(d), x);
-  if (upward ? c < 0 : c > 0) d = std::nextafter(d, upward ? 2.0 : -1.0);
-  return d;
-}
-
-Toi Search::toi(double width) {
-  if (found_.empty()) return Toi{};
-  // Each candidate's interval holds its time; the earliest lies in [min lo, min hi].
-  for (unsigned long bits = bits_for(width);; bits += 8) {
-    const algebra::Dyadic* lo = nullptr;
-    const algebra::Dyadic* hi = nullptr;
-    algebra::Dyadic los[10], his[10];
-    for (std::size_t i = 0; i < found_.size(); ++i) {
-      Root& r = found_[i];
-      algebra::narrow_to_doubles(r);  // mostly narrow enough at once
-      algebra::refine(r, bits);
-      los[i] = r.lo(), his[i] = r.hi();
-      if (!lo || algebra::compare(los[i], *lo) < 0) lo = &los[i];
-      if (!hi || algebra::compare(his[i], *hi) < 0) hi = &his[i];
-    }
-    const Toi t{true, rounded(*lo, false), rounded(*hi, true)};
-    // t_lo > 0 unless t* = 0: a contact just after 0 needs as many bits as it is close to 0
-    // (one below 2^-1074, the smallest double, keeps t_lo = 0: no double lies below it).
-    if (t.t_hi - t.t_lo <= width && (t.t_lo > 0 || t.t_hi == 0 || bits > 1100)) return t;
-    if (bits > 1100)  // the interval holds two doubles apart by > 2^-52 only if wider than that
-      throw std::logic_error("ccd_toi: the contact time did not narrow");
-  }
-}
-
-CcdContact Search::result(unsigned long bits) {
-  CcdContact out;
-  if (found_.empty()) return out;
-  out.hit = true;
-  if (!want_time_) return out;
-  // Each candidate's interval holds its time; the earliest lies in [min lo, min hi].
-  mpq_class lo = 2, hi = 2;
-  for (Root& r : found_) {
-    if (bits > 0) algebra::refine(r, bits);
-    const mpq_class rl = r.lo().value(), rh = r.hi().value();
-    if (rl < lo) lo = rl;
-    if (rh < hi) hi = rh;
-  }
-  out.time_lo = lo.get_str();
-  out.time_hi = hi.get_str();
-  out.time_lo_down = lo.get_d();
-  out.time_hi_up = up(hi);
-  return out;
-}
-
 // Searches [o.t0, o.t1] for every candidate of the earliest contact.
 void search(const Query& q, const CcdOptions& o, Search& search) {
   if (!(0 <= o.t0 && o.t0 <= o.t1 && o.t1 <= 1))
@@ -386,17 +269,21 @@ CcdContact run(const Query& q, const CcdOptions& o, bool want_time) {
 
 }  // namespace
 
+// A minimum separation δ != 0 goes to its own search (separation.hpp); δ = 0 is contact.
 CcdContact ccd(const Query& q, const CcdOptions& options) {
+  if (q.min_distance != 0) return separation_ccd(q, options);
   return run(q, options, true);
 }
 
 bool ccd_hit(const Query& q) {
+  if (q.min_distance != 0) return separation_hit(q);
   return run(q, CcdOptions{}, false).hit;
 }
 
 Toi ccd_toi(const Query& q, double t0, double t1, double width) {
   if (!(width >= kMinToiWidth && width <= 1))
     throw std::invalid_argument("ccd_toi: the width must lie in [2^-52, 1]");
+  if (q.min_distance != 0) return separation_toi(q, t0, t1, width);
   const CcdOptions o{t0, t1, 0};
   Search s(o, true);
   search(q, o, s);
@@ -407,6 +294,7 @@ Toi ccd_toi(const Query& q, double t0, double t1, double width) {
 }
 
 int compare_with_toi(const Query& q, double t) {
+  if (q.min_distance != 0) return separation_compare_with_toi(q, t);
   if (!(t >= 0 && t <= 1)) return t < 0 ? -1 : 1;  // outside the step (NaN counts as late)
   // A contact in [0, t] exactly when t* <= t; then t* = t exactly when every candidate for the
   // earliest contact in [0, t] is t itself (Search::end_against_contact).

@@ -1,5 +1,5 @@
 // A vector of at most N elements stored inside the object: the exact CCD's polynomials have
-// degree <= 4, so their coefficients, Sturm sequences and roots have known small bounds, and
+// degree <= 6, so their coefficients, Sturm sequences and roots have known small bounds, and
 // keeping them inline spares an allocation per polynomial. Only the elements in use are
 // constructed (a polynomial of degree 1 builds two integers, not five). Exceeding N is a bug:
 // it throws std::length_error. Private to reference/.

@@ -49,8 +49,8 @@ Poly pseudo_remainder(const Poly& a, const Poly& b) {
 
 // The Sturm sequence of s: s, s', then negated remainders down to a constant when s is
 // squarefree, else down to gcd(s, s') (up to a factor).
-InlineVector<Poly, 5> sturm_sequence(const Poly& s) {
-  InlineVector<Poly, 5> seq{s, derivative(s)};
+InlineVector<Poly, kMaxDegree + 1> sturm_sequence(const Poly& s) {
+  InlineVector<Poly, kMaxDegree + 1> seq{s, derivative(s)};
   while (!seq.back().is_zero() && seq.back().degree() > 0) {
     Poly r = pseudo_remainder(seq[seq.size() - 2], seq.back());
     if (r.is_zero()) break;
@@ -69,7 +69,7 @@ struct SturmAt {
 
 struct Isolator {
   const Poly& s;
-  InlineVector<Poly, 5> seq;
+  InlineVector<Poly, kMaxDegree + 1> seq;
   Roots out;
 
   SturmAt at(const Int& a, unsigned long k) const {
@@ -148,8 +148,8 @@ void jump(Root& r) {
   const int d = s.degree();
   // s's coefficients as doubles scaled by a common power of two (tiny ones may underflow: the
   // float bisection only has to be good, the exact check makes it safe).
-  double c[5], m[5];
-  long e[5];
+  double c[kMaxDegree + 1], m[kMaxDegree + 1];
+  long e[kMaxDegree + 1];
   long emax = LONG_MIN;
   for (int i = 0; i <= d; ++i) {
     m[i] = s.c[i].frexp(&e[i]);
@@ -284,7 +284,7 @@ Poly derivative(const Poly& p) {
 }
 
 Poly gcd(const Poly& a0, const Poly& b0) {
-  // Degrees are at most 4 here: coefficient growth without content removal stays small, and
+  // Degrees are at most 6 here: coefficient growth without content removal stays small, and
   // removing it (integer gcds) costs more than it saves.
   Poly a = a0, b = b0;
   if (a.degree() < b.degree()) std::swap(a, b);
@@ -315,8 +315,14 @@ Poly exact_quotient(const Poly& p, const Poly& g0) {
 // b_i = sum_{j <= i} C(i, j) / C(d, j) a_j (Farouki & Rajan 1988, "Algorithms for polynomials
 // in Bernstein form"). Scaled by d!, the b_i are the integers sum_{j <= i} C(i, j) j! (d - j)! a_j.
 Coeffs bernstein(const Poly& p) {
-  static const long factorial[] = {1, 1, 2, 6, 24};
-  static const long binomial[5][5] = {{1}, {1, 1}, {1, 2, 1}, {1, 3, 3, 1}, {1, 4, 6, 4, 1}};
+  static const long factorial[] = {1, 1, 2, 6, 24, 120, 720};
+  static const long binomial[7][7] = {{1},
+                                      {1, 1},
+                                      {1, 2, 1},
+                                      {1, 3, 3, 1},
+                                      {1, 4, 6, 4, 1},
+                                      {1, 5, 10, 10, 5, 1},
+                                      {1, 6, 15, 20, 15, 6, 1}};
   const int d = p.degree();
   Coeffs b(p.c.size());
   for (int i = 0; i <= d; ++i) {
@@ -477,7 +483,7 @@ Roots roots_in(Poly& s, const Dyadic& t0, const Dyadic& t1) {
     if (!is_unit_window(t0, t1)) clip_to_window(s, by_signs, t0, t1);
     return by_signs;
   }
-  InlineVector<Poly, 5> seq = sturm_sequence(s);
+  InlineVector<Poly, kMaxDegree + 1> seq = sturm_sequence(s);
   // The last element is gcd(s, s') up to a factor (a remainder sequence): s is squarefree iff
   // it is a constant. Else the roots are those of s / gcd(s, s'), each simple.
   if (seq.back().degree() > 0) {

@@ -10,8 +10,9 @@
 // (integer.hpp): machine integers while they fit, GMP's mpn layer on inline limbs beyond.
 //
 // Why Sturm and bisection rather than CGAL's algebraic kernel: every polynomial here has degree
-// <= 4 and we only ever ask "the roots in [t0, t1], in order" and "the sign of g at this root".
-// Sturm counts and a gcd answer both exactly in a page of code (see docs/methods.md).
+// <= 6 (4 for contact, 6 for a minimum separation) and we only ever ask "the roots in [t0, t1], in
+// order" and "the sign of g at this root". Sturm counts and a gcd answer both exactly in a page of
+// code (see docs/methods.md).
 #pragma once
 
 #include <gmpxx.h>
@@ -23,9 +24,12 @@
 
 namespace fdh::exact::algebra {
 
-// Every polynomial here has degree <= 4 (a dot product of two cross products of moving
-// vectors); its coefficients stay inside it.
-using Coeffs = InlineVector<Int, 5>;
+// Every polynomial here has degree <= 6: 4 for contact (a dot product of two cross products of
+// moving vectors), 6 for a minimum separation (the square of a distance to a plane times |n|^2,
+// exact_separation.cpp). Its coefficients stay inside it; unused capacity is never constructed,
+// so contact pays nothing for it.
+constexpr int kMaxDegree = 6;
+using Coeffs = InlineVector<Int, kMaxDegree + 1>;
 
 struct Poly {
   Coeffs c;  // c[i] is the coefficient of t^i; no trailing zeros (0 is empty)
@@ -89,7 +93,7 @@ struct Root {
   Dyadic hi() const { return {b, k}; }
 };
 
-using Roots = InlineVector<Root, 4>;
+using Roots = InlineVector<Root, kMaxDegree>;
 
 // The distinct real roots of s in [t0, t1], increasing, for s of degree >= 1. s becomes its
 // squarefree part s / gcd(s, s') if it has a multiple root. The roots point into s, which must
