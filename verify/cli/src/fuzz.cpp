@@ -54,8 +54,8 @@ contact time.)";
 const char* const kFuzzFooter =
     R"(The same seed and shard always give the same cases. Progress is saved in
 DIR/.fuzz/ as cases are done: a run killed and started again with the same
---method, --family, --seed, --count, --shard, --metamorphic, --min-distance and --toi (with
-its --width and --toi-tolerance; any --chunk and --threads)
+--method, --family, --seed, --count, --shard, --metamorphic, --min-distance
+and --toi (with its --width and --toi-tolerance; any --chunk and --threads)
 continues where it stopped and ends with exactly the cases of an uninterrupted
 run. A second run on DIR while one runs, or a run with other options while DIR
 holds an unfinished run, stops with exit status 2. On a terminal, a progress
