@@ -16,7 +16,8 @@ using Segment = K::Segment_3;
 
 Point corner_at(const Query& q, int i, const FT& t) {
   const Vec3 &a = q.x[i], &b = q.x[i + 4];
-  const auto at = [&t](double u, double v) { return FT(u) + t * (FT(v) - FT(u)); };
+  // FT: gmpxx expression templates would outlive the temporaries.
+  const auto at = [&t](double u, double v) -> FT { return FT(u) + t * (FT(v) - FT(u)); };
   return {at(a.x, b.x), at(a.y, b.y), at(a.z, b.z)};
 }
 

@@ -13,12 +13,12 @@ namespace fdh::verify {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kCorpus = FDH_SOURCE_DIR "/corpus/counterexamples";
+const fs::path kCounterexamples = FDH_SOURCE_DIR "/corpus/counterexamples";
 
 TEST(Corpus, EveryCounterexampleStillFailsItsMethod) {
   const std::vector<Method> promised = promised_methods();
   int files = 0;
-  for (const auto& dir : fs::directory_iterator(kCorpus)) {
+  for (const auto& dir : fs::directory_iterator(kCounterexamples)) {
     const Method m = select_methods({dir.path().filename().string()}).front();
     for (const auto& file : fs::directory_iterator(dir.path())) {
       SCOPED_TRACE(file.path().string());

@@ -1,7 +1,7 @@
 /* A plug-in of ABI version 2 that takes settings (fdh_plugin_init) and declares flags
-   (fdh_plugin_flags), for tests/verify/plugin/test_plugin.cpp and the budget test of
-   tests/CMakeLists.txt. It says "hit" to every query (conservative: it misses no hit), unless
-   told otherwise:
+   (fdh_plugin_flags), for the settings and budget tests of
+   tests/verify/plugin/test_plugin_settings.cpp. It says "hit" to every query (conservative: it
+   misses no hit), unless told otherwise:
      delay=SECONDS     each call sleeps that long first (a slow library; default 0)
      answer=0          it says "no" to every query instead (and so breaks its promise)
      answer=2          it answers 2, garbage (the probe's child refuses it)

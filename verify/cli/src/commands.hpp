@@ -1,9 +1,8 @@
-// CLI11 pattern ready
-//
 // The fdhcert commands and what they share. Private to verify/cli; the public entry point is
 // fdh/cli/cli.hpp (run_cli).
 //
-// The pattern (classify.cpp is the example). A command is one file with
+// The pattern, which every command follows (classify.cpp is the example): a command is one
+// file with
 //   - a struct of its options, held by a std::shared_ptr that the runner captures (CLI11 binds
 //     the options to its fields, so it must outlive the parse);
 //   - `Command add_<name>(CLI::App& app)`: adds the subcommand (a one-line description for the

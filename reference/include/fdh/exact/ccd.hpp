@@ -12,6 +12,13 @@
 // Exact integers throughout: machine integers while they fit, GMP's mpn layer on limbs kept inline
 // beyond: heap allocation only for integers beyond 768 bits (reference/src/integer.hpp,
 // inline_vector.hpp).
+//
+// Minimum separation (issue 30): with q.min_distance = δ > 0, every function below answers the
+// same question within Euclidean distance δ instead of at contact (closed primitives, δ at its
+// exact value, t*_δ the earliest time within δ), with the same contracts: exact verdicts, the
+// same enclosures of t*_δ. The algebra is reference/src/exact_separation.cpp (docs/methods.md,
+// "Minimum separation"). δ = 0 takes the contact path, unchanged; a δ that is negative, NaN or
+// infinite is refused with std::invalid_argument.
 #pragma once
 
 #include <string>
