@@ -7,7 +7,6 @@
 // query starting with the next), as thread CPU time (a busy machine's waiting does not count), the
 // least of three batches of back-to-back calls lasting 2 µs or more.
 #include <benchmark/benchmark.h>
-#include <time.h>
 
 #include <algorithm>
 #include <functional>
@@ -22,39 +21,12 @@
 #include "fdh/exact/ccd.hpp"
 #include "fdh/gen/families.hpp"
 #include "fdh/io/query_io.hpp"
+#include "per_call.hpp"
 #include "sample_sets.hpp"
 #include "suites.hpp"
 
 namespace fdh::bench {
 namespace {
-
-
-double thread_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
-// Seconds per call of `f` on q: the least of three batches.
-template <class F>
-double seconds_per_call(const F& f, const Query& q) {
-  int reps = 1;
-  double best = 1e300;
-  for (int batch = 0; batch < 3;) {
-    double sink = 0;
-    const double start = thread_seconds();
-    for (int r = 0; r < reps; ++r) sink += f(q);
-    const double s = thread_seconds() - start;
-    benchmark::DoNotOptimize(sink);
-    if (s < 2e-6 && reps < 4096) {
-      reps *= 4;
-      continue;
-    }
-    best = std::min(best, s / reps);
-    ++batch;
-  }
-  return best;
-}
 
 // The methods timed, in this order on each query.
 struct Timed {

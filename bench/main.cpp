@@ -1,6 +1,7 @@
 // fdh_bench: `./run bench` (docs/performance.md). Google Benchmark's own options apply
 // (--benchmark_filter=REGEX, --benchmark_out=FILE --benchmark_out_format=json, ...); after the
-// run, the peers' ratios to ours and the audit's ratio of costs per vertex.
+// run, the peers' ratios to ours, the audit's ratio of costs per vertex and the minimum
+// separation's ratios (bench/ccd_delta.cpp).
 #include <benchmark/benchmark.h>
 
 #include <iostream>
@@ -33,12 +34,14 @@ int main(int argc, char** argv) {
   fdh::bench::register_narrow_phase();
   fdh::bench::register_ccd_sample();
   fdh::bench::register_ccd_toi();
+  fdh::bench::register_ccd_delta();
   fdh::bench::register_frames();
   fdh::bench::register_audit();
   KeepTimes console;
   benchmark::RunSpecifiedBenchmarks(&console);
   fdh::bench::print_peer_ratios(console.seconds, std::cout);
   fdh::bench::print_audit_ratio(std::cout);
+  fdh::bench::print_delta_ratios(std::cout);
   benchmark::Shutdown();
   return 0;
 }

@@ -17,6 +17,12 @@ void register_ccd_sample();
 // impact at w = 2^-30 and 2^-50 beside its verdict alone, ns per query and their ratios.
 void register_ccd_toi();
 
+// delta/sample/<set>, delta/sample/all: minimum separation at D = 1e-6 (issue 30): robust at
+// δ = 0, robust within δ, its TOI and the float baseline within δ, ns per query;
+// print_delta_ratios() prints the medians' ratios after the run.
+void register_ccd_delta();
+void print_delta_ratios(std::ostream& out);
+
 // frame/grid:<n>/self:<0|1>: the table scene's first frames, per grid, without and with the
 // self-collision pass (fewer frames at large grids: a benchmark's iteration count is fixed
 // at registration).

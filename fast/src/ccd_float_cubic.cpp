@@ -1,4 +1,6 @@
 #include "fdh/ccd/float_cubic.hpp"
+
+#include "ccd_float_delta.hpp"
 #include "fdh/ccd/toi.hpp"
 
 #include <algorithm>
@@ -105,6 +107,7 @@ bool touch_at(const Query& q, double t) {
 
 // The first root in [0, 1] at which the primitives touch (time order), or none.
 Toi first_touch(const Query& q) {
+  if (q.min_distance > 0) return float_first_within(q);  // the baseline within δ
   const auto& x = q.x;
   // Both kinds: det(x1 - x0, x2 - x0, x3 - x0), i.e. (a-p, b-p, c-p) or (ea1-ea0, eb0-ea0,
   // eb1-ea0).

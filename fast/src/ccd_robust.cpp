@@ -5,9 +5,11 @@
 #include <limits>
 #include <optional>
 
+#include "ccd_robust_delta.hpp"
 #include "fdh/interval.hpp"
 #include "fdh/orient3d_exact.hpp"
 #include "fdh/orient3d_filter.hpp"
+#include "motion.hpp"
 
 namespace fdh {
 namespace {
@@ -67,36 +69,7 @@ int bernstein_sign(const Bernstein& f) {
 
 // ---- Stage 2: the inside conditions by intervals, and root isolation by subdivision of f.
 
-// A point of the motion at a time t: an Interval (rigorous bounds over a time interval) or a
-// double (a plain estimate at one instant, for the cheap looks that only choose to give up).
-template <class T>
-struct V3 {
-  T x, y, z;
-};
-template <class T>
-V3<T> operator-(const V3<T>& a, const V3<T>& b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-template <class T>
-V3<T> cross(const V3<T>& a, const V3<T>& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-template <class T>
-T dot(const V3<T>& a, const V3<T>& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
-Interval lerp(double x0, double x1, const Interval& t) {
-  const Interval a = Interval::point(x0);
-  return a + t * (Interval::point(x1) - a);
-}
-double lerp(double x0, double x1, double t) {
-  return x0 + t * (x1 - x0);
-}
-template <class T>
-V3<T> at(const Vec3& x0, const Vec3& x1, const T& t) {
-  return {lerp(x0.x, x1.x, t), lerp(x0.y, x1.y, t), lerp(x0.z, x1.z, t)};
-}
+using namespace motion;
 
 // The conditions g_i over a time interval. At a coplanar time, contact iff every g_i >= 0 (the
 // same polynomials as reference/'s exact_ccd.cpp); g_i > 0 for all i implies contact, since the
@@ -718,6 +691,28 @@ Filtered subdivide(const Query& q, const Bernstein& f, ToiTrack* toi = nullptr) 
   return uncertain ? Filtered::Uncertain : Filtered::No;
 }
 
+// Within δ = q.min_distance > 0 (docs/methods.md, "Minimum separation: the robust filter"):
+// f of one certain sign bounds the distance to the plane (or between the lines) from below, and
+// a certain contact is within δ (its time bounds t*_δ from above); the time search
+// (ccd_robust_delta.cpp) decides what those leave.
+FilteredToi within_delta(const Query& q, const Bernstein& f, double width) {
+  if (!(q.min_distance <= 0x1p100)) return {};
+  double lowest = HUGE_VAL;
+  for (const double b : f.b) lowest = std::min(lowest, std::fabs(b));
+  const int sign = bernstein_sign(f);
+  if (sign != 0 && apart_by_volume(q, round_down(lowest - f.err)))
+    return {Filtered::No, 1, 1, false};
+  double contact_by = 2;
+  if (sign == 0) {
+    ToiTrack toi{1, 2, {}};  // its t1 only: a contact by then (no narrowing: width 1)
+    if (subdivide(q, f, &toi) == Filtered::Yes) {
+      if (width <= 0) return {Filtered::Yes, 0, 1, false};
+      contact_by = toi.out.t1;
+    }
+  }
+  return robust_delta_search(q, width, contact_by);
+}
+
 }  // namespace
 
 Filtered robust_ccd_filter(const Query& q) {
@@ -735,6 +730,7 @@ FilteredToi robust_ccd_toi_filter(const Query& q, double width) {
              w[2] = {x[3] - x[0], x[7] - x[4]};
   const Bernstein f = bernstein(u, v, w);
   if (!f.valid) return {};
+  if (q.min_distance > 0) return within_delta(q, f, width);
   if (bernstein_sign(f) != 0) return {Filtered::No, 1, 1, false};
   if (width <= 0) return {subdivide(q, f), 0, 1, false};
   ToiTrack toi{width, 2, {}};

@@ -1,13 +1,11 @@
 // fdhcert.audit: a sequence of mesh frames held in numpy arrays, certified as `fdhcert audit`
-// certifies OBJ files, with the same certificate (fdh/run/audit_report.hpp builds both).
-#include <chrono>
+// certifies OBJ files: the same job (fdh/audit_job/audit_job.hpp) over the arrays, its result's
+// certificate as a dict.
 #include <nlohmann/json.hpp>
 #include <optional>
 
 #include "bindings.hpp"
-#include "fdh/audit/auditor.hpp"
-#include "fdh/run/audit_report.hpp"
-#include "fdh/run/json_text.hpp"
+#include "fdh/audit_job/audit_job.hpp"
 
 namespace fdh::python {
 namespace {
@@ -57,6 +55,30 @@ py::ssize_t obstacle_vertices(const Points& o, py::ssize_t frames) {
   throw py::value_error("obstacles must be P×3 (fixed) or F×P×3 with the frames' F");
 }
 
+// The frames of the arrays, converted one at a time as the job reads them (the GIL taken for
+// the conversion only; Ctrl-C acts between frames).
+class ArrayFrames : public verify::FrameSource {
+ public:
+  ArrayFrames(const Points& frames, const std::optional<Points>& obstacles, audit::Topology t)
+      : frames_(frames), obstacles_(obstacles), topology_(std::move(t)) {}
+  const audit::Topology& topology() const override { return topology_; }
+  int frames() const override { return int(frames_.shape(0)); }
+  verify::MeshFrame read(int i) override {
+    py::gil_scoped_acquire gil;
+    check_signals();
+    verify::MeshFrame m;
+    m.index = i;
+    m.cloth = frame_of(frames_, i);
+    if (obstacles_) m.obstacle = frame_of(*obstacles_, i);
+    return m;
+  }
+
+ private:
+  const Points& frames_;
+  const std::optional<Points>& obstacles_;
+  audit::Topology topology_;
+};
+
 py::object audit(const py::object& frames_in, const py::object& faces,
                  const py::object& obstacles_in, const py::object& obstacle_faces, int k,
                  int threads, int keep) {
@@ -76,20 +98,15 @@ py::object audit(const py::object& frames_in, const py::object& faces,
     t.obstacle_vertices = int(p);
     t.obstacle = faces_of(obstacle_faces, p, "obstacle_faces");
   }
-  audit::Options opt;
+  verify::AuditOptions opt;
   opt.k = k, opt.threads = threads, opt.keep = keep;
-  audit::Auditor auditor(t, opt);  // std::invalid_argument: ValueError
-  verify::AuditReport report(t, opt, keep);
-  const auto start = std::chrono::steady_clock::now();
-  for (py::ssize_t f = 0; f < frames.shape(0); ++f) {
-    check_signals();  // Ctrl-C between frames
-    const std::vector<Vec3> x = frame_of(frames, f);
-    const std::vector<Vec3> o = obstacles ? frame_of(*obstacles, f) : std::vector<Vec3>{};
+  ArrayFrames source(frames, obstacles, std::move(t));
+  std::optional<verify::AuditResult> result;
+  {
     py::gil_scoped_release release;
-    report.add(auditor.add_frame(x, o));
+    result.emplace(verify::run_audit(source, opt));  // std::invalid_argument: ValueError
   }
-  report.finish(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  return py::module_::import("json").attr("loads")(verify::json_text(report.json(), "audit"));
+  return python_value(result->to_json());
 }
 
 }  // namespace

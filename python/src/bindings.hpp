@@ -6,10 +6,13 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "fdh/query.hpp"
 
@@ -53,6 +56,10 @@ void check_signals();
 
 // How often the long loops call check_signals: every so many queries (about a millisecond).
 inline constexpr std::size_t kQueriesPerSignalCheck = 1 << 14;
+
+// A job's result object (its to_json) as Python dicts, lists and scalars, key order kept: the
+// dict `fdhcert ... --json` prints, without JSON text in between (json_values.cpp).
+py::object python_value(const nlohmann::ordered_json& j);
 
 // "vertex-face" or "edge-edge"; ValueError naming the choices otherwise.
 QueryKind kind_named(const std::string& name);

@@ -4,7 +4,7 @@
 
 #include "bindings.hpp"
 #include "fdh/io/scene_file.hpp"
-#include "fdh/run/scene_run.hpp"
+#include "fdh/scene/scene_run.hpp"
 
 namespace fdh::python {
 namespace {
@@ -17,12 +17,16 @@ py::array_t<double> positions_of(const std::vector<Vec3>& x) {
   return a;
 }
 
-py::dict summary_of(const verify::SceneRun& r) {
+py::dict summary_of(const verify::SceneRun& r, bool checked) {
   py::dict s;
   s["grid"] = r.grid, s["frames"] = r.frames, s["particles"] = r.particles, s["dt"] = r.dt;
   s["ms_per_frame"] = r.ms_per_frame(), s["candidates"] = r.candidates;
   s["collisions"] = r.collisions, s["fp"] = r.fp, s["fn"] = r.fn;
-  s["inside"] = r.audit.inside, s["crossing"] = r.audit.crossing;
+  // The exact frame audit (None when not checked): the counts of simulate --json.
+  s["crossing"] =
+      checked ? py::object(py::int_(r.audit.obstacle_intersections)) : py::object(py::none());
+  s["self_crossing"] =
+      r.self_audited ? py::object(py::int_(r.audit.self_intersections)) : py::object(py::none());
   return s;
 }
 
@@ -72,7 +76,7 @@ py::dict simulate(const py::object& scene_path, const std::optional<int>& frames
     for (int c = 0; c < 3; ++c) tr(py::ssize_t(i), c) = tris[i][std::size_t(c)];
   py::dict out;
   out["positions"] = pos, out["frames"] = numbers, out["triangles"] = t;
-  out["final"] = positions_of(run.final_x), out["summary"] = summary_of(run);
+  out["final"] = positions_of(run.final_x), out["summary"] = summary_of(run, check);
   return out;
 }
 

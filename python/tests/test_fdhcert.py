@@ -96,6 +96,31 @@ def test_classify_time_gives_the_programs_cpu_time_fields():
     assert "cpu_time" not in fdhcert.classify([str(DATA / "moving.vf")])
 
 
+def test_classify_at_a_minimum_distance_is_the_programs():
+    """`classify(min_distance=D)` is `classify --min-distance D --json`; 0 is the call without it;
+    a negative, NaN or infinite D is a ValueError."""
+    path = DATA / "moving.vf"
+    mine = fdhcert.classify([path], methods=["exact", "robust"], min_distance=0.125)
+    cli = json.loads(program("classify", path, "--methods", "exact,robust", "--min-distance",
+                             "0.125", "--json").stdout)
+    assert mine["min_distance"] == 0.125
+    assert without_times(mine) == without_times(cli)
+    assert without_times(fdhcert.classify([path], min_distance=0)) == \
+        without_times(fdhcert.classify([path]))
+    for bad in (-1.0, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="min distance"):
+            fdhcert.classify([path], min_distance=bad)
+
+
+def test_classify_takes_the_modules_one_vocabulary_for_the_kind():
+    """kind is 'vertex-face' or 'edge-edge' across the module ('vf' was classify's alone)."""
+    path = DATA / "moving.vf"
+    assert without_times(fdhcert.classify([path], kind="edge-edge")) == \
+        without_times(fdhcert.classify([path]))  # a native file says its own kinds
+    with pytest.raises(ValueError, match="vertex-face"):
+        fdhcert.classify([path], kind="vf")
+
+
 def test_classify_of_arrays_gives_the_programs_tallies(scratch):
     kinds, points, truths = read_vf(DATA / "static.vf")
     keep = [i for i, t in enumerate(truths) if t >= 0]
@@ -228,6 +253,19 @@ def test_a_scene_runs_into_arrays():
     assert run["triangles"].shape == (2 * 9 * 9, 3)
     assert (run["positions"][-1] == run["final"]).all()
     assert run["summary"]["frames"] == 20 and run["summary"]["particles"] == 100
+    # Not checked: no audit counts.
+    assert run["summary"]["crossing"] is None and run["summary"]["self_crossing"] is None
+
+
+def test_a_checked_scene_has_the_frame_audit():
+    # The exact frame audit of simulate --json (the audit engine): the obstacles, and with the
+    # self-collision pass the cloth against itself.
+    run = fdhcert.simulate(str(SOURCE / "corpus/scenes/windy-bar.scene"), frames=30, grid=8,
+                           check=True)
+    assert run["summary"]["crossing"] == 0 and run["summary"]["self_crossing"] == 0
+    run = fdhcert.simulate(str(SOURCE / "corpus/scenes/table.scene"), frames=10, grid=8,
+                           check=True)
+    assert run["summary"]["crossing"] == 0 and run["summary"]["self_crossing"] is None
 
 
 def test_bad_input_raises_the_programs_message(scratch):

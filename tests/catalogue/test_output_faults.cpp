@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "fdh/os/child_process.hpp"
-#include "fdh/run/scene_report.hpp"
+#include "fdh/scene/scene_report.hpp"
 #include "temp_dir.hpp"
 #include "test_data.hpp"
 

@@ -25,8 +25,8 @@
 #include <thread>
 #include <vector>
 
+#include "fdh/io/json_text.hpp"
 #include "fdh/os/child_process.hpp"
-#include "fdh/run/json_text.hpp"
 #include "temp_dir.hpp"
 #include "test_data.hpp"
 

@@ -1,33 +1,24 @@
-// The cloth of issue 3: the response formulas by hand, the meshes and the audit on cases with
-// a known answer, the shipped scenes (stable step, audit 0 with robust), a cloth resting on a
-// table for 1,000 frames, and the energy of a swinging pinned cloth.
+// The cloth of issue 3: the response formulas by hand, the meshes, a cloth resting on a table
+// for 1,000 frames (audited by the audit engine, every frame and step), and the energy of a
+// swinging pinned cloth. The shipped scenes are the scene job's (tests/verify/scene/).
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <tuple>
 
-#include "fdh/cli/cli.hpp"
+#include "fdh/audit/auditor.hpp"
+#include "fdh/audit/counts.hpp"
 #include "fdh/cloth/response.hpp"
 #include "fdh/cloth/self_collision.hpp"
 #include "fdh/cloth/simulation.hpp"
-#include "fdh/exact/audit.hpp"
 #include "fdh/exact/ccd.hpp"
-#include "fdh/io/input_error.hpp"
-#include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_file.hpp"
-#include "fdh/run/scene_run.hpp"
-#include "temp_dir.hpp"
+#include "fdh/scene/scene_run.hpp"
 
 namespace fdh::cloth {
 namespace {
 
-namespace fs = std::filesystem;
 const std::string kScenes = FDH_SOURCE_DIR "/corpus/scenes/";
 
 void expect_vec(const Vec3& got, const Vec3& want) {
@@ -80,7 +71,7 @@ TEST(Response, TiltedNormal) {
   EXPECT_EQ(got.z, 0);
 }
 
-// --- Meshes and the exact audit ---
+// --- Meshes ---
 
 double signed_volume(const TriMesh& m) {
   double v = 0;
@@ -99,42 +90,6 @@ TEST(Mesh, BoxAndSphereAreClosedAndWoundOutward) {
   EXPECT_LT(signed_volume(ball), ball_volume);
   for (int t = 0; t < int(ball.tris.size()); ++t)  // outward: away from the centre
     EXPECT_GT(dot(unit_normal(ball, t), ball.x[ball.tris[t][0]] - Vec3{1, 2, 3}), 0);
-  EXPECT_NO_THROW(exact::Audit({box, ball}));
-}
-
-TEST(Audit, CountsInsideAndCrossingExactly) {
-  const exact::Audit audit({box_mesh({0, 0, 0}, {1, 1, 1})});
-  const std::vector<Vec3> x = {{0.5, 0.5, 0.5},  // inside
-                               {1, 0.5, 0.5},    // on a face: not inside
-                               {2, 0.5, 0.5},    // outside
-                               {0.5, 1, 0.5},    // on the top face
-                               {0.5, 2, 0.5}};
-  const std::vector<std::array<int, 2>> edges = {{0, 2},   // from inside out: crosses
-                                                 {1, 2},   // touches the face only
-                                                 {3, 4},   // touches the top only
-                                                 {2, 4}};  // outside
-  const exact::AuditCounts c = audit.count(x, edges);
-  EXPECT_EQ(c.inside, 1);
-  EXPECT_EQ(c.crossing, 1);
-  // An edge through the box with both ends outside crosses.
-  EXPECT_EQ(audit.count({{-1, 0.5, 0.5}, {2, 0.5, 0.5}}, {{0, 1}}).crossing, 1);
-  // A hair inside is inside: the audit is exact.
-  EXPECT_EQ(audit.count({{std::nextafter(1.0, 0.0), 0.5, 0.5}}, {}).inside, 1);
-}
-
-TEST(Audit, CountsSelfCrossingsExactly) {
-  // Triangle 0 1 2 in the plane z = 0; edges from particles 3, 4, 5.
-  const std::vector<Vec3> x = {{0, 0, 0},     {2, 0, 0},     {0, 2, 0},  {0.5, 0.5, -1},
-                               {0.5, 0.5, 1}, {0.5, 0.5, 0}, {3, 3, -1}, {3, 3, 1}};
-  const std::vector<Tri> tris = {{0, 1, 2}};
-  EXPECT_EQ(exact::self_crossings(x, {{3, 4}}, tris), 1);  // through the middle
-  EXPECT_EQ(exact::self_crossings(x, {{3, 5}}, tris), 0);  // ends on it: touching
-  EXPECT_EQ(exact::self_crossings(x, {{6, 7}}, tris), 0);  // beside it
-  EXPECT_EQ(exact::self_crossings(x, {{0, 4}}, tris), 0);  // shares particle 0: a neighbour
-  // Through an edge of the triangle, ends strictly apart: crossing (the closed triangle).
-  EXPECT_EQ(exact::self_crossings({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 0, -1}, {1, 0, 1}},
-                                  {{3, 4}}, tris),
-            1);
 }
 
 // A 3×3 cloth of side 2 centred at the origin; its corner particle 0 lifted over the far cell
@@ -240,104 +195,12 @@ TEST(SelfCollision, WindyBarCrossesItselfOnlyWithoutThePass) {
   opt.frames = 600;
   opt.audit_self = true;
   s.self_collision = false;
-  EXPECT_GT(verify::run_scene(s, opt).audit.self_crossing, 0);
+  EXPECT_GT(verify::run_scene(s, opt).audit.self_intersections, 0);
   s.self_collision = true;
   const verify::SceneRun r = verify::run_scene(s, opt);
-  EXPECT_EQ(r.audit.self_crossing, 0);
+  EXPECT_EQ(r.audit.self_intersections, 0);
   EXPECT_GT(r.self_hits, 0);
-  EXPECT_EQ(r.audit.inside + r.audit.crossing + r.fp + r.fn, 0);
-}
-
-TEST(Audit, RejectsAnOpenMesh) {
-  TriMesh open = box_mesh({0, 0, 0}, {1, 1, 1});
-  open.tris.pop_back();
-  EXPECT_THROW(exact::Audit({open}), std::invalid_argument);
-}
-
-// --- Scenes ---
-
-std::vector<fs::path> shipped_scenes() {
-  std::vector<fs::path> s;
-  for (const auto& e : fs::directory_iterator(kScenes))
-    if (e.path().extension() == ".scene") s.push_back(e.path());
-  std::sort(s.begin(), s.end());
-  return s;
-}
-
-TEST(Scenes, ShipAtLeastTheFourOfThePaperAndAStableStep) {
-  const auto scenes = shipped_scenes();
-  ASSERT_GE(scenes.size(), 4u);
-  for (const auto& p : scenes) {
-    const Scene s = verify::read_scene(p.string());
-    EXPECT_LE(s.dt, Cloth(s.cloth).stable_dt()) << p << ": a shipped scene must be stable";
-  }
-}
-
-TEST(Scenes, BadInputNamesTheFileAndLine) {
-  const fs::path dir = fresh_temp_dir("bad_scene");
-  const auto error_of = [&](const std::string& text) {
-    const std::string path = (dir / "bad.scene").string();
-    std::ofstream(path) << text;
-    try {
-      verify::read_scene(path);
-    } catch (const verify::InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_NE(error_of("grid 10\nwobble 3\n").find("bad.scene:2: unknown keyword 'wobble'"),
-            std::string::npos);
-  EXPECT_NE(error_of("grid 1\n").find("bad.scene:1: grid must be"), std::string::npos);
-  EXPECT_NE(error_of("# c\nsphere 0 0 0\n").find("bad.scene:2: 'sphere' takes 4 to 5"),
-            std::string::npos);
-  EXPECT_NE(error_of("box 0 0 0 1 -1 1\n").find("bad.scene:1: box"), std::string::npos);
-  EXPECT_NE(error_of("dt nan\n").find("bad.scene:1: dt: 'nan' is not a finite number"),
-            std::string::npos);
-  EXPECT_NE(error_of("dt 1\ndt 2\n").find("bad.scene:2: 'dt' given twice"), std::string::npos);
-  // Through the CLI: exit status 2 and the same message.
-  std::ostringstream out, err;
-  EXPECT_EQ(verify::run_cli({"simulate", (dir / "bad.scene").string()}, out, err), 2);
-  EXPECT_NE(err.str().find("bad.scene:2"), std::string::npos);
-}
-
-// With robust, every shipped scene ends with nothing inside and no edge crossing, in every
-// frame, and the narrow phase agrees with the exact test on every query. Each scene runs at most
-// 2e6 particle-frames: every 25x25 scene whole, but only the first 50 frames of the 200x200 fold
-// (its whole run takes minutes; `fdhcert scenes`, in ./run verify, audits it).
-TEST(Scenes, RobustKeepsTheAuditAtZeroOnEveryShippedScene) {
-  for (const auto& p : shipped_scenes()) {
-    const Scene s = verify::read_scene(p.string());
-    verify::SceneRunOptions opt;
-    opt.narrow = "robust";
-    opt.frames = verify::bounded_frames(s, s.frames, 2000000);
-    const bool whole = opt.frames == s.frames;
-    const verify::SceneRun r = verify::run_scene(s, opt);
-    EXPECT_FALSE(r.dt_reduced) << p;
-    EXPECT_EQ(r.audit.inside, 0) << p;
-    EXPECT_EQ(r.audit.crossing, 0) << p;
-    EXPECT_EQ(r.fp, 0) << p;
-    EXPECT_EQ(r.fn, 0) << p;
-    if (s.self_collision) {
-      EXPECT_TRUE(r.self_audited) << p;
-      EXPECT_EQ(r.audit.self_crossing, 0) << p;
-      if (whole) {
-        EXPECT_GT(r.self_hits, 0) << p << ": the cloth never met itself";
-      }
-    }
-    if (!s.obstacles.empty() && whole) {
-      EXPECT_GT(r.collisions, 0) << p << ": the cloth never arrived";
-    }
-  }
-}
-
-// Without the skin, a point-only test lets cloth edges cut the table's corners: the audit can
-// fail, and does.
-TEST(Scenes, WithoutTheSkinEdgesCutTheTableCorners) {
-  Scene s = verify::read_scene(kScenes + "table.scene");
-  s.thickness = 0;
-  const verify::SceneRun r = verify::run_scene(s, {});
-  EXPECT_EQ(r.audit.inside, 0);
-  EXPECT_GT(r.audit.crossing, 0);
+  EXPECT_EQ(r.audit.obstacle_intersections + r.fp + r.fn, 0);
 }
 
 // A cloth laid on the table top, just above its skin, stays above the table for 1,000 frames.
@@ -347,18 +210,18 @@ TEST(Cloth, RestingOnTheTableStaysAboveItFor1000Frames) {
   s.cloth.size = 0.8;  // smaller than the 1 m top: all of it rests on the table
   const double top = 0.75;
   s.cloth.centre = {0, top + s.skin() + 1e-3, 0};
-  std::vector<TriMesh> obstacles;
-  for (const auto& o : s.obstacles) obstacles.push_back(obstacle_mesh(o));
-  const exact::Audit audit(obstacles);
   Simulation sim(s, verify::narrow_phase_named("robust"));
+  // The exact audit of every frame and every step between them (the audit engine).
+  const TriMesh table = verify::obstacles_of(s);
+  audit::Auditor audit({sim.cloth().n(), sim.cloth().triangles(), int(table.x.size()), table.tris});
+  ASSERT_EQ(audit::counts_of(audit.add_frame(sim.cloth().x(), table.x)).total(), 0);
   for (int f = 1; f <= 1000; ++f) {
     sim.step();
     double lowest = INFINITY;
     for (const Vec3& p : sim.cloth().x()) lowest = std::min(lowest, p.y);
     ASSERT_GT(lowest, top) << "frame " << f;
-    const exact::AuditCounts c = audit.count(sim.cloth().x(), sim.cloth().edges());
-    ASSERT_EQ(c.inside, 0) << "frame " << f;
-    ASSERT_EQ(c.crossing, 0) << "frame " << f;
+    ASSERT_EQ(audit::counts_of(audit.add_frame(sim.cloth().x(), table.x)).total(), 0)
+        << "frame " << f;
   }
   // It came to rest on the skin rather than hovering: every particle is within 1 mm of it.
   for (const Vec3& p : sim.cloth().x()) EXPECT_LT(p.y, top + s.skin() + 1e-3);
@@ -390,44 +253,6 @@ TEST(Cloth, SwingingPinnedClothGainsNoEnergyUpToTheStableStep) {
   EXPECT_LE(energy_growth(s, s.dt), 1e-9);      // the shipped step
   EXPECT_LE(energy_growth(s, bound), 1e-9);     // the documented bound itself
   EXPECT_GT(energy_growth(s, 1.5 * bound), 1);  // and the test can fail: beyond it, it explodes
-}
-
-// --- The commands ---
-
-TEST(Simulate, RecordsQueriesThatClassifyReplays) {
-  const fs::path dir = fresh_temp_dir("simulate");
-  const std::string rec = (dir / "run.vf").string(), png = (dir / "last.png").string();
-  std::ostringstream out, err;
-  ASSERT_EQ(
-      verify::run_cli({"simulate", kScenes + "table.scene", "--grid", "10", "--frames", "600",
-                       "--record", rec, "--png", png, "--obj", (dir / "obj").string(), "--json"},
-                      out, err),
-      0)
-      << err.str();
-  for (const char* key : {"\"springs\"", "\"refit\"", "\"traversal\"", "\"narrow\"", "\"response\"",
-                          "\"candidates\"", "\"inside\": 0", "\"crossing\": 0"})
-    EXPECT_NE(out.str().find(key), std::string::npos) << key << " in " << out.str();
-  EXPECT_TRUE(fs::exists(dir / "obj" / "frame_00600.obj"));
-  EXPECT_GT(fs::file_size(png), 1000u);
-  const auto queries = verify::read_query_file(rec);
-  ASSERT_FALSE(queries.empty());
-  std::ostringstream cout_, cerr_;
-  EXPECT_EQ(
-      verify::run_cli({"classify", rec, "--methods", "exact,robust", "--check"}, cout_, cerr_), 0)
-      << cerr_.str();
-}
-
-TEST(Table1, JsonHasOneRowPerMethodKAndGrid) {
-  std::ostringstream out, err;
-  ASSERT_EQ(
-      verify::run_cli({"table1", "--scene", kScenes + "table.scene", "--frames", "3", "--json"},
-                      out, err),
-      0)
-      << err.str();
-  const nlohmann::json j = nlohmann::json::parse(out.str());
-  EXPECT_EQ(j["rows"].size(), 24u);  // 6 rows × 4 grids
-  EXPECT_EQ(j["paper"]["grids"], nlohmann::json({15, 25, 30, 50}));
-  EXPECT_NE(out.str().find("15.27"), std::string::npos);
 }
 
 }  // namespace

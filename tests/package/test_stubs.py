@@ -64,6 +64,14 @@ def test_each_function_has_the_modules_parameters_and_defaults():
             assert same_default(m, s), f"{name}({parameter}): module {m}, stub {s}"
 
 
+def test_no_function_returns_an_untyped_dict():
+    """Every dict the module returns has a TypedDict of its keys: no Any anywhere."""
+    for name, node in stub_functions().items():
+        assert "Any" not in ast.unparse(node.returns), name
+    assert not any(isinstance(n, ast.ImportFrom) and any(a.name == "Any" for a in n.names)
+                   for n in stub_tree().body)
+
+
 def test_input_error_is_a_value_error_in_both():
     node = next(n for n in stub_tree().body if isinstance(n, ast.ClassDef))
     assert [ast.unparse(b) for b in node.bases] == ["ValueError"]

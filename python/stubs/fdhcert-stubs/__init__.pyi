@@ -4,7 +4,7 @@
 # module's, and the reverse.
 from fractions import Fraction
 from os import PathLike
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Dict, List, Optional, Sequence, Tuple, TypedDict, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -16,6 +16,130 @@ _Floats = npt.NDArray[np.float64]
 class InputError(ValueError):
     """Bad input, with the message the fdhcert program prints ("FILE:LINE: message")."""
 
+# The dicts the module returns (stub-only types, hence private names). classify and classify_arrays return `fdhcert classify --json`'s
+# object (docs/formats.md), audit `fdhcert audit --json`'s (docs/audit.md).
+
+class _ContactTime(TypedDict):
+    hit: bool
+    time: Optional[Fraction]  # the earliest contact when rational
+    interval: Optional[Tuple[Fraction, Fraction]]  # around it; None without a hit
+
+class _AgainstExact(TypedDict):
+    misses: int
+    false_alarms: int
+    broken: int
+    allowed: int
+
+class _MethodTally(TypedDict):
+    tp: Optional[int]  # None (and ns_per_query) where the method applies to no query
+    tn: Optional[int]
+    fp: Optional[int]
+    fn: Optional[int]
+    na: int
+    ns_per_query: Optional[float]
+    promise: str  # "exact", "conservative" or "none"
+    against_exact: Optional[_AgainstExact]
+
+class _Counts(TypedDict):
+    queries: int
+    static_vf: int
+    moving_vf: int
+    edge_edge: int
+    truth: str  # "file", "exact" or "mixed"
+    methods: Dict[str, _MethodTally]
+
+class _FileCounts(_Counts):
+    file: str
+
+class _CpuTime(TypedDict):
+    queries: int
+    median_ns: Optional[float]
+    p90_ns: Optional[float]
+    max_ns: Optional[float]
+    slowest: Optional[str]  # "FILE:LINE (query ID)"
+
+class _CpuTimes(TypedDict):
+    rounds: int
+    methods: Dict[str, _CpuTime]
+
+class _ClassificationBase(_Counts):
+    gate: int
+    files: List[_FileCounts]
+
+class _Classification(_ClassificationBase, total=False):
+    min_distance: float  # only when asked at a minimum separation > 0
+    cpu_time: _CpuTimes  # only with time=True
+
+class _SceneSummary(TypedDict):
+    grid: int
+    frames: int
+    particles: int
+    dt: float
+    ms_per_frame: float
+    candidates: int
+    collisions: int
+    fp: int
+    fn: int
+    inside: int
+    crossing: int
+
+class _SceneRun(TypedDict):
+    positions: _Floats  # F×N×3, every `every`-th frame
+    frames: List[int]  # their frame numbers
+    triangles: npt.NDArray[np.int32]  # M×3
+    final: _Floats  # N×3, after the last frame
+    summary: _SceneSummary
+
+class _AuditMesh(TypedDict):
+    vertices: int
+    triangles: int
+
+class _AuditCandidates(TypedDict):
+    static: int
+    ccd: int
+
+class _AuditToi(TypedDict):
+    t_lo: float
+    t_hi: float
+
+class _AuditViolationBase(TypedDict):
+    kind: str  # "self-intersection", "self-vertex-face", ...
+    step: bool  # in a step (vertices, triangle, to_frame) or in a frame (triangles)
+    frame: int
+    toi: Optional[_AuditToi]
+
+class _AuditViolation(_AuditViolationBase, total=False):
+    to_frame: int
+    vertices: List[int]
+    triangle: Optional[int]
+    triangles: List[int]
+    triangle_vertices: List[List[int]]
+    places: List[str]
+    case_file: str
+
+class _AuditCost(TypedDict):
+    audit_seconds: float
+    wall_seconds: float
+    ns_per_vertex_step: Optional[float]
+    peak_memory_bytes: int
+    threads: int
+
+class _Audit(TypedDict):
+    clean: bool
+    summary: str
+    frames: int
+    steps: int
+    cloth: _AuditMesh
+    obstacles: _AuditMesh
+    k: int
+    violations: int
+    totals: Dict[str, int]  # per violation kind
+    candidates: _AuditCandidates
+    first_violation: Optional[_AuditViolation]
+    per_frame: List[Dict[str, int]]  # "frame" and the counts per kind
+    kept: List[_AuditViolation]
+    cost: _AuditCost
+
 def methods() -> List[str]: ...
 def point_triangle(queries: npt.ArrayLike, method: str = "robust") -> _Bools: ...
 def vertex_face_ccd(queries: npt.ArrayLike, method: str = "robust") -> _Bools: ...
@@ -26,9 +150,7 @@ def vertex_face_toi(
 def edge_edge_toi(
     queries: npt.ArrayLike, method: str = "robust", width: float = 9.313225746154785e-10
 ) -> Tuple[_Bools, _Floats, _Floats]: ...
-def contact_time(
-    query: npt.ArrayLike, kind: str = "vertex-face"
-) -> Dict[str, Union[bool, Optional[Fraction], Tuple[Fraction, Fraction]]]: ...
+def contact_time(query: npt.ArrayLike, kind: str = "vertex-face") -> _ContactTime: ...
 def kdop(points: npt.ArrayLike, k: int = 18) -> Tuple[_Floats, _Floats, npt.NDArray[np.int32]]: ...
 def classify(
     files: Sequence[_Path],
@@ -37,13 +159,14 @@ def classify(
     gate: int = 0,
     time: bool = False,
     rounds: int = 7,
-) -> Dict[str, Any]: ...
+    min_distance: float = 0.0,
+) -> _Classification: ...
 def classify_arrays(
     queries: npt.ArrayLike,
     kind: str = "vertex-face",
     truth: Optional[npt.ArrayLike] = None,
     methods: Sequence[str] = [],
-) -> Dict[str, Any]: ...
+) -> _Classification: ...
 def simulate(
     scene: _Path,
     frames: Optional[int] = None,
@@ -52,7 +175,7 @@ def simulate(
     narrow: str = "robust",
     k: int = 18,
     check: bool = False,
-) -> Dict[str, Any]: ...
+) -> _SceneRun: ...
 def audit(
     frames: npt.ArrayLike,
     faces: npt.ArrayLike,
@@ -61,4 +184,4 @@ def audit(
     k: int = 18,
     threads: int = 0,
     keep: int = 16,
-) -> Dict[str, Any]: ...
+) -> _Audit: ...

@@ -8,7 +8,7 @@
 
 #include "fdh/certify/certify_metamorphic.hpp"
 #include "fdh/cli/cli.hpp"
-#include "fdh/run/build_info.hpp"
+#include "fdh/os/build_info.hpp"
 
 #include "temp_dir.hpp"
 

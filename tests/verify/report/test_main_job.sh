@@ -29,7 +29,7 @@ grep -Eq '^certified: [0-9]+ checks, 0 violations \([0-9]+ corpus, [0-9]+ fuzzed
 grep -Eq '^promises \(violations/queries\): robust point-triangle 0/[0-9]+' "$work/summary" ||
   fail "no line of the promises"
 grep -Eq '^bounding volumes .*fdhcert 0/[0-9]+' "$work/summary" || fail "no bounding-volume line"
-grep -Eq '^table +[0-9]+x[0-9]+ +20 frames .* inside 0 crossing 0' "$work/summary" ||
+grep -Eq '^table +[0-9]+x[0-9]+ +20 frames .* crossing 0 self-crossing' "$work/summary" ||
   fail "no line for the scene"
 grep -Eq '^Table 1 at [0-9]+x[0-9]+, k = 18' "$work/summary" || fail "no Table 1 headline"
 grep -Eq '^  linear-system [0-9.]+ \(FP [0-9]+, FN [0-9]+\), paper-intended .*, robust ' \

@@ -14,13 +14,11 @@
 
 #include "fdh/certify/certify.hpp"
 #include "fdh/check/registry.hpp"
+#include "fdh/os/build_info.hpp"
 #include "fdh/report/measurements.hpp"
 #include "fdh/report/report_document.hpp"
 #include "fdh/report/report_html.hpp"
 #include "fdh/report/report_summary.hpp"
-#include "fdh/run/build_info.hpp"
-#include "fdh/run/scene_report.hpp"
-#include "fdh/table1/table1.hpp"
 #include "temp_dir.hpp"
 
 namespace fdh::verify {
@@ -244,84 +242,6 @@ TEST(Report, ThePageInlinesTheChartsAndLinksTheCases) {
   EXPECT_EQ(html.find("src=\"http"), std::string::npos);
   std::filesystem::remove(dir / "kdop_k.svg");
   EXPECT_THROW(report_html(r, dir.string()), std::runtime_error);
-}
-
-Table1 one_cell() {
-  Table1 t;
-  t.scene = "table.scene";
-  t.frames = 10;
-  Table1Cell c{"linear-system", 18, 15, {}};
-  c.run.frames = 10;
-  c.run.time.springs = 0.002;
-  c.run.time.narrow = 0.001;
-  c.run.fp = 3;
-  t.cells.push_back(c);
-  return t;
-}
-
-TEST(Table1, JsonHoldsEveryRowAndThePaper) {
-  const nlohmann::ordered_json j = table1_json(one_cell());
-  EXPECT_EQ(j["frames"], 10);
-  ASSERT_EQ(j["rows"].size(), 1u);
-  EXPECT_EQ(j["rows"][0]["method"], "linear-system");
-  EXPECT_EQ(j["rows"][0]["fp"], 3);
-  EXPECT_DOUBLE_EQ(j["rows"][0]["ms_per_frame"].get<double>(), 0.3);
-  EXPECT_EQ(j["paper"]["grids"].get<std::vector<int>>(), (std::vector<int>{15, 25, 30, 50}));
-  EXPECT_DOUBLE_EQ(j["paper"]["paper-intended"][3].get<double>(), 15.27);
-  EXPECT_DOUBLE_EQ(one_cell().cells[0].paper_ms(), 12.17);
-}
-
-TEST(Table1, CsvHasOurRowsThenThePapers) {
-  const std::string csv = table1_csv(one_cell());
-  EXPECT_EQ(lines(csv), 1u + 1u + 8u);
-  EXPECT_NE(csv.find("linear-system k=18,18,15,225,0.3,3,0,0,0\n"), std::string::npos) << csv;
-  EXPECT_NE(csv.find("paper: this paper,0,50,2500,15.27,,,,\n"), std::string::npos);
-}
-
-TEST(SceneReport, JsonIsSimulatesWithNullsForWhatWasNotCounted) {
-  cloth::Scene scene;
-  scene.name = "s";
-  SceneRunOptions opt;
-  opt.check = false;
-  SceneRun run;
-  run.frames = 2;
-  run.time.springs = 0.001;
-  const auto j = scene_run_json(scene, opt, run);
-  EXPECT_EQ(j["scene"], "s");
-  EXPECT_EQ(j["narrow"], opt.narrow);
-  EXPECT_TRUE(j["fp"].is_null());
-  EXPECT_TRUE(j["crossing"].is_null());
-  EXPECT_TRUE(j["self_crossing"].is_null());
-  EXPECT_DOUBLE_EQ(j["ms_per_frame"]["springs"].get<double>(), 0.5);
-  opt.check = true;
-  EXPECT_EQ(scene_run_json(scene, opt, run)["inside"], 0);
-}
-
-// The table scene cut to a few frames, alone in a folder.
-std::filesystem::path short_scene_folder() {
-  const std::filesystem::path dir = fresh_temp_dir("scenes_in");
-  std::ifstream in(FDH_SOURCE_DIR "/corpus/scenes/table.scene");
-  std::ofstream out(dir / "table.scene");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("frames", 0) != 0) out << line << "\n";
-  out << "frames 20\n";
-  return dir;
-}
-
-TEST(Scenes, EachSceneGetsAPictureAJsonAndALine) {
-  const std::filesystem::path in = short_scene_folder(), out = fresh_temp_dir("scenes_out");
-  std::ostringstream so, se;
-  ASSERT_EQ(run_cli({"scenes", "--scenes", in.string(), "--out", out.string()}, so, se), 0)
-      << se.str();
-  EXPECT_EQ(so.str().rfind("table ", 0), 0u) << so.str();
-  EXPECT_NE(so.str().find("inside 0 crossing 0"), std::string::npos);
-  EXPECT_GT(std::filesystem::file_size(out / "table.png"), 1000u);
-  std::ifstream json(out / "table.json");
-  const auto j = nlohmann::json::parse(json);
-  EXPECT_EQ(j["frames"], 20);
-  EXPECT_EQ(j["crossing"], 0);
-  std::ostringstream so2, se2;
-  EXPECT_EQ(run_cli({"scenes", "--scenes", (in / "none").string()}, so2, se2), 2);
 }
 
 TEST(BuildInfo, TheCommitIsFixedAtConfigureTime) {

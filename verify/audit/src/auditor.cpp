@@ -115,9 +115,10 @@ FrameReport Auditor::Impl::frame(const std::vector<Vec3>& x, const std::vector<V
   const auto start = std::chrono::steady_clock::now();
   FrameReport r;
   r.frame = frames;
-  r.has_step = frames > 0;
+  r.has_step = frames > 0 && options.steps;
   Pass pass;
   pass.ccd = r.has_step;
+  pass.self = options.self;
   pass.frame = frames;
   pass.c0 = r.has_step ? &cloth_before : &x;
   pass.c1 = &x;

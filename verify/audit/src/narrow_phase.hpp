@@ -18,8 +18,9 @@ struct Aabb {
 
 // What one pass over a step (or over frame 0 alone) sees.
 struct Pass {
-  bool ccd = true;  // false: the static check of frame 0 only
-  int frame = 0;    // the frame the static check looks at (a step ends there)
+  bool ccd = true;   // false: the static check of the frame only (frame 0, or Options::steps off)
+  bool self = true;  // the cloth against itself too (Options::self)
+  int frame = 0;     // the frame the static check looks at (a step ends there)
   const std::vector<Vec3>*c0 = nullptr, *c1 = nullptr;  // the cloth at the step's ends
   const std::vector<Vec3>*o0 = nullptr, *o1 = nullptr;  // the obstacles'
   std::vector<Aabb> cbox, obox;  // each vertex's box over the step (exact: min and max)

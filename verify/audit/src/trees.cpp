@@ -102,7 +102,8 @@ class TreesK : public Trees {
     const bool obstacle_moves = pass.ccd && *pass.o0 != *pass.o1;
     update(otree_, osub_, *pass.o0, obstacle_moves ? *pass.o1 : none, oends_, false);
     const std::vector<Vec3>& x1 = moves ? *pass.c1 : *pass.c0;
-    std::vector<Task> tasks = self_tasks(*pass.c0, x1);
+    std::vector<Task> tasks;
+    if (pass.self) tasks = self_tasks(*pass.c0, x1);
     for (const auto& [a, b] : frontier(
              ctree_, otree_, 256, [](const Kdop<K>&p, const Kdop<K>&q) { return overlap(p, q); }))
       tasks.push_back({a, b, true});

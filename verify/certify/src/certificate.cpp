@@ -6,9 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include "fdh/certify/certify.hpp"
+#include "fdh/classify/toi_report.hpp"
+#include "fdh/io/json_text.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/run/json_text.hpp"
-#include "fdh/run/toi_report.hpp"
 
 namespace fdh::verify {
 namespace {

@@ -27,9 +27,9 @@
 #include "fdh/io/scene_file.hpp"
 #include "fdh/io/scene_schema.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/run/build_info.hpp"
-#include "fdh/run/scene_report.hpp"
-#include "fdh/run/scene_run.hpp"
+#include "fdh/os/build_info.hpp"
+#include "fdh/scene/scene_report.hpp"
+#include "fdh/scene/scene_run.hpp"
 
 namespace fdh::verify {
 namespace fs = std::filesystem;

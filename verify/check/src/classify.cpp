@@ -79,10 +79,9 @@ Classification classify(const std::vector<Query>& queries,
   c.reference.resize(queries.size());
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const std::optional<bool> given = truth.empty() ? std::nullopt : truth[i];
-    if (const std::optional<bool> agrees = twin_matches_truth(given, c.exact[i])) {
+    if (given) {
       ++with_truth;
       c.reference[i] = char(*given);
-      if (!*agrees) c.exact_vs_file.push_back(i);
     } else {
       c.reference[i] = c.exact[i];
     }
@@ -114,14 +113,12 @@ Classification join(const std::vector<Classification>& parts) {
   Classification all;
   bool truth_set = false;
   for (const Classification& c : parts) {
-    const std::size_t offset = all.queries;
     all.queries += c.queries;
     all.static_vf += c.static_vf, all.moving_vf += c.moving_vf, all.edge_edge += c.edge_edge;
     all.truth = !truth_set || all.truth == c.truth ? c.truth : TruthSource::Mixed;
     truth_set = true;
     all.reference.insert(all.reference.end(), c.reference.begin(), c.reference.end());
     all.exact.insert(all.exact.end(), c.exact.begin(), c.exact.end());
-    for (const std::size_t i : c.exact_vs_file) all.exact_vs_file.push_back(offset + i);
     if (all.methods.empty())
       for (const MethodResult& m : c.methods)
         all.methods.push_back({m.name, {}, {}, m.promise, {}});

@@ -37,12 +37,12 @@ ToiClassification classify_toi(const std::vector<Query>& queries,
   for (const Method& m : methods) {
     if (!m.toi[0] && !m.toi[1]) continue;
     ToiResult r = run_and_time(m, queries, width);
-    std::vector<TimeCheck> checks(queries.size());
+    r.checks.resize(queries.size());
     for_each_index(queries.size(), 16, [&](std::size_t i) {
-      if (r.applies[i]) checks[i] = check_time_given(m, queries[i], width, r.said[i], c.twin[i]);
+      if (r.applies[i]) r.checks[i] = check_time_given(m, queries[i], width, r.said[i], c.twin[i]);
     });
     for (std::size_t i = 0; i < queries.size(); ++i)
-      if (r.applies[i]) r.tally.add(checks[i], i);
+      if (r.applies[i]) r.tally.add(r.checks[i], i);
     c.methods.push_back(std::move(r));
   }
   return c;
@@ -57,7 +57,7 @@ ToiClassification join(const std::vector<ToiClassification>& parts) {
     all.twin.insert(all.twin.end(), c.twin.begin(), c.twin.end());
     if (all.methods.empty())
       for (const ToiResult& m : c.methods)
-        all.methods.push_back({m.name, m.promise, 0, 0, {}, {}, {}});
+        all.methods.push_back({m.name, m.promise, 0, 0, {}, {}, {}, {}});
     for (std::size_t k = 0; k < c.methods.size(); ++k) {
       ToiResult& t = all.methods[k];
       const ToiResult& u = c.methods[k];
@@ -69,6 +69,7 @@ ToiClassification join(const std::vector<ToiClassification>& parts) {
       t.tally.merge(u.tally, offset);
       t.said.insert(t.said.end(), u.said.begin(), u.said.end());
       t.applies.insert(t.applies.end(), u.applies.begin(), u.applies.end());
+      t.checks.insert(t.checks.end(), u.checks.begin(), u.checks.end());
     }
   }
   return all;

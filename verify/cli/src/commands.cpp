@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
-#include "fdh/run/json_text.hpp"
+#include "fdh/io/json_text.hpp"
 
 namespace fdh::verify {
 

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/run/scene_report.hpp"
+#include "fdh/scene/scene_report.hpp"
 #include "progress.hpp"
 #include "suite_commands.hpp"
 
@@ -19,7 +19,8 @@ Runs each *.scene of the folder (in name order) as `fdhcert simulate SCENE
 robust, k = 18, writes OUT/NAME.png and OUT/NAME.json (the object of
 simulate --json, docs/formats.md), and prints one line per scene: its grid,
 frames, ms per frame, FP and FN against the exact test, and the exact audit
-(particles inside, crossing edges, self-crossings; - where not audited).
+(crossing: cloth triangles meeting an obstacle triangle; self-crossing:
+cloth triangles meeting one sharing no particle, - where not audited).
 With --movies, also OUT/NAME-movie.png: the run as an animated PNG.
 `./run verify` runs it into docs/scenes.
 )";

@@ -13,8 +13,9 @@
 #include "fdh/io/scene_schema.hpp"
 #include "fdh/kdop.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/run/scene_report.hpp"
-#include "fdh/run/scene_run.hpp"
+#include "fdh/scene/scene_outputs.hpp"
+#include "fdh/scene/scene_report.hpp"
+#include "fdh/scene/scene_run.hpp"
 #include "progress.hpp"
 #include "threads_option.hpp"
 
@@ -34,9 +35,10 @@ Prints the mean time per frame split into those five parts, the candidate
 pairs and collisions, and two checks, both untimed:
   accuracy  every narrow-phase query against the exact point-triangle test
             (false positives and false negatives);
-  audit     after every frame, the exact count of cloth particles strictly
-            inside an obstacle and of cloth edges crossing an obstacle
-            triangle, summed over the frames.)";
+  audit     after every frame (or the scene's audit_every-th and the last),
+            the exact count of cloth triangles meeting an obstacle
+            triangle (touching counts), summed over the frames: the
+            engine of `fdhcert audit`, each frame on its own.)";
 
 const char* const kSimulateFooter =
     R"(If the scene's dt is above the cloth's stable step (it shrinks as the grid
@@ -44,8 +46,8 @@ grows), 0.9 times the stable step is used, and the output says so.
 Exit status: 0; 2 for bad input. A scene error names the file and line.)";
 
 struct SimulateOptions {
-  std::string scene_path, obj_dir, png, record, movie;
-  int movie_frames = 48;
+  std::string scene_path;
+  SceneOutputFiles files;
   int grid = 0;           // 0: the scene's
   std::string thickness;  // "": the scene's
   std::string self;       // "on", "off" or "": the scene's
@@ -54,8 +56,6 @@ struct SimulateOptions {
   int threads = 0;  // 0: every core
   SceneRunOptions run;
 };
-
-const std::array<double, 3> kClothColour = {0.85, 0.25, 0.2}, kObstacleColour = {0.7, 0.7, 0.65};
 
 // The scene with the command line's overrides.
 cloth::Scene read_scene_as_asked(const SimulateOptions& o) {
@@ -67,62 +67,6 @@ cloth::Scene read_scene_as_asked(const SimulateOptions& o) {
   if (o.grid || !o.thickness.empty()) check_scene(scene, o.scene_path);  // the overrides too
   return scene;
 }
-
-// What the run writes besides its report: OBJ frames, the recorded queries, the picture (as
-// `fdhcert scenes` draws it).
-class Outputs {
- public:
-  // `frames`: the run's, for spreading the movie's frames over it.
-  Outputs(const SimulateOptions& o, const cloth::Scene& scene, int frames)
-      : o_(o), obstacles_(obstacles_of(scene)) {
-    if (!o.obj_dir.empty()) {
-      std::error_code ec;
-      std::filesystem::create_directories(o.obj_dir, ec);
-      if (ec) throw std::runtime_error(o.obj_dir + ": cannot create folder: " + ec.message());
-    }
-    if (!o.movie.empty()) movie_.emplace(scene, frames, o.movie_frames);
-    if (!o.record.empty()) {
-      recording_ = std::make_unique<AtomicFile>(o.record);
-      recording_->stream() << "# fdhcert simulate " << o.scene_path
-                           << ": every narrow-phase query\n";
-    }
-  }
-  const TriMesh& obstacles() const { return obstacles_; }
-
-  void obj(const cloth::Simulation& sim, int frame) const {
-    if (o_.obj_dir.empty()) return;
-    write_obj(o_.obj_dir + fmt::format("/frame_{:05d}.obj", frame),
-              {{"cloth", &sim.cloth().x(), &sim.cloth().triangles(), kClothColour},
-               {"obstacles", &obstacles_.x, &obstacles_.tris, kObstacleColour}});
-  }
-
-  // Frame 0, the initial state: an OBJ only.
-  void start(const cloth::Simulation& sim) { obj(sim, 0); }
-
-  void frame(const cloth::Simulation& sim, int frame) {
-    if (movie_) movie_->frame(sim, frame);
-    obj(sim, frame);
-    if (!recording_) return;
-    for (const auto& q : sim.queries()) {
-      QueryRecord r;
-      r.query = sim.query(q);
-      r.id = fmt::format("f{}p{}t{}", frame, q.particle, q.triangle);
-      write_native(recording_->stream(), r);
-    }
-  }
-
-  void finish(const cloth::Scene& scene, const SceneRun& r) {
-    if (recording_) recording_->commit();
-    if (!o_.png.empty()) write_scene_png(o_.png, scene, r);
-    if (movie_ && r.frames > 0) movie_->write(o_.movie);
-  }
-
- private:
-  const SimulateOptions& o_;
-  TriMesh obstacles_;
-  std::unique_ptr<AtomicFile> recording_;
-  std::optional<SceneMovie> movie_;
-};
 
 // The scene, the step, and the time per frame.
 void print_timing(std::ostream& out, const SimulateOptions& o, const cloth::Scene& scene,
@@ -159,9 +103,9 @@ void print_counts(std::ostream& out, const SimulateOptions& o, const cloth::Scen
         "test\n",
         r.fp, r.fn);
     out << fmt::format(
-        "audit (exact)  {} particles inside, {} crossing edges, summed over the "
-        "frames (last frame: {} and {})\n",
-        r.audit.inside, r.audit.crossing, r.audit_last_inside, r.audit_last_crossing);
+        "audit (exact)  {} cloth triangles meeting an obstacle triangle, summed over the "
+        "frames (last frame: {})\n",
+        r.audit.obstacle_intersections, r.audit_last.obstacle_intersections);
   }
   if (scene.self_collision)
     out << fmt::format(
@@ -171,30 +115,23 @@ void print_counts(std::ostream& out, const SimulateOptions& o, const cloth::Scen
         r.self_zone_particles, r.self_stops);
   if (r.self_audited)
     out << fmt::format(
-        "self (exact)   {} cloth edges through the cloth's own triangles, summed "
-        "over the frames\n",
-        r.audit.self_crossing);
-  if (!o.png.empty()) out << "picture        " << o.png << "\n";
-  if (!o.movie.empty() && r.frames > 0) out << "movie          " << o.movie << "\n";
-  if (!o.record.empty()) out << "queries        " << o.record << "\n";
-  if (!o.obj_dir.empty()) out << "frames         " << o.obj_dir << "/frame_*.obj\n";
-}
-
-// Every output checked before the scene is read or run: one bad path writes nothing.
-void check_outputs(const SimulateOptions& o) {
-  if (!o.png.empty()) check_output_path(o.png);
-  if (!o.movie.empty()) check_output_path(o.movie);
-  if (!o.record.empty()) check_output_path(o.record);
-  if (!o.obj_dir.empty()) check_output_dir(o.obj_dir);
+        "self (exact)   {} pairs of cloth triangles sharing no particle that meet, "
+        "summed over the frames\n",
+        r.audit.self_intersections);
+  if (!o.files.png.empty()) out << "picture        " << o.files.png << "\n";
+  if (!o.files.movie.empty() && r.frames > 0) out << "movie          " << o.files.movie << "\n";
+  if (!o.files.record.empty()) out << "queries        " << o.files.record << "\n";
+  if (!o.files.obj_dir.empty()) out << "frames         " << o.files.obj_dir << "/frame_*.obj\n";
 }
 
 int run_simulate(SimulateOptions& o, const Io& io) {
-  check_outputs(o);
+  o.files.scene_path = o.scene_path;
+  o.files.check();
   const ThreadLimit threads(o.threads);
   o.run.check = !o.no_check;
   const cloth::Scene scene = read_scene_as_asked(o);
   const int frames = o.run.frames < 0 ? scene.frames : o.run.frames;
-  Outputs outputs(o, scene, frames);
+  SceneOutputs outputs(o.files, scene, frames);
   ProgressLine progress(io.err, progress_wanted(io, o.progress));
   o.run.on_start = [&](const cloth::Simulation& sim) { outputs.start(sim); };
   o.run.on_frame = [&](const cloth::Simulation& sim, int frame) {
@@ -255,26 +192,26 @@ void add_scene_options(CLI::App& cmd, SimulateOptions& o) {
       ->type_name("on|off")
       ->check(one_of({"on", "off"}));
   cmd.add_flag("--audit-self", o.run.audit_self,
-               "count self-crossings (cloth edges through the cloth's own\n"
-               "triangles) even without the self-collision pass");
+               "count self-crossings (cloth triangles meeting cloth triangles\n"
+               "that share no particle) even without the self-collision pass");
 }
 
 void add_output_options(CLI::App& cmd, SimulateOptions& o) {
-  cmd.add_option("--obj", o.obj_dir,
+  cmd.add_option("--obj", o.files.obj_dir,
                  "write DIR/frame_NNNNN.obj for every frame, from 00000 (the\n"
                  "initial state), with objects cloth and obstacles, for\n"
                  "`fdhcert audit`, Blender or ParaView")
       ->type_name("DIR");
-  cmd.add_option("--png", o.png, "render the last frame to FILE")->type_name("FILE");
-  cmd.add_option("--movie", o.movie,
+  cmd.add_option("--png", o.files.png, "render the last frame to FILE")->type_name("FILE");
+  cmd.add_option("--movie", o.files.movie,
                  "render the run to FILE as an animated PNG (APNG, 400x300,\n"
                  "16 frames per second, looping; browsers play it)")
       ->type_name("FILE");
-  add_number_option(cmd, "--movie-frames", o.movie_frames,
+  add_number_option(cmd, "--movie-frames", o.files.movie_frames,
                     "about how many frames the movie shows, evenly spread\n"
                     "over the run (default 48)",
                     "N", 1, 10000);
-  cmd.add_option("--record", o.record,
+  cmd.add_option("--record", o.files.record,
                  "write every narrow-phase query of the run to FILE in the\n"
                  "native vf format, for `fdhcert classify FILE`")
       ->type_name("FILE");

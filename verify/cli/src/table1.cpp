@@ -29,12 +29,13 @@ Runs the same scene here (fdhcert simulate, one step per frame) for each row:
   robust          k = 6, 14, 18, 26 (18 is the default of simulate)
 and prints the ms per frame beside the paper's numbers, with each run's
 accuracy: FP and FN of its narrow-phase queries against the exact test, and
-the exact audit (particles inside, crossing edges, summed over the frames).
+the exact frame audit (cloth triangles meeting an obstacle triangle, summed
+over the frames).
 )";
 
 const char* const kTable1Footer =
     R"(--json prints {"scene": .., "frames": F, "rows": [{"method": "robust", "k": 26,
-"grid": 50, "ms_per_frame": .., "fp": .., "fn": .., "inside": .., "crossing": ..,
+"grid": 50, "ms_per_frame": .., "fp": .., "fn": .., "crossing": ..,
 "queries": .., "collision_ms": .., "springs_ms": .., "dt": ..}, ...],
 "paper": {"grids": [..], "linear-system": [..], "paper-intended": [..],
 "machine": ..}}.)";

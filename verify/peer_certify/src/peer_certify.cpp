@@ -10,8 +10,8 @@
 #include "fdh/gen/shrink_point_sets.hpp"
 #include "fdh/io/peer_case_file.hpp"
 #include "fdh/os/atomic_file.hpp"
+#include "fdh/os/build_info.hpp"
 #include "fdh/peers/peers.hpp"
-#include "fdh/run/build_info.hpp"
 
 namespace fdh::verify {
 namespace fs = std::filesystem;

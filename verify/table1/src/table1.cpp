@@ -9,7 +9,7 @@
 
 #include "fdh/io/charts.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/run/scene_report.hpp"
+#include "fdh/scene/scene_report.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -54,17 +54,18 @@ void speed_block(Out to, const Table1& t) {
 void accuracy_block(Out to, const Table1& t) {
   fmt::format_to(to,
                  "\nAccuracy of the same runs (FP/FN: narrow-phase queries against the exact "
-                 "test;\ninside/crossing: the exact audit, summed over the frames)\n\n");
-  fmt::format_to(to, "{:<16}{:<4}{:<7}{:>9}{:>8}{:>10}{:>7}{:>7}{:>8}{:>10}{:>19}\n", "method", "k",
-                 "grid", "ms/frame", "paper", "queries", "FP", "FN", "inside", "crossing",
+                 "test;\ncrossing: the exact frame audit, cloth triangles meeting an obstacle "
+                 "triangle, summed over the frames)\n\n");
+  fmt::format_to(to, "{:<16}{:<4}{:<7}{:>9}{:>8}{:>10}{:>7}{:>7}{:>10}{:>19}\n", "method", "k",
+                 "grid", "ms/frame", "paper", "queries", "FP", "FN", "crossing",
                  "collision/springs");
   for (const Table1Cell& c : t.cells) {
     const double paper = c.paper_ms();
     const SceneRun& r = c.run;
-    fmt::format_to(to, "{:<16}{:<4}{:<7}{:>9.4f}{:>8}{:>10}{:>7}{:>7}{:>8}{:>10}{:>19}\n", c.method,
-                   c.k, grid_name(c.grid), r.ms_per_frame(),
+    fmt::format_to(to, "{:<16}{:<4}{:<7}{:>9.4f}{:>8}{:>10}{:>7}{:>7}{:>10}{:>19}\n", c.method, c.k,
+                   grid_name(c.grid), r.ms_per_frame(),
                    paper < 0 ? std::string("-") : fmt::format("{:.2f}", paper), r.candidates, r.fp,
-                   r.fn, r.audit.inside, r.audit.crossing,
+                   r.fn, r.audit.obstacle_intersections,
                    r.time.springs > 0  // a ratio only where it is finite
                        ? fmt::format("{:.2f}", r.time.collision() / r.time.springs)
                        : std::string("-"));
@@ -80,8 +81,7 @@ nlohmann::ordered_json cell_json(const Table1Cell& c) {
           {"ms_per_frame", six_digits(r.ms_per_frame())},
           {"fp", r.fp},
           {"fn", r.fn},
-          {"inside", r.audit.inside},
-          {"crossing", r.audit.crossing},
+          {"crossing", r.audit.obstacle_intersections},
           {"queries", r.candidates},
           {"collision_ms", six_digits(1e3 * r.time.collision() / frames)},
           {"springs_ms", six_digits(1e3 * r.time.springs / frames)},
@@ -149,10 +149,10 @@ std::string table1_text(const Table1& t) {
 
 std::string table1_headline(const Table1& t) {
   int grid = 0;
-  long inside = 0, crossing = 0;
+  long crossing = 0;
   for (const Table1Cell& c : t.cells) {
     grid = std::max(grid, c.grid);
-    inside += c.run.audit.inside, crossing += c.run.audit.crossing;
+    crossing += c.run.audit.obstacle_intersections;
   }
   std::vector<std::string> runs;
   for (const Table1Cell& c : t.cells)
@@ -168,8 +168,8 @@ std::string table1_headline(const Table1& t) {
                         Table1Paper::own[std::size_t(g - Table1Paper::grids.begin())]);
   return fmt::format(
       "Table 1 at {}x{}, k = 18, ms per frame{}\n  {}; audit of every run: {} "
-      "inside, {} crossing\n",
-      grid, grid, paper, fmt::join(runs, ", "), inside, crossing);
+      "crossing\n",
+      grid, grid, paper, fmt::join(runs, ", "), crossing);
 }
 
 nlohmann::ordered_json table1_json(const Table1& t) {
@@ -186,14 +186,14 @@ nlohmann::ordered_json table1_json(const Table1& t) {
 std::string table1_csv(const Table1& t) {
   fmt::memory_buffer out;
   const auto to = std::back_inserter(out);
-  fmt::format_to(to, "series,k,grid,particles,ms_per_frame,fp,fn,inside,crossing\n");
+  fmt::format_to(to, "series,k,grid,particles,ms_per_frame,fp,fn,crossing\n");
   for (const Table1Cell& c : t.cells)
-    fmt::format_to(to, "{} k={},{},{},{},{:.6g},{},{},{},{}\n", c.method, c.k, c.k, c.grid,
-                   c.grid * c.grid, c.run.ms_per_frame(), c.run.fp, c.run.fn, c.run.audit.inside,
-                   c.run.audit.crossing);
+    fmt::format_to(to, "{} k={},{},{},{},{:.6g},{},{},{}\n", c.method, c.k, c.k, c.grid,
+                   c.grid * c.grid, c.run.ms_per_frame(), c.run.fp, c.run.fn,
+                   c.run.audit.obstacle_intersections);
   const auto paper = [&](const char* series, const std::array<double, 4>& ms) {
     for (std::size_t g = 0; g < ms.size(); ++g)
-      fmt::format_to(to, "{},0,{},{},{},,,,\n", series, Table1Paper::grids[g],
+      fmt::format_to(to, "{},0,{},{},{},,,\n", series, Table1Paper::grids[g],
                      Table1Paper::grids[g] * Table1Paper::grids[g], ms[g]);
   };
   paper("paper: traditional", Table1Paper::traditional);

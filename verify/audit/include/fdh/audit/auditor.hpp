@@ -10,6 +10,10 @@
 //   cloth triangles, cloth edges against obstacle edges).
 // Frames are given one at a time (two in memory), so a long sequence streams. The first frame
 // also builds the trees (verify/audit/src/trees.hpp), which later frames refit.
+// Touching counts as meeting, everywhere: this engine is the one place that decides it (a
+// primitive that only touches another is a violation of each kind above), and every exact audit
+// of cloth frames (`fdhcert audit`, the scene runs of simulate, scenes, table1 and Python) is
+// this engine.
 #pragma once
 
 #include <array>
@@ -93,6 +97,11 @@ struct Options {
   int keep = 16;    // violations kept per frame report
   int threads = 0;  // 0: every core
   double toi_width = kDefaultToiWidth;
+  // false: every frame is checked on its own, with no step between frames (the frames given are
+  // far apart, e.g. a scene's every 100th, so a straight motion between them means nothing).
+  bool steps = true;
+  // false: the cloth only against the obstacles, not against itself.
+  bool self = true;
 };
 
 class Auditor {

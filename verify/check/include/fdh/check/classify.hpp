@@ -44,7 +44,6 @@ struct Classification {
   std::vector<char> reference;  // per query: the file's truth where given, else exact's verdict
   std::vector<char> exact;      // per query: the exact twin's verdict (registry.hpp)
   std::vector<MethodResult> methods;
-  std::vector<std::size_t> exact_vs_file;  // queries where exact disagrees with the file's truth
   std::size_t static_vf = 0, moving_vf = 0, edge_edge = 0;  // the queries by kind
 };
 

@@ -19,8 +19,9 @@ struct ToiResult {
   long na = 0;              // queries it gives no time for
   double ns_per_query = 0;  // mean over the queries it gives a time for
   TimeTally tally;
-  std::vector<Toi> said;      // per query; {false, 1, 1} where n/a
-  std::vector<char> applies;  // per query: 1 where it gave a time
+  std::vector<Toi> said;          // per query; {false, 1, 1} where n/a
+  std::vector<char> applies;      // per query: 1 where it gave a time
+  std::vector<TimeCheck> checks;  // per query: the checker's findings where it gave a time
 };
 
 struct ToiClassification {

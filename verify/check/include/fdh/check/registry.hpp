@@ -97,7 +97,11 @@ struct Method {
            (q.min_distance == 0 || answers_min_distance);
   }
   bool hit(const Query& q) const { return test[std::size_t(decision_of(q))](q); }
-  bool gives_toi(const Query& q) const { return bool(toi[toi_index(toi_decision_of(q))]); }
+  // A time for q's TOI decision, and for q's δ (as applies_to).
+  bool gives_toi(const Query& q) const {
+    return bool(toi[toi_index(toi_decision_of(q))]) &&
+           (q.min_distance == 0 || answers_min_distance);
+  }
   Toi time_of_impact(const Query& q, double width) const {
     return toi[toi_index(toi_decision_of(q))](q, width);
   }

@@ -11,7 +11,7 @@
 
 #include "fdh/cloth/scene.hpp"
 #include "fdh/os/progress.hpp"
-#include "fdh/run/scene_run.hpp"
+#include "fdh/scene/scene_run.hpp"
 
 namespace fdh::verify {
 
@@ -53,7 +53,7 @@ std::string table1_headline(const Table1& t);
 // {"scene", "frames", "rows": [...], "paper": {...}} (docs/formats.md, "table1 output").
 nlohmann::ordered_json table1_json(const Table1& t);
 
-// series,k,grid,particles,ms_per_frame,fp,fn,inside,crossing; the paper's rows included.
+// series,k,grid,particles,ms_per_frame,fp,fn,crossing; the paper's rows included.
 std::string table1_csv(const Table1& t);
 
 // DIR/table1.md, DIR/data/table1.csv and the chart DIR/table1.png and .svg. Throws

@@ -1,0 +1,92 @@
+// `fdhcert audit`'s certificate: the Auditor's frame reports (fdh/audit/auditor.hpp) collected
+// into a summary, per-frame counts, the first violations and the cost, as JSON (`audit --json`,
+// audit.json, the dict of the Python module's fdhcert.audit) and Markdown (audit.md). The one
+// builder of both, so that the program and the module cannot differ (docs/audit.md,
+// docs/formats.md "audit output").
+#pragma once
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+#include <vector>
+
+#include "fdh/audit/auditor.hpp"
+#include "fdh/audit/counts.hpp"
+#include "fdh/io/mesh_sequence.hpp"
+#include "fdh/io/query_record.hpp"
+
+namespace fdh::verify {
+
+// Where one frame's primitives are in the input files, for the certificate's "places"
+// (FILE:LINE of each `v` and `f`); a run over arrays (Python) has none.
+struct FramePlaces {
+  const Places* cloth_vertices = nullptr;
+  const Places* cloth_tris = nullptr;
+  const Places* obstacle_vertices = nullptr;
+  const Places* obstacle_tris = nullptr;
+};
+
+// A violation kept for the certificate, with what the run adds to it.
+struct KeptViolation {
+  audit::Violation violation;
+  int report_frame = 0;             // the frame report that carried it (a step's end frame)
+  std::vector<std::string> places;  // FILE:LINE of its primitives; empty from arrays
+  std::string case_file;            // relative to the --out folder; "" when none is written
+};
+
+using audit::AuditCounts;  // what the certificate counts, per frame and in total
+
+// A kept step violation's case: its query, an id naming the kind, the step and the vertices, the
+// exact truth 1, and `file` its case file.
+QueryRecord case_record(const KeptViolation& k);
+
+class AuditReport {
+ public:
+  // `keep`: the violations kept in the certificate, earliest first (at least 1);
+  // `case_files` (a run that writes its files, `audit --out`): name a case file
+  // (cases/NNN-KIND-step-F.vf) for each kept step violation, and show first-violation.png in the
+  // Markdown.
+  AuditReport(const audit::Topology& topology, const audit::Options& options, int keep,
+              bool case_files = false);
+
+  // The next frame's report, in order. `places`: where the frames' primitives are, indexed by
+  // frame (a step's violations are named in the frame the step starts from); null from arrays.
+  // Returns true when this report holds the run's first violation.
+  bool add(const audit::FrameReport& r, const FramePlaces* step_start = nullptr,
+           const FramePlaces* frame = nullptr);
+
+  // The run is over: `wall_seconds` from the start (reading included) and the process's peak
+  // memory (getrusage's ru_maxrss), for the cost block.
+  void finish(double wall_seconds);
+
+  bool clean() const { return total_.total() == 0; }
+  int exit_status() const { return clean() ? 0 : 1; }
+  int frames() const { return int(per_frame_.size()); }
+  const AuditCounts& totals() const { return total_; }
+  const std::vector<KeptViolation>& kept() const { return kept_; }
+
+  // The replayable case files of the kept step violations: the query with its exact truth (1),
+  // `file` set to its name under the --out folder (case_record of each with a case file).
+  std::vector<QueryRecord> case_records() const;
+
+  // "clean: 40 frames, 39 steps, 0 violations" or "VIOLATION: ... first ... at step 3 (...)".
+  std::string summary_line() const;
+  // The terminal's text: the summary line, then a line per frame with violations (at most
+  // `max_frames` of them, then how many more).
+  std::string text(int max_frames = 20) const;
+  nlohmann::ordered_json json() const;  // docs/formats.md, "audit output"
+  std::string markdown() const;         // audit.md
+
+ private:
+  audit::Topology topology_;
+  audit::Options options_;
+  int keep_;
+  bool case_files_;
+  std::vector<AuditCounts> per_frame_;
+  AuditCounts total_;
+  std::vector<KeptViolation> kept_;
+  double audit_seconds_ = 0, wall_seconds_ = 0;
+  long peak_bytes_ = 0;
+};
+
+}  // namespace fdh::verify

@@ -1,0 +1,103 @@
+#include "fdh/scene/scene_run.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <stdexcept>
+
+#include "fdh/audit/auditor.hpp"
+#include "fdh/check/checker.hpp"
+#include "fdh/exact/ccd.hpp"
+
+namespace fdh::verify {
+
+int bounded_frames(const cloth::Scene& scene, long frames, long particle_frames) {
+  const long particles = long(scene.cloth.grid) * scene.cloth.grid;
+  return int(std::min({long(scene.frames), frames, std::max(1L, particle_frames / particles)}));
+}
+
+TriMesh obstacles_of(const cloth::Scene& scene) {
+  TriMesh obstacles;
+  for (const auto& o : scene.obstacles) obstacles.append(cloth::obstacle_mesh(o));
+  return obstacles;
+}
+
+namespace {
+
+// The cloth's triangles and the scene's obstacles, as the audit engine takes them.
+audit::Topology audit_topology(const cloth::Scene& scene, const cloth::Simulation& sim) {
+  audit::Topology t;
+  t.cloth_vertices = sim.cloth().n();
+  t.cloth = sim.cloth().triangles();
+  const TriMesh obstacles = obstacles_of(scene);
+  t.obstacle_vertices = int(obstacles.x.size());
+  t.obstacle = obstacles.tris;
+  return t;
+}
+
+// Each checked frame on its own, the cloth against itself only when asked; on every core (as
+// --threads allows), with the engine's own k, as `fdhcert audit`.
+audit::Options frame_audit_options(bool self) {
+  audit::Options o;
+  o.keep = 0;
+  o.steps = false;
+  o.self = self;
+  return o;
+}
+
+}  // namespace
+
+SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
+  SceneRun r;
+  const cloth::Cloth probe(scene.cloth);
+  r.grid = scene.cloth.grid;
+  r.particles = probe.n();
+  r.stable_dt = probe.stable_dt();
+  r.dt = scene.dt;
+  if (r.dt > r.stable_dt) r.dt = 0.9 * r.stable_dt, r.dt_reduced = true;
+  r.skin = scene.skin();
+  r.frames = opt.frames >= 0 ? opt.frames : scene.frames;
+
+  const Method narrow = select_methods({opt.narrow}).front();
+  cloth::Simulation sim(scene, narrow_phase_named(opt.narrow), opt.k, r.dt, &exact::ccd_hit,
+                        &exact::ccd_toi);
+  r.self_audited = opt.check && (opt.audit_self || scene.self_collision);
+  std::optional<audit::Auditor> audit;
+  if (opt.check) audit.emplace(audit_topology(scene, sim), frame_audit_options(r.self_audited));
+  const std::vector<Vec3> obstacles = obstacles_of(scene).x;  // still: the same every frame
+  // The exact audit of the cloth as it ends a checked frame.
+  const auto audit_frame = [&](const cloth::Simulation& sim) {
+    ++r.audited_frames;
+    r.audit_last = audit::counts_of(audit->add_frame(sim.cloth().x(), obstacles));
+    r.audit.add(r.audit_last);
+  };
+  r.energy_start = sim.cloth().energy();
+  if (opt.on_start) opt.on_start(sim);
+  for (int f = 1; f <= r.frames; ++f) {
+    sim.step();
+    r.time += sim.times();
+    r.candidates += long(sim.queries().size());
+    r.collisions += sim.collisions();
+    r.self_queries += sim.self().queries;
+    r.self_hits += sim.self().hits;
+    r.self_round_frames += sim.self().rounds > 0;
+    r.self_zone_frames += sim.self().zones;
+    r.self_zone_particles += sim.self().zone_particles;
+    r.self_stops += sim.self().stopped_all;
+    r.self_motion += sim.self().motion, r.self_motion_kept += sim.self().kept;
+    if (opt.check && (f % scene.audit_every == 0 || f == r.frames)) {  // the scene's stride
+      for (const auto& nq : sim.queries()) {
+        const Verdicts v = check_given(narrow, sim.query(nq), nq.hit);
+        r.fp += v.said && !v.twin;
+        r.fn += !v.said && v.twin;
+        r.broken += !v.kept;
+      }
+      audit_frame(sim);
+    }
+    if (opt.on_frame) opt.on_frame(sim, f);
+  }
+  r.energy_end = sim.cloth().energy();
+  r.final_x = sim.cloth().x();
+  return r;
+}
+
+}  // namespace fdh::verify
