@@ -94,6 +94,10 @@ TEST(Cli, UsageErrorsExitTwoWithAShortMessage) {
       {"audit", "f.obj", "--keep", "0"},
       {"audit", "f.obj", "--threads", "0"},
       {"certify", "--threads", "0"},
+      {"certify", "--min-distance", "-1"},
+      {"certify", "--min-distance", "1e999"},
+      {"fuzz", "--method", "robust", "--family", "angled", "--out", "x", "--min-distance", "nan"},
+      {"fuzz", "--method", "robust", "--family", "angled", "--out", "x", "--min-distance", "1mm"},
       {"report", "--threads", "1025"},
   };
   for (const auto& args : bad) {

@@ -149,6 +149,21 @@ TEST(Fuzz, FindsShrinksAndStoresCasesThatReplayAsFailures) {
   }
 }
 
+// At δ > 0 the paper's readings answer nothing (n/a): the run that finds their contact
+// disagreements above finds none, and its run folder records δ.
+TEST(Fuzz, AtMinDistanceThePaperMethodsAreNotApplicable) {
+  const fs::path d = fuzz_dir("fuzz_min_distance");
+  FuzzOptions o = options(d, 1);
+  o.count = 300;
+  o.min_distance = 0x1p-20;
+  const FuzzSummary s = run_fuzz(o);
+  EXPECT_EQ(s.cases, 300);
+  EXPECT_EQ(s.disagreements, 0);
+  EXPECT_TRUE(fs::is_directory(d / ".fuzz" /
+                               "d0x1p-20.paper-intended.parallel-cross.seed7.count300.shard1of1"));
+  EXPECT_EQ(run_fuzz(o).resumed, 300);  // the same δ resumes the same run
+}
+
 TEST(Fuzz, SameCasesForAnyWorkerCountAndShards) {
   const fs::path one = fuzz_dir("fuzz_one"), two = fuzz_dir("fuzz_two"),
                  shards = fuzz_dir("fuzz_shards");

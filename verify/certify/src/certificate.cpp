@@ -42,9 +42,9 @@ std::string box_key(const json& into, const BoxCheck& b) {
   return into.contains(k) ? k + "/" + b.method : k;
 }
 
-json promises_json(const Certificate& c) {
+json promises_json(const std::vector<PromiseCheck>& promises) {
   json out = json::array();
-  for (const PromiseCheck& p : c.promises)
+  for (const PromiseCheck& p : promises)
     out.push_back({{"method", p.method},
                    {"decision", to_string(p.decision)},
                    {"promise", to_string(p.promise)},
@@ -54,9 +54,9 @@ json promises_json(const Certificate& c) {
   return out;
 }
 
-json times_json(const Certificate& c) {
+json times_json(const Certificate& c, const std::vector<TimePromiseCheck>& times) {
   json out = json::array();
-  for (const TimePromiseCheck& p : c.times) {
+  for (const TimePromiseCheck& p : times) {
     const TimeTally& t = p.tally;
     json j = {{"method", p.method},
               {"decision", to_string(p.decision)},
@@ -112,6 +112,24 @@ void inputs_markdown(Out to, const Certificate& c) {
   fmt::format_to(to, "| random triangle-soup pairs (tree) | {} |\n\n", c.options.soups);
 }
 
+void promise_rows(Out to, const std::vector<PromiseCheck>& promises,
+                  const std::vector<TimePromiseCheck>& times) {
+  for (const PromiseCheck& p : promises)
+    fmt::format_to(to, "| {} verdict {} | `{}` | – | {} queries{} | {} |\n", to_string(p.decision),
+                   promise_words(p.promise), p.method, p.checked,
+                   p.filter_decided
+                       ? fmt::format(" ({} decided by the float filter alone)", p.filter_decided)
+                       : std::string(),
+                   p.violations);
+  for (const TimePromiseCheck& p : times)
+    fmt::format_to(to,
+                   "| {} time {} | `{}` | – | {} queries ({} contacts; {} late, {} zero, "
+                   "earliest by {:.3g} of the step, median {:.3g}) | {} |\n",
+                   to_string(p.decision), time_promise_words(p.promise), p.method, p.tally.checked,
+                   p.tally.contacts, p.tally.late, p.tally.zero, p.tally.early_max(),
+                   p.tally.early_median(), p.tally.broken);
+}
+
 void properties_markdown(Out to, const Certificate& c) {
   fmt::format_to(to,
                  "## Properties\n\n| property | method | k | checked | violations |\n"
@@ -126,29 +144,16 @@ void properties_markdown(Out to, const Certificate& c) {
                    "pairs, {} overlapping primitive pairs | {} |\n",
                    b.method, b.k, b.soup_pairs, b.exact_pairs, b.cull_violations);
   }
-  for (const PromiseCheck& p : c.promises)
-    fmt::format_to(to, "| {} verdict {} | `{}` | – | {} queries{} | {} |\n", to_string(p.decision),
-                   promise_words(p.promise), p.method, p.checked,
-                   p.filter_decided
-                       ? fmt::format(" ({} decided by the float filter alone)", p.filter_decided)
-                       : std::string(),
-                   p.violations);
-  for (const TimePromiseCheck& p : c.times)
-    fmt::format_to(to,
-                   "| {} time {} | `{}` | – | {} queries ({} contacts; {} late, {} zero, "
-                   "earliest by {:.3g} of the step, median {:.3g}) | {} |\n",
-                   to_string(p.decision), time_promise_words(p.promise), p.method, p.tally.checked,
-                   p.tally.contacts, p.tally.late, p.tally.zero, p.tally.early_max(),
-                   p.tally.early_median(), p.tally.broken);
+  promise_rows(to, c.promises, c.times);
   fmt::format_to(to,
                  "| the exact twin = the known truth (corpus and benchmark files; fuzzed queries "
                  "whose construction fixes it) | – | – | {} queries | {} |\n",
                  c.truths, c.truth_violations);
 }
 
-json metamorphic_json(const Certificate& c) {
+json metamorphic_json(const std::vector<MetamorphicCheck>& rows) {
   json out = json::array();
-  for (const MetamorphicCheck& m : c.metamorphic)
+  for (const MetamorphicCheck& m : rows)
     out.push_back({{"method", m.method},
                    {"promise", to_string(m.promise)},
                    {"checked", m.checked},
@@ -158,11 +163,17 @@ json metamorphic_json(const Certificate& c) {
   return out;
 }
 
-json transforms_json(const Certificate& c) {
+json transforms_json(const std::vector<TransformCount>& counts) {
   json out = json::array();
-  for (const TransformCount& t : c.metamorphic_transforms)
+  for (const TransformCount& t : counts)
     out.push_back({{"transform", t.transform}, {"applied", t.applied}, {"skipped", t.skipped}});
   return out;
+}
+
+void metamorphic_rows(Out to, const std::vector<MetamorphicCheck>& rows) {
+  for (const MetamorphicCheck& m : rows)
+    fmt::format_to(to, "| `{}` | {} | {} | {} | {} | {} |\n", m.method, to_string(m.promise),
+                   m.checked, m.violations, m.judged, m.broken);
 }
 
 // Every method under the truth-keeping transforms: promised methods must change no verdict.
@@ -177,9 +188,7 @@ void metamorphic_markdown(Out to, const Certificate& c) {
       "query, which the transforms keep: a broken promise is a violation.\n\n"
       "| method | promise | transformed queries | verdicts changed | judged against the "
       "promise | promise broken |\n|---|---|---|---|---|---|\n");
-  for (const MetamorphicCheck& m : c.metamorphic)
-    fmt::format_to(to, "| `{}` | {} | {} | {} | {} | {} |\n", m.method, to_string(m.promise),
-                   m.checked, m.violations, m.judged, m.broken);
+  metamorphic_rows(to, c.metamorphic);
   fmt::format_to(to,
                  "\nEach transform applies only where it is exact: a query where a coordinate "
                  "would round, overflow or leave the normal range is skipped.\n\n"
@@ -196,6 +205,46 @@ std::string grouped(long n) {
     out += digits[i];
   }
   return (n < 0 ? "-" : "") + out;
+}
+
+json delta_json(const Certificate& c) {
+  const DeltaStage& d = c.delta;
+  return {
+      {"run", d.run},
+      {"min_distance", d.delta_words()},
+      {"families", d.families},
+      {"family_queries", d.family_queries},
+      {"contact_queries_at_delta", d.contact_queries},
+      {"promises", promises_json(d.promises)},
+      {"times", times_json(c, d.times)},
+      {"exact_equals_stored_truth", {{"queries", d.truths}, {"violations", d.truth_violations}}},
+      {"metamorphic", metamorphic_json(d.metamorphic)},
+      {"metamorphic_transforms", transforms_json(d.metamorphic_transforms)},
+      {"checks", d.checks()},
+      {"violations", d.violations()}};
+}
+
+// The δ promise lines and the δ metamorphic counts.
+void delta_markdown(Out to, const Certificate& c) {
+  const DeltaStage& d = c.delta;
+  if (!d.run) return;
+  fmt::format_to(to,
+                 "\n## Minimum separation\n\nThe methods that answer the minimum-separation "
+                 "question (within distance δ at some time of the step; docs/methods.md) against "
+                 "the exact δ twin, at δ = {}: {} queries of the {} delta- families (each at its "
+                 "own δ), and {} contact queries (every 8th of the corpus and of each family's "
+                 "first cases) asked again at δ.\n\n| property | method | k | checked | "
+                 "violations |\n|---|---|---|---|---|\n",
+                 d.delta_words(), d.family_queries, d.families.size(), d.contact_queries);
+  promise_rows(to, d.promises, d.times);
+  fmt::format_to(to,
+                 "| the exact twin = the known truth (the delta- families' constructions) | – | "
+                 "– | {} queries | {} |\n\nUnder the metamorphic transforms (the scales scale "
+                 "δ with the query):\n\n| method | promise | transformed queries | verdicts "
+                 "changed | judged against the promise | promise broken |\n"
+                 "|---|---|---|---|---|---|\n",
+                 d.truths, d.truth_violations);
+  metamorphic_rows(to, d.metamorphic);
 }
 
 json budget_json(const Certificate& c) {
@@ -258,8 +307,29 @@ std::string cut_words(const BudgetCut& cut) {
   return fmt::format("{}: {} of {} {}", cut.stage, grouped(cut.done), grouped(cut.total), cut.unit);
 }
 
-long Certificate::checks() const {
+std::string DeltaStage::delta_words() const {
+  if (min_distance < 0) return "2^-20 of each query's scale";
+  return fmt::format("{}", min_distance);  // the shortest text that reads back as D
+}
+
+long DeltaStage::checks() const {
   long n = truths;
+  for (const PromiseCheck& p : promises) n += p.checked;
+  for (const TimePromiseCheck& p : times) n += p.tally.checked;
+  for (const MetamorphicCheck& m : metamorphic) n += (m.held() ? m.checked : 0) + m.judged;
+  return n;
+}
+
+long DeltaStage::violations() const {
+  long n = truth_violations;
+  for (const PromiseCheck& p : promises) n += p.violations;
+  for (const TimePromiseCheck& p : times) n += p.tally.broken;
+  for (const MetamorphicCheck& m : metamorphic) n += (m.held() ? m.violations : 0) + m.broken;
+  return n;
+}
+
+long Certificate::checks() const {
+  long n = truths + delta.checks();
   for (const PromiseCheck& p : promises) n += p.checked;
   for (const TimePromiseCheck& p : times) n += p.tally.checked;
   for (const BoxCheck& b : boxes) n += b.boxes + b.soup_pairs;
@@ -268,7 +338,7 @@ long Certificate::checks() const {
 }
 
 long Certificate::violations() const {
-  long n = truth_violations;
+  long n = truth_violations + delta.violations();
   for (const PromiseCheck& p : promises) n += p.violations;
   for (const TimePromiseCheck& p : times) n += p.tally.broken;
   for (const BoxCheck& b : boxes) n += b.box_violations + b.cull_violations;
@@ -306,11 +376,12 @@ std::string certificate_json(const Certificate& c) {
       {"inputs", inputs_json(c)},
       {"kdop_contains_exact", boxes},
       {"tree_no_false_cull", culls},
-      {"promises", promises_json(c)},
-      {"times", times_json(c)},
+      {"promises", promises_json(c.promises)},
+      {"times", times_json(c, c.times)},
       {"exact_equals_stored_truth", {{"queries", c.truths}, {"violations", c.truth_violations}}},
-      {"metamorphic", metamorphic_json(c)},
-      {"metamorphic_transforms", transforms_json(c)},
+      {"metamorphic", metamorphic_json(c.metamorphic)},
+      {"metamorphic_transforms", transforms_json(c.metamorphic_transforms)},
+      {"min_distance", delta_json(c)},
       {"peers", peers_json(c.peers)},
       {"first_violation", c.first_violation}};
   return json_text(j, "certificate.json");
@@ -327,6 +398,7 @@ std::string certificate_markdown(const Certificate& c) {
   inputs_markdown(to, c);
   properties_markdown(to, c);
   metamorphic_markdown(to, c);
+  delta_markdown(to, c);
   fmt::format_to(to, "\n{}", peers_markdown(c.peers));
   return fmt::to_string(out);
 }

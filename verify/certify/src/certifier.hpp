@@ -88,7 +88,15 @@ struct CertifyTally {
 // CertifyTally merged into the certificate (record) in input order.
 class Certifier {
  public:
-  explicit Certifier(Certificate& c) : c_(c) {
+  // With `delta`, the minimum-separation stage's (Certificate::delta): only the methods that
+  // answer δ > 0, no boxes (they do not depend on δ).
+  explicit Certifier(Certificate& c, bool delta = false)
+      : c_(c),
+        delta_(delta),
+        methods_(stage_methods(promised_methods(), delta)),
+        timed_(stage_methods(time_promised_methods(), delta)),
+        boxes_(delta ? std::vector<BoxMethod>() : all_box_methods()),
+        metamorphic_(stage_methods(all_methods(), delta)) {
     fs::create_directories(c.options.out_dir);
     for (const Method& m : methods_)
       for (const Decision d : kQueryDecisions)
@@ -147,8 +155,23 @@ class Certifier {
   }
 
  private:
+  static std::vector<Method> stage_methods(std::vector<Method> ms, bool delta) {
+    if (delta)
+      ms.erase(std::remove_if(ms.begin(), ms.end(),
+                              [](const Method& m) { return !m.answers_min_distance; }),
+               ms.end());
+    return ms;
+  }
+
   // The certificate's rows and counts are total_'s.
   void write_counts() {
+    if (delta_) {
+      DeltaStage& d = c_.delta;
+      d.promises = total_.promises, d.times = total_.times, d.metamorphic = total_.metamorphic;
+      d.metamorphic_transforms = total_.transforms;
+      d.truths = total_.truths, d.truth_violations = total_.truth_violations;
+      return;
+    }
     c_.promises = total_.promises, c_.boxes = total_.boxes, c_.metamorphic = total_.metamorphic;
     c_.times = total_.times, c_.metamorphic_transforms = total_.transforms;
     c_.truths = total_.truths, c_.truth_violations = total_.truth_violations;
@@ -162,7 +185,7 @@ class Certifier {
     const RecordScope asking(r);  // a plug-in's crash names r
     const Query& q = r.query;
     check_boxes(r, std::vector<Vec3>(q.x.begin(), q.x.end()), t);
-    if (q.is_static_vf()) {
+    if (q.is_static_vf() && !delta_) {
       check_boxes(r, {q.b0(), q.b1()}, t);
       check_boxes(r, {q.d(), q.e(), q.f()}, t);
     }
@@ -178,6 +201,7 @@ class Certifier {
       PromiseCheck& p = t.promises[i];
       if (p.decision != d) continue;
       const Method& m = method(p.method);
+      if (!m.applies_to(q)) continue;  // a plug-in that answers contact only, at δ > 0
       const auto& filter = m.filter[std::size_t(d)];
       p.filter_decided += filter && filter(q) != Filtered::Uncertain;
       ++p.checked;
@@ -198,6 +222,7 @@ class Certifier {
     for (TimePromiseCheck& row : t.times) {
       if (row.decision != d) continue;
       const Method& m = named(timed_, row.method);
+      if (q.min_distance > 0 && !m.answers_min_distance) continue;
       const TimeCheck c = check_time(m, q, c_.options.toi_width, exact);
       row.tally.add(c, 0, 0);
       if (!c.kept)
@@ -305,9 +330,10 @@ class Certifier {
   }
 
   Certificate& c_;
-  const std::vector<Method> methods_ = promised_methods();
-  const std::vector<Method> timed_ = time_promised_methods();
-  const std::vector<BoxMethod> boxes_ = all_box_methods();
+  const bool delta_;
+  const std::vector<Method> methods_;
+  const std::vector<Method> timed_;
+  const std::vector<BoxMethod> boxes_;
   const MetamorphicCertifier metamorphic_;
   CertifyTally zero_;   // every row, every count 0
   CertifyTally total_;  // what record() has merged so far

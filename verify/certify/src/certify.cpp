@@ -1,6 +1,7 @@
 #include "fdh/certify/certify.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <set>
@@ -62,10 +63,11 @@ CertifyTally scene_tally(const std::string& file, const CertifyOptions& o, const
 }
 
 void tell(const Certificate& c, const std::string& stage, long done, long total) {
-  const std::string unit = stage == "generator families" ? "queries"
-                           : stage == "scenes"           ? "scenes"
-                           : total > 0                   ? "files"
-                                                         : "";
+  const std::string unit = stage == "generator families" || stage == "minimum separation"
+                               ? "queries"
+                           : stage == "scenes" ? "scenes"
+                           : total > 0         ? "files"
+                                               : "";
   report(c.options.progress, {stage, done, total, unit});
 }
 
@@ -164,6 +166,66 @@ void check_extra_files(Certificate& c, Certifier& cert) {
   note_cut(c, "extra files", c.extra_queries, total, "queries");
 }
 
+// The δ a contact query is asked at again: the D given, else 2^-20 of the query's scale (the
+// power of two at or above its largest coordinate), exact; 0 where that underflows.
+double stage_delta(const Query& q, double given) {
+  if (given > 0) return given;
+  double top = 0;
+  for (const Vec3& p : q.x) top = std::max({top, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  int e = 0;
+  std::frexp(top == 0 ? 1.0 : top, &e);
+  const double d = std::ldexp(1.0, e - 20);
+  return std::isnormal(d) ? d : 0;
+}
+
+// Every 8th of `qs` asked again at the stage's δ (their truths are contact's: dropped).
+std::vector<QueryRecord> at_delta(const std::vector<QueryRecord>& qs, double given) {
+  std::vector<QueryRecord> out;
+  for (std::size_t i = 0; i < qs.size(); i += 8) {
+    QueryRecord r = qs[i];
+    r.query.min_distance = stage_delta(r.query, given);
+    r.truth = Truth::Unknown;
+    if (r.query.min_distance > 0) out.push_back(std::move(r));
+  }
+  return out;
+}
+
+// The minimum-separation stage (DeltaStage): a quarter of per_family queries of each delta-
+// family (stream 500 + j), then every 8th corpus query and every 8th of each contact family's
+// first per_family / 2 cases, at δ.
+void check_delta(Certificate& c) {
+  DeltaStage& d = c.delta;
+  d.min_distance = c.options.min_distance;
+  if (c.options.min_distance == 0) return;
+  if (c.options.budget.spent()) return c.cut_short.push_back({"minimum separation", 0, 0, ""});
+  d.run = true;
+  Certifier cert(c, true);
+  const long per = std::max(1L, c.options.per_family / 4);
+  std::uint64_t stream = 500;
+  for (const Family& f : delta_families()) {
+    d.families.push_back(f.name);
+    tell(c, "minimum separation", d.family_queries, per * long(delta_families().size()));
+    std::vector<QueryRecord> qs;
+    for (long j = 0; j < per; ++j)
+      qs.push_back(generate(f, case_seed(c.options.seed * 1000 + stream, j)).record());
+    ++stream;
+    d.family_queries += cert.check_queries(qs);
+  }
+  for (const std::string& f : list_query_files(c.options.corpus_dir))
+    d.contact_queries += cert.check_queries(at_delta(read_native(f), c.options.min_distance));
+  stream = 0;
+  for (const Family& f : all_families()) {
+    std::vector<QueryRecord> qs;
+    ++stream;
+    for (long j = 0; j < c.options.per_family / 2; ++j)
+      qs.push_back(generate(f, case_seed(c.options.seed * 1000 + stream, j)).record());
+    d.contact_queries += cert.check_queries(at_delta(qs, c.options.min_distance));
+  }
+  if (c.options.budget.spent())
+    c.cut_short.push_back(
+        {"minimum separation", d.family_queries + d.contact_queries, 0, "queries"});
+}
+
 // The metamorphic checks ran with the queries above: once the budget stopped those, the
 // transforms of the queries not reached were not checked either.
 void note_metamorphic_cut(Certificate& c) {
@@ -192,6 +254,7 @@ Certificate certify(const CertifyOptions& options) {
   check_soups(c, cert);
   check_extra_files(c, cert);
   note_metamorphic_cut(c);
+  check_delta(c);
   if (c.options.budget.spent()) {
     c.cut_short.push_back({"peers", 0, 0, ""});  // not run
     return c;

@@ -1,6 +1,7 @@
 // certify's metamorphic checks (certify_metamorphic.hpp).
 #include "fdh/certify/certify_metamorphic.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "fdh/io/case_files.hpp"
@@ -63,6 +64,8 @@ std::string MetamorphicCertifier::Violation::before(const QueryRecord& original)
   if (transform.empty()) return "";
   std::string line = case_file_text(original, {});
   while (!line.empty() && line.back() == '\n') line.pop_back();
+  // One comment line: a query at δ > 0 comes after its `min-distance` line.
+  std::replace(line.begin(), line.end(), '\n', ' ');
   return "before " + transform + ": " + line;
 }
 

@@ -7,7 +7,8 @@
 namespace fdh::verify {
 
 TwinContact twin_contact(const Query& q) {
-  if (decision_of(q) == Decision::PointTriangle) {
+  // exact::point_triangle decides contact only; at δ > 0 the static query is a CCD one.
+  if (decision_of(q) == Decision::PointTriangle && q.min_distance == 0) {
     const exact::PointTriangleContact e =
         exact::point_triangle(q.b0(), q.b1(), q.d(), q.e(), q.f());
     return {e.hit, exact::to_string(e.kind), e.time, e.time};

@@ -38,6 +38,7 @@ Transform shift(std::string name, Vec3 by, int from) {
 }
 
 // Every coordinate times 2^e, when none overflows or leaves the normal range (then it is exact).
+// Distances scale with the points: δ times 2^e too, under the same condition.
 Transform scale(std::string name, int e) {
   return {std::move(name), std::nullopt, [e](const Query& q) -> Maybe {
             Query t = q;
@@ -46,6 +47,8 @@ Transform scale(std::string name, int e) {
                 double& s = coord(t.x[i], a);
                 if (!scale_exactly(q.x[i][a], e, s) || !in_range(s)) return std::nullopt;
               }
+            if (!scale_exactly(q.min_distance, e, t.min_distance) || !in_range(t.min_distance))
+              return std::nullopt;
             return t;
           }};
 }
@@ -141,6 +144,7 @@ std::vector<Transformed> transforms_of(const Query& q, std::vector<TransformCoun
   Query bare;  // no id or file name to copy for every transform
   bare.kind = q.kind;
   bare.x = q.x;
+  bare.min_distance = q.min_distance;  // kept by every transform but the scales, which scale it
   std::vector<Transformed> out;
   const std::vector<Transform>& all = all_transforms();
   for (std::size_t i = 0; i < all.size(); ++i) {

@@ -76,8 +76,10 @@ Decision decision_of(const Query& q) {
   return q.is_static_vf() ? Decision::PointTriangle : Decision::VertexFaceCcd;
 }
 
+// At δ > 0 the static question is the vertex-face one with a still triangle (docs/methods.md,
+// "Minimum separation"): exact::point_triangle_hit decides contact only, exact::ccd_hit reads δ.
 bool twin_hit(const Query& q, Decision d) {
-  return d == Decision::PointTriangle
+  return d == Decision::PointTriangle && q.min_distance == 0
              ? exact::point_triangle_hit(q.b0(), q.b1(), q.d(), q.e(), q.f())
              : exact::ccd_hit(q);
 }
@@ -123,8 +125,19 @@ Toi float_cubic_time(const Query& q, double) {
   return float_cubic_toi(q);
 }
 
+// At δ > 0 robust's static path is its CCD path (robust_ccd reads δ), as the twin's is.
+bool robust_static_query(const Query& q) {
+  return q.min_distance == 0 ? robust_static(q.b0(), q.b1(), q.d(), q.e(), q.f())
+                             : robust_moving(q);
+}
+
 Filtered robust_static_filter(const Query& q) {
+  if (q.min_distance > 0) return robust_ccd_filter(q);
   return robust_point_triangle_filter(q.b0(), q.b1(), q.d(), q.e(), q.f());
+}
+
+bool twin_static_query(const Query& q) {
+  return twin_hit(q, Decision::PointTriangle);
 }
 
 // A method of all three query decisions, the static one as a plain function.
@@ -144,12 +157,16 @@ std::vector<Method> built_in_methods(int gate_k) {
                           "CGAL/GMP exact tests (reference/): segment-triangle, CCD by Sturm "
                           "sequences; the exact twin of every query decision",
                           Promise::Exact, &exact::point_triangle_hit, &exact::ccd_hit);
+  twin.test[std::size_t(Decision::PointTriangle)] = &twin_static_query;
   twin.is_twin = true;
+  twin.answers_min_distance = true;
   twin.toi = {&twin_toi, &twin_toi};
   twin.time_promise = TimePromise::Enclosure;
   Method robust = all_kinds("robust", "floating-point filters with error bounds, exact fallback",
                             Promise::Exact, &robust_static, &robust_moving);
+  robust.test[std::size_t(Decision::PointTriangle)] = &robust_static_query;
   robust.filter = {&robust_static_filter, &robust_ccd_filter, &robust_ccd_filter};
+  robust.answers_min_distance = true;
   robust.toi = {&robust_toi, &robust_toi};
   robust.time_promise = TimePromise::Enclosure;
   Method float_cubic{"float-cubic",
@@ -159,6 +176,7 @@ std::vector<Method> built_in_methods(int gate_k) {
                      {&fdh::float_cubic, &fdh::float_cubic, &fdh::float_cubic},
                      {}};
   float_cubic.toi = {&float_cubic_time, &float_cubic_time};  // promises nothing: measured
+  float_cubic.answers_min_distance = true;  // the naive float baseline at δ > 0 (t30-fast)
   return {
       twin,
       robust,

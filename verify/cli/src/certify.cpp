@@ -6,6 +6,7 @@
 #include "budget_option.hpp"
 #include "corpus_option.hpp"
 #include "fdh/os/atomic_file.hpp"
+#include "min_distance_option.hpp"
 #include "plugin_option.hpp"
 #include "progress.hpp"
 #include "suite_commands.hpp"
@@ -38,6 +39,12 @@ under the method's promise, and counts every check:
     it is exact): counted per method; robust and the twin must change none,
     and each method with a promise (conservative or exact) must keep it on
     every transformed query, against the exact verdict the transform keeps.
+  - minimum separation (issue 30): the methods that answer δ > 0 (robust,
+    and plug-ins that declare it) against the exact δ twin, on the delta-
+    generator families (N/4 each, their truths known by construction) and on
+    every 8th corpus and fuzzed query asked again at δ (2^-20 of each query's
+    scale, or --min-distance D), with the metamorphic transforms (the scales
+    scale δ too); listed apart in the certificate.
 The queries: every *.vf under the corpus folder, N fuzzed queries of each
 generator family (static and moving), the narrow-phase queries of every
 shipped scene (CORPUS/scenes/*.scene run with robust; every 10th frame, or
@@ -75,6 +82,28 @@ void print_metamorphic(const Certificate& c, std::ostream& out) {
   print_judged_under_transforms(c, out);
 }
 
+// Two lines: the δ promises (violations / checked per method and decision) and the δ
+// metamorphic counts.
+void print_delta(const Certificate& c, std::ostream& out) {
+  const DeltaStage& d = c.delta;
+  if (!d.run) return;
+  out << "min-distance (δ = " << d.delta_words() << "; " << d.family_queries << " delta-family, "
+      << d.contact_queries << " contact queries at δ) promises (violations / checked):";
+  for (const PromiseCheck& p : d.promises)
+    out << " " << p.method << " " << to_string(p.decision) << " " << p.violations << "/"
+        << p.checked;
+  for (const TimePromiseCheck& p : d.times)
+    out << " " << p.method << " " << to_string(p.decision) << " " << p.tally.broken << "/"
+        << p.tally.checked;
+  out << "; truth " << d.truth_violations << "/" << d.truths << "\n";
+  out << "min-distance metamorphic (verdicts changed / transformed queries; promise broken / "
+         "judged):";
+  for (const MetamorphicCheck& m : d.metamorphic)
+    out << " " << m.method << " " << m.violations << "/" << m.checked << ", " << m.broken << "/"
+        << m.judged;
+  out << "\n";
+}
+
 // The first word of the summary line: what the certificate says.
 const char* verdict(const Certificate& c) {
   if (!c.first_violation.empty()) return "VIOLATED";
@@ -99,6 +128,7 @@ int run_certify(const CertifyCommand& cmd, const Io& io) {
          << " scene, " << c.extra_queries << " extra queries; " << c.options.soups
          << " soup pairs); wrote " << (dir / "certificate.md").string() << " and .json\n";
   print_metamorphic(c, io.out);
+  print_delta(c, io.out);
   if (c.certified()) return 0;
   if (c.first_violation.empty()) {
     io.err << "fdhcert: certify: the budget of " << opt.budget.seconds()
@@ -145,6 +175,10 @@ void add_certify_options(CLI::App& cmd, CertifyCommand& c) {
                  "--quick)")
       ->type_name("N")
       ->check(count);
+  add_min_distance_option(cmd, opt.min_distance,
+                          "the minimum-separation stage's δ for the contact queries it\n"
+                          "asks again (default: 2^-20 of each query's scale); 0 skips\n"
+                          "the stage");
   add_threads_option(cmd, c.threads, "the checks");
   add_quiet_flag(cmd, c.progress);
   cmd.add_option("EXTRA", opt.extra_files,

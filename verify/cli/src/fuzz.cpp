@@ -8,6 +8,7 @@
 #include "fdh/fuzz/fuzz.hpp"
 #include "fdh/gen/families.hpp"
 #include "fdh/os/atomic_file.hpp"
+#include "min_distance_option.hpp"
 #include "plugin_option.hpp"
 #include "progress.hpp"
 
@@ -53,8 +54,8 @@ contact time.)";
 const char* const kFuzzFooter =
     R"(The same seed and shard always give the same cases. Progress is saved in
 DIR/.fuzz/ as cases are done: a run killed and started again with the same
---method, --family, --seed, --count, --shard, --metamorphic and --toi (with
-its --width and --toi-tolerance; any --chunk and --threads)
+--method, --family, --seed, --count, --shard, --metamorphic, --min-distance
+and --toi (with its --width and --toi-tolerance; any --chunk and --threads)
 continues where it stopped and ends with exactly the cases of an uninterrupted
 run. A second run on DIR while one runs, or a run with other options while DIR
 holds an unfinished run, stops with exit status 2. On a terminal, a progress
@@ -70,7 +71,15 @@ struct FuzzCommandOptions {
 std::vector<std::string> every_family_name() {
   std::vector<std::string> names;
   for (const Family& f : all_families()) names.push_back(f.name);
+  for (const Family& f : delta_families()) names.push_back(f.name);
   return names;
+}
+
+// D as %.17g: the same double when read back.
+std::string round_trip_text(double d) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", d);
+  return text;
 }
 
 // "a, b, c" broken into lines of at most `width` characters.
@@ -134,6 +143,7 @@ void print_summary(const FuzzOptions& opt, const FuzzSummary& s, bool json, std:
                                 {"by_direction", s.by_class},
                                 {"distinct", s.distinct.size()},
                                 {"files", s.distinct}};
+    if (opt.min_distance > 0) j["min_distance"] = opt.min_distance;
     if (opt.budget.limited()) j["cut_by_budget"] = s.cut, j["shrinking_cut"] = s.shrink_cut;
     print_json(out, j);
     return;
@@ -145,8 +155,10 @@ void print_summary(const FuzzOptions& opt, const FuzzSummary& s, bool json, std:
       << (opt.metamorphic ? "--metamorphic "
           : opt.toi       ? "--toi "
                           : "")
-      << opt.method << " on " << opt.family << ", seed " << opt.seed << ", cases " << s.first
-      << ".." << s.last - 1 << " (shard " << shard << ")\n"
+      << opt.method << " on " << opt.family
+      << (opt.min_distance > 0 ? " at min-distance " + round_trip_text(opt.min_distance) : "")
+      << ", seed " << opt.seed << ", cases " << s.first << ".." << s.last - 1 << " (shard " << shard
+      << ")\n"
       << s.cases << " cases (" << s.resumed << " done by an earlier run), " << s.disagreements
       << found << s.distinct.size() << " distinct shrunk cases\n";
   if (!opt.metamorphic) out << opt.method << " by direction: " << by_direction(opt, s) << "\n";
@@ -237,6 +249,10 @@ Command add_fuzz(CLI::App& app) {
       ->type_name("T")
       ->check(CLI::Range(0.0, 1.0))
       ->needs(toi);
+  add_min_distance_option(*cmd, opt.min_distance,
+                          "ask every case at minimum separation D (a hit: within\n"
+                          "distance D at some time) instead of each case's own\n"
+                          "(contact, or a delta- family's D); the case files carry D");
   cmd->add_flag("--json", o->json, "print the summary as one JSON object");
   add_quiet_flag(*cmd, o->progress);
   return {cmd, [o](const Io& io) { return run_fuzz_command(*o, io); }};

@@ -40,10 +40,11 @@ int run_generate(const GenerateOptions& o, const Io& io) {
   AtomicFile file(o.file);  // written as generated, published whole by commit()
   std::ostream& os = file.stream();
   os << "# fdhcert generate " << o.family << " --count " << o.count << " --seed " << o.seed << "\n";
+  double min_distance = 0;  // the stream's δ: a δ family's cases each carry their own
   for (long i = 0; i < o.count; ++i) {
     QueryRecord r = generate(*family, case_seed(o.seed, i)).record();
     r.id = o.family + "/" + std::to_string(i);
-    write_native(os, r);
+    write_native(os, r, min_distance);
   }
   file.commit();
   io.out << "wrote " << o.count << " " << o.family << " queries to " << o.file << "\n";
@@ -57,6 +58,7 @@ Command add_generate(CLI::App& app) {
   CLI::App* cmd = add_command(app, "generate", kGenerateAbout, kGenerateFooter);
   std::vector<std::string> families;
   for (const Family& f : all_families()) families.push_back(f.name);
+  for (const Family& f : delta_families()) families.push_back(f.name);
   cmd->add_option("FAMILY", o->family, "a generator family (below)")
       ->required()
       ->check(one_of(families));

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -88,8 +89,11 @@ FuzzParams params_of(const FuzzOptions& opt, const Method& m, const Family& f) {
     throw std::invalid_argument("method '" + m.name + "' gives no time of impact");
   if (opt.toi && !(opt.toi_width > 0 && opt.toi_width <= 1 && opt.toi_tolerance >= 0))
     throw std::invalid_argument("--toi needs 0 < --width <= 1 and --toi-tolerance >= 0");
+  if (!(opt.min_distance >= 0 && std::isfinite(opt.min_distance)))
+    throw std::invalid_argument("--min-distance needs a finite D >= 0");
   FuzzParams p{m.name, f.name, opt.seed, opt.count, opt.shard, opt.shards, opt.metamorphic};
   if (opt.toi) p.toi = true, p.width = opt.toi_width, p.tolerance = opt.toi_tolerance;
+  p.min_distance = opt.min_distance + 0.0;  // -0 is 0
   return p;
 }
 
@@ -148,7 +152,14 @@ struct Run {
     }
   }
 
-  std::string finding(const Generated& g) const {
+  // The case at the run's δ: a case drawn, each shrink of it, and the case stored.
+  Generated at_delta(Generated g) const {
+    if (params.min_distance > 0) g.query.min_distance = params.min_distance;
+    return g;
+  }
+
+  std::string finding(const Generated& drawn) const {
+    const Generated g = at_delta(drawn);
     const QueryRecord r = g.record();
     const RecordScope asking(r);  // a plug-in's crash names the family
     return target.finding(g.query);
@@ -160,15 +171,18 @@ struct Run {
   // simpler case is taken (`cut`): the case stays as far as it shrank.
   std::optional<Generated> shrunk_case(long i, bool& cut) const {
     std::string drawn;  // shrunk_failure asks first about the case drawn
-    return shrunk_failure(generator, case_seed(opt.seed, i), [&](const Generated& x) {
-      if (!drawn.empty() && opt.budget.spent()) {
-        cut = true;
-        return false;
-      }
-      const std::string f = finding(x);
-      if (drawn.empty()) drawn = f;
-      return !f.empty() && f == drawn;
-    });
+    const std::optional<Generated> g =
+        shrunk_failure(generator, case_seed(opt.seed, i), [&](const Generated& x) {
+          if (!drawn.empty() && opt.budget.spent()) {
+            cut = true;
+            return false;
+          }
+          const std::string f = finding(x);
+          if (drawn.empty()) drawn = f;
+          return !f.empty() && f == drawn;
+        });
+    if (!g) return g;
+    return at_delta(*g);
   }
 
   // Runs cases [r.begin, r.end), writes their case files, then the marker of the cases run:

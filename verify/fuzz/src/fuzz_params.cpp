@@ -45,14 +45,15 @@ bool parse_shard(const std::string& text, FuzzParams& p) {
 bool FuzzParams::operator==(const FuzzParams& o) const {
   return method == o.method && family == o.family && seed == o.seed && count == o.count &&
          shard == o.shard && shards == o.shards && metamorphic == o.metamorphic && toi == o.toi &&
-         (!toi || (width == o.width && tolerance == o.tolerance));
+         (!toi || (width == o.width && tolerance == o.tolerance)) && min_distance == o.min_distance;
 }
 
 std::string FuzzParams::folder_name() const {
   const std::string mode = metamorphic ? "metamorphic."
                            : toi       ? "toi.w" + hex(width) + ".tol" + hex(tolerance) + "."
                                        : "";
-  return mode + method + "." + family + ".seed" + std::to_string(seed) + ".count" +
+  const std::string delta = min_distance != 0 ? "d" + hex(min_distance) + "." : "";
+  return delta + mode + method + "." + family + ".seed" + std::to_string(seed) + ".count" +
          std::to_string(count) + ".shard" + std::to_string(shard + 1) + "of" +
          std::to_string(shards);
 }
@@ -62,7 +63,9 @@ std::string FuzzParams::options() const {
       metamorphic ? "--metamorphic "
       : toi       ? "--toi --width " + hex(width) + " --toi-tolerance " + hex(tolerance) + " "
                   : "";
-  return mode + std::string("--method ") + method + " --family " + family + " --seed " +
+  const std::string delta =
+      min_distance != 0 ? "--min-distance " + hex(min_distance) + " " : std::string();
+  return delta + mode + std::string("--method ") + method + " --family " + family + " --seed " +
          std::to_string(seed) + " --count " + std::to_string(count) + " --shard " +
          std::to_string(shard + 1) + "/" + std::to_string(shards);
 }
@@ -80,6 +83,7 @@ Manifest FuzzParams::manifest() const {
     m.entries.emplace_back("width", hex(width));
     m.entries.emplace_back("toi-tolerance", hex(tolerance));
   }
+  if (min_distance != 0) m.entries.emplace_back("min-distance", hex(min_distance));
   return m;
 }
 
@@ -105,6 +109,8 @@ std::optional<FuzzParams> FuzzParams::of(const Manifest& m) {
       if (!parse_hex(value, p.width)) return std::nullopt;
     } else if (key == "toi-tolerance") {
       if (!parse_hex(value, p.tolerance)) return std::nullopt;
+    } else if (key == "min-distance") {
+      if (!parse_hex(value, p.min_distance) || !(p.min_distance > 0)) return std::nullopt;
     } else {
       return std::nullopt;
     }

@@ -18,6 +18,7 @@ struct FuzzParams {
   bool metamorphic = false;   // recorded only when set: older manifests stay valid
   bool toi = false;           // so is the TOI mode, with its width and tolerance
   double width = 0, tolerance = 0;
+  double min_distance = 0;  // δ; recorded only when not 0, so older manifests stay valid
 
   bool operator==(const FuzzParams& o) const;
   // The run's folder under OUT/.fuzz: method.family.seedS.countN.shardIofS, prefixed

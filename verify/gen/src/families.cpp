@@ -22,8 +22,15 @@ const std::vector<Family>& all_families() {
   return all;
 }
 
+const std::vector<Family>& delta_families() {
+  static const std::vector<Family> all = min_distance_families();
+  return all;
+}
+
 const Family* family_named(const std::string& name) {
   for (const Family& f : all_families())
+    if (f.name == name) return &f;
+  for (const Family& f : delta_families())
     if (f.name == name) return &f;
   return nullptr;
 }

@@ -76,6 +76,8 @@ void change_frame(const Query& q, std::vector<Query>& out) {
     bool exact = s != 0 && top > 0;
     for (Vec3& p : c.x)
       for (int a = 0; a < 3 && exact; ++a) exact = scale_exactly(p[a], s, coord(p, a));
+    // δ is a distance: it scales with the points, so the question stays the same.
+    exact = exact && scale_exactly(q.min_distance, s, c.min_distance);
     if (exact) out.push_back(std::move(c));
   }
 }

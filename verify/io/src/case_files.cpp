@@ -17,6 +17,8 @@ std::string case_hash(const Query& q) {
   h.add(q.kind == QueryKind::VertexFace ? 1 : 2);
   for (const Vec3& p : q.x)
     for (int c = 0; c < 3; ++c) h.add_coordinate(p[c]);
+  // Only at δ > 0: every case stored before δ existed keeps its name.
+  if (q.min_distance != 0) h.add_coordinate(q.min_distance);
   return h.hex();
 }
 

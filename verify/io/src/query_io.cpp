@@ -161,11 +161,39 @@ std::optional<double> parse_double(const std::string& token, std::string& why) {
   return v;
 }
 
+std::optional<double> parse_min_distance(const std::string& token, std::string& why) {
+  const std::optional<double> d = parse_double(token, why);
+  if (!d) return std::nullopt;
+  if (*d < 0) {
+    why = quote(token) + " is negative: a minimum distance is >= 0";
+    return std::nullopt;
+  }
+  return *d + 0.0;  // -0 is 0
+}
+
+namespace {
+
+// A `min-distance D` line: D for the queries after it (docs/formats.md).
+double read_min_distance_line(const std::vector<std::string>& tok, const std::string& path,
+                              long lineno) {
+  if (tok.size() != 2)
+    throw InputError(path, lineno,
+                     "expected 'min-distance D', found " + std::to_string(tok.size() - 1) +
+                         " fields after 'min-distance'");
+  std::string why;
+  const std::optional<double> d = parse_min_distance(tok[1], why);
+  if (!d) throw InputError(path, lineno, "min-distance: " + why);
+  return *d;
+}
+
+}  // namespace
+
 std::vector<QueryRecord> read_native(const std::string& path) {
   InputFile in(path);
   const long long max_queries = bound_value(kMaxQueries);
   std::vector<QueryRecord> out;
   std::string line;
+  double min_distance = 0;  // until a `min-distance` line says otherwise
   try {
     while (in.next(line)) {
       const long lineno = in.line();
@@ -173,8 +201,13 @@ std::vector<QueryRecord> read_native(const std::string& path) {
       if (hash != std::string::npos) line.resize(hash);
       const std::vector<std::string> tok = split(line, ' ');
       if (tok.empty()) continue;
+      if (tok[0] == "min-distance") {
+        min_distance = read_min_distance_line(tok, path, lineno);
+        continue;
+      }
       QueryRecord r;
       Query& q = r.query;
+      q.min_distance = min_distance;
       if (tok[0] == "vf") {
         q.kind = QueryKind::VertexFace;
       } else if (tok[0] == "ee") {
@@ -302,7 +335,13 @@ std::vector<QueryRecord> read_query_file(const std::string& path, std::optional<
   return read_benchmark_csv(path, *kind);
 }
 
-void write_native(std::ostream& os, const QueryRecord& r) {
+void write_native(std::ostream& os, const QueryRecord& r, double& min_distance) {
+  if (r.query.min_distance != min_distance) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "min-distance %a\n", r.query.min_distance);
+    os << buf;
+    min_distance = r.query.min_distance;
+  }
   os << (r.query.kind == QueryKind::VertexFace ? "vf " : "ee ") << r.id;
   char buf[64];
   for (const Vec3& p : r.query.x)
@@ -312,6 +351,15 @@ void write_native(std::ostream& os, const QueryRecord& r) {
     }
   if (r.has_truth()) os << ' ' << (r.truth == Truth::Yes ? 1 : 0);
   os << '\n';
+}
+
+}  // namespace fdh::verify
+
+namespace fdh::verify {
+
+void write_native(std::ostream& os, const QueryRecord& r) {
+  double min_distance = 0;  // a stream of its own starts at 0
+  write_native(os, r, min_distance);
 }
 
 }  // namespace fdh::verify

@@ -41,6 +41,9 @@ struct CertifyOptions {
   int scene_stride = -1;
   std::vector<std::string> extra_files;
   double toi_width = kDefaultToiWidth;  // the enclosure width asked of the times of impact
+  // The minimum-separation stage (issue 30): D > 0 asks its contact queries at δ = D; a
+  // negative value (the default) at δ = 2^-20 of each query's scale; 0 skips the stage.
+  double min_distance = -1;
   // Hears the work as it goes: the stage ("corpus", "generator families", "scenes", ...), how
   // much of it is done and of how much (0: unknown). May be empty.
   ProgressSink progress;
@@ -92,6 +95,29 @@ struct MetamorphicCheck {
   bool held() const { return promise == Promise::Exact; }
 };
 
+// The minimum-separation stage (issue 30): the promised methods that answer δ > 0
+// (Method::answers_min_distance) against the exact δ twin, on the delta- families' queries
+// (each at its own δ, its truth known by construction) and on contact queries asked again at
+// δ (every 8th query of the corpus and of each family's first cases): verdicts, times and
+// the metamorphic transforms (which scale δ with the query).
+struct DeltaStage {
+  bool run = false;
+  double min_distance = -1;  // CertifyOptions::min_distance: < 0 relative to each query
+  long family_queries = 0;   // the delta- families' queries checked
+  long contact_queries = 0;  // contact queries asked again at δ
+  std::vector<std::string> families;
+  std::vector<PromiseCheck> promises;
+  std::vector<TimePromiseCheck> times;
+  long truths = 0, truth_violations = 0;
+  std::vector<MetamorphicCheck> metamorphic;
+  std::vector<TransformCount> metamorphic_transforms;
+
+  long checks() const;
+  long violations() const;
+  // "2^-20 of each query's scale" or "1e-06"
+  std::string delta_words() const;
+};
+
 struct Certificate {
   CertifyOptions options;
   std::string commit, cgal, gmp;
@@ -110,6 +136,7 @@ struct Certificate {
   // The own k-DOPs beside the peer libraries' boxes (peers.hpp); shrunk cases in out_dir/peers/,
   // stored ones replayed from corpus_dir/peers/. Only the own rows count as checks here.
   PeersReport peers;
+  DeltaStage delta;             // the minimum-separation stage; its checks count in checks() too
   std::string first_violation;  // what went wrong first, and the file it was saved to
   // The stages the budget cut short, in run order: how far each got. Not empty: the checks
   // above cover part of the inputs only, and the certificate certifies nothing.

@@ -12,7 +12,7 @@ namespace fdh::verify {
 struct TwinContact {
   bool hit = false;
   // A static query's contact kind ("face", "edge", "vertex", "in-plane", "none"); "" for a
-  // moving one (CCD gives no kind).
+  // moving one, and for any query at δ > 0 (CCD gives no kind).
   std::string kind;
   // The earliest contact lies in [time_lo, time_hi], exact fractions ("p/q"), equal when the
   // time is rational (always for a static query); "" without a hit.

@@ -11,7 +11,9 @@
 // the five other orders of the axes, a mirror, common dyadic translations from 2^-60 to 2^60, a
 // common velocity (added to the end positions), scaling by powers of two from 2^-60 to 2^60, and
 // relabelling: a triangle's corners turned or flipped, an edge's ends swapped, the two edges
-// swapped.
+// swapped. A query's minimum separation δ (Query::min_distance) is a distance: the scales
+// multiply it by their power of two (skipped where that is not exact, as for the points), every
+// other transform keeps it (time reversal keeps the verdict, not t*_δ).
 #pragma once
 
 #include <functional>

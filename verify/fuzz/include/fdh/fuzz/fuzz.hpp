@@ -21,7 +21,8 @@
 //                   live run owns anything in it). A user's files,
 //                   whatever their names, are never removed.
 //   RUN/manifest    RUN is method.family.seedS.countN.shardIofS (prefixed "metamorphic." or
-//                   "toi.wW.tolT." in those modes); the manifest records those parameters and
+//                   "toi.wW.tolT." in those modes, and "dD." at --min-distance D > 0, D in
+//                   hex-float); the manifest records those parameters and
 //                   the mode (with --toi its width and tolerance), and is written before any case.
 //   RUN/cases-B-E   done-marker of cases [B, E): `<disagreements> <case file>...`. Markers name
 //                   case ranges, not chunk numbers, so a run resumed with any --chunk or
@@ -57,6 +58,10 @@ struct FuzzOptions {
   double toi_width = 0x1p-30;     // the enclosure width asked (fdh/ccd/toi.hpp kDefaultToiWidth)
   double toi_tolerance = 0.1;     // fdh/check/checker.hpp kDefaultToiTolerance
   std::string family = "angled";  // any family, static or moving (fdh/gen/families.hpp)
+  // The minimum separation δ every case is asked at (Query::min_distance): 0 keeps each case's
+  // own (contact, or a delta- family's δ); D > 0 asks every case drawn, and every shrunk one,
+  // at δ = D, and the case files say so. Part of the run's parameters when not 0.
+  double min_distance = 0;
   std::uint64_t seed = 1;
   long count = 10000;  // cases in the whole run, over all shards
   int shard = 0;       // this process runs shard `shard` of `shards` (0-based)

@@ -45,7 +45,12 @@ struct Family {
 // draws the j-th family from stream j).
 const std::vector<Family>& all_families();
 
-// The family of that name, or nullptr.
+// The minimum-separation families (issue 30; names "delta-..."): every case at δ > 0
+// (Query::min_distance), D or D (1 ± 2^-40) where the construction knows the minimum distance D
+// exactly, with its truth. Apart from all_families(), whose cases all ask for contact.
+const std::vector<Family>& delta_families();
+
+// The family of that name (all_families() or delta_families()), or nullptr.
 const Family* family_named(const std::string& name);
 
 // The names of the static (moving = false) or of the moving families, in registry order.

@@ -30,7 +30,8 @@ Simplicity simplicity_of(const Query& q);
 
 // The simpler queries tried from q, in the order tried: motion first, then the frame (velocity,
 // translation, scale), then single coordinates. Each keeps q's kind and is exact: a translation
-// or scale that would round a coordinate is not offered. Not all are simpler than q.
+// or scale that would round a coordinate is not offered; a scale scales δ (min_distance) with
+// the points, every other change keeps it. Not all are simpler than q.
 std::vector<Query> simplifications(const Query& q);
 
 // q simplified greedily while `fails` holds, at most `max_evaluations` calls of `fails`. q itself

@@ -9,7 +9,7 @@
 
 namespace fdh::verify {
 
-// 16 hex digits (FNV-1a over the 24 coordinates' bits and the kind).
+// 16 hex digits (FNV-1a over the kind, the 24 coordinates' bits and, when not 0, δ's bits).
 std::string case_hash(const Query& q);
 
 // `# comment` lines, then the record as a native line (hex-float, truth included).

@@ -36,7 +36,9 @@ class InputFile {
   long long bytes_ = 0, max_line_ = 0, max_bytes_ = 0;
 };
 
-// Native: `vf|ee <id> <24 numbers> [truth]` per line, `#` comments. Throws InputError.
+// Native: `vf|ee <id> <24 numbers> [truth]` per line, `#` comments, and `min-distance D` lines:
+// the minimum separation δ (Query::min_distance) of the queries after it, 0 before the first.
+// Throws InputError.
 std::vector<QueryRecord> read_native(const std::string& path);
 
 // Benchmark CSV: 8 rows per query of `xn,xd,yn,yd,zn,zd,truth`. Every rational must be exactly a
@@ -54,10 +56,19 @@ std::vector<QueryRecord> read_query_file(const std::string& path,
                                          std::optional<QueryKind> kind = std::nullopt);
 
 // One native line, coordinates in hex-float so that reading it back gives the same doubles.
+// `min_distance` is the δ the stream is at (0 where it starts): a `min-distance D` line (D in
+// hex-float) comes first when the query's δ differs from it, and it is set to the query's.
+void write_native(std::ostream& os, const QueryRecord& r, double& min_distance);
+// The same for a stream that starts here (a case file, a line of a message): the
+// `min-distance` line only when the query's δ is not 0. A stream of several records mixing
+// δ values takes the form above.
 void write_native(std::ostream& os, const QueryRecord& r);
 
 // Parses one number of the native format: decimal (correctly rounded) or hex-float, finite.
 // Returns nullopt and sets `why` (the token quoted, see quote()) when it is not one.
 std::optional<double> parse_double(const std::string& token, std::string& why);
+// A minimum distance δ as the native format and the command lines take it: parse_double's
+// number, not negative (-0 is 0).
+std::optional<double> parse_min_distance(const std::string& token, std::string& why);
 
 }  // namespace fdh::verify
