@@ -1,18 +1,6 @@
 #include "budget_option.hpp"
 
 namespace fdh::verify {
-namespace {
-
-Budget::Clock::time_point& run_start() {
-  static Budget::Clock::time_point start = Budget::Clock::now();
-  return start;
-}
-
-}  // namespace
-
-void mark_run_start() {
-  run_start() = Budget::Clock::now();
-}
 
 CLI::Option* add_budget_option(CLI::App& cmd, Budget& budget, const std::string& what) {
   return cmd

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "budget_option.hpp"
-#include "corpus_option.hpp"
+#include "fdh/certify/corpus_folder.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "plugin_option.hpp"
 #include "progress.hpp"

@@ -28,13 +28,9 @@
 
 #include "fdh/check/registry.hpp"
 #include "fdh/io/query_record.hpp"
+#include "fdh/io/usage_error.hpp"  // UsageError, for every command
 
 namespace fdh::verify {
-
-// A wrong command line found after parsing: printed as "fdhcert: <what>", exit status 2.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // Where a command prints.
 struct Io {
@@ -92,14 +88,6 @@ std::string quoted_input(std::string_view s, std::size_t shown = 80);
 
 // --seed S: 0 to 2^62.
 CLI::Option* add_seed_option(CLI::App& cmd, std::uint64_t& seed, const std::string& help);
-
-// The named methods (all of them for an empty list); an unknown name or gate is a UsageError.
-std::vector<Method> methods_named(const std::vector<std::string>& names, int gate_k = 0);
-
-// A record's FILE:LINE, for messages.
-inline std::string where(const QueryRecord& q) {
-  return q.file + ":" + std::to_string(q.line);
-}
 
 // Every JSON output: one object, two-space indented, then a newline.
 void print_json(std::ostream& os, const nlohmann::ordered_json& j);

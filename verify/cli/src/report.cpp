@@ -5,7 +5,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "corpus_option.hpp"
+#include "fdh/certify/corpus_folder.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/report/report_document.hpp"
 #include "fdh/report/report_summary.hpp"
