@@ -9,8 +9,6 @@
 #include "fdh/io/json_text.hpp"
 #include "fdh/io/mesh_sequence.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "progress.hpp"
-#include "threads_option.hpp"
 
 namespace fdh::verify {
 namespace {

@@ -5,12 +5,10 @@
 #include <optional>
 #include <sstream>
 
-#include "budget_option.hpp"
 #include "commands.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/os/standard_output.hpp"
 #include "fdh/plugin/loader.hpp"
-#include "plugin_option.hpp"
 #include "suite_commands.hpp"
 
 namespace fdh::verify {

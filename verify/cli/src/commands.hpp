@@ -27,8 +27,11 @@
 #include <vector>
 
 #include "fdh/check/registry.hpp"
-#include "fdh/io/query_record.hpp"
+#include "fdh/check/thread_limit.hpp"
 #include "fdh/io/usage_error.hpp"  // UsageError, for every command
+#include "fdh/os/budget.hpp"
+#include "fdh/os/progress_line.hpp"
+#include "fdh/plugin/loader.hpp"  // PluginScope: the plug-ins last for one run
 
 namespace fdh::verify {
 
@@ -91,5 +94,33 @@ CLI::Option* add_seed_option(CLI::App& cmd, std::uint64_t& seed, const std::stri
 
 // Every JSON output: one object, two-space indented, then a newline.
 void print_json(std::ostream& os, const nlohmann::ordered_json& j);
+
+// --- How a run runs (run_options.cpp) -------------------------------------------------------
+
+// --quiet and --progress WHEN on a long command, into `when` (--quiet: Never).
+CLI::Option* add_quiet_flag(CLI::App& cmd, ProgressWhen& when);
+// How progress should show on the command's standard error (fdh/os/progress_line.hpp).
+inline ProgressShow progress_wanted(const Io& io, ProgressWhen when) {
+  return progress_wanted(io.err, when);
+}
+// --quiet given: none; else as --progress auto.
+inline ProgressShow progress_wanted(const Io& io, bool quiet) {
+  return progress_wanted(io.err, quiet ? ProgressWhen::Never : ProgressWhen::Auto);
+}
+
+// --threads N in [1, 1024] (default 0: every core) for ThreadLimit; `what` names the loops
+// ("the step").
+CLI::Option* add_threads_option(CLI::App& cmd, int& threads, const std::string& what);
+
+// --budget SECONDS (0 < SECONDS <= 10^7) into `budget`, counted from run_start() (run_cli marks
+// it first); `what` says what it stops.
+CLI::Option* add_budget_option(CLI::App& cmd, Budget& budget, const std::string& what);
+
+// --plugin FILE[:SETTINGS], repeatable: loads the plug-in (fdh/plugin/loader.hpp) the moment it
+// is parsed, so that --methods and --method, checked when parsing ends, know its methods. A
+// plug-in that cannot be loaded, a malformed argument (fdh/plugin/plugin_argument.hpp) or
+// refused settings are a UsageError (exit 2); one that fails its probe, a PluginFailure (exit 3).
+// Also adds --plugin-timeout SECONDS (fdh/plugin/loader.hpp set_plugin_timeout).
+CLI::Option* add_plugin_option(CLI::App& cmd);
 
 }  // namespace fdh::verify

@@ -5,9 +5,7 @@
 
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/peer_certify/peer_certify.hpp"
-#include "progress.hpp"
 #include "suite_commands.hpp"
-#include "threads_option.hpp"
 
 namespace fdh::verify {
 namespace {

@@ -16,8 +16,6 @@
 #include "fdh/scene/scene_outputs.hpp"
 #include "fdh/scene/scene_report.hpp"
 #include "fdh/scene/scene_run.hpp"
-#include "progress.hpp"
-#include "threads_option.hpp"
 
 namespace fdh::verify {
 namespace {
