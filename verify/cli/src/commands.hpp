@@ -78,12 +78,6 @@ CLI::Option* add_number_option(CLI::App& cmd, const std::string& name, T& value,
                                const std::string& help, const std::string& type_name, T lo, T hi) {
   return cmd.add_option(name, value, help)->type_name(type_name)->check(CLI::Range(lo, hi));
 }
-// fuzz's bounds: --count N' <= 10^12 and --shard I/N with N <= 10^6, so that N' * N (the
-// shard arithmetic of fuzz/src/fuzz.cpp) stays below 10^18 < 2^63 - 1.
-constexpr long kMaxFuzzCount = 1'000'000'000'000L;
-constexpr long kMaxFuzzShards = 1'000'000L;
-constexpr long kMaxGeneratedQueries = 100'000'000L;  // generate --count
-static_assert(kMaxFuzzCount <= INT64_MAX / (kMaxFuzzShards + 1), "count * shard overflows");
 
 // `s` for a message: in quotes, at most about 80 characters (then "..." and its length),
 // control bytes and non-ASCII bytes escaped as \xNN.

@@ -1,20 +1,13 @@
 // fdhcert simulate: one scene, frame by frame, timed and checked.
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <filesystem>
 #include <memory>
 #include <optional>
 
 #include "commands.hpp"
 #include "fdh/io/query_io.hpp"
-#include "fdh/io/scene_file.hpp"
-#include "fdh/io/scene_output.hpp"
 #include "fdh/io/scene_schema.hpp"
-#include "fdh/kdop.hpp"
-#include "fdh/os/atomic_file.hpp"
 #include "fdh/scene/scene_outputs.hpp"
-#include "fdh/scene/scene_report.hpp"
 #include "fdh/scene/scene_run.hpp"
 
 namespace fdh::verify {
@@ -46,32 +39,19 @@ Exit status: 0; 2 for bad input. A scene error names the file and line.)";
 struct SimulateOptions {
   std::string scene_path;
   SceneOutputFiles files;
-  int grid = 0;           // 0: the scene's
-  std::string thickness;  // "": the scene's
-  std::string self;       // "on", "off" or "": the scene's
+  SceneOverrides scene;  // --grid, --thickness, --self
   bool json = false, no_check = false;
   ProgressWhen progress = ProgressWhen::Auto;
   int threads = 0;  // 0: every core
   SceneRunOptions run;
 };
 
-// The scene with the command line's overrides.
-cloth::Scene read_scene_as_asked(const SimulateOptions& o) {
-  cloth::Scene scene = read_scene(o.scene_path);
-  if (o.grid) scene.cloth.grid = o.grid;
-  std::string why;
-  if (!o.thickness.empty()) scene.thickness = *parse_double(o.thickness, why);  // checked
-  if (!o.self.empty()) scene.self_collision = o.self == "on";
-  if (o.grid || !o.thickness.empty()) check_scene(scene, o.scene_path);  // the overrides too
-  return scene;
-}
-
 int run_simulate(SimulateOptions& o, const Io& io) {
   o.files.scene_path = o.scene_path;
   o.files.check();
   const ThreadLimit threads(o.threads);
   o.run.check = !o.no_check;
-  const cloth::Scene scene = read_scene_as_asked(o);
+  const cloth::Scene scene = read_scene_overridden(o.scene_path, o.scene);
   const int frames = o.run.frames < 0 ? scene.frames : o.run.frames;
   SceneOutputs outputs(o.files, scene, frames);
   ProgressLine progress(io.err, progress_wanted(io, o.progress));
@@ -108,7 +88,7 @@ CLI::Validator scene_value_validator(const char* field) {
 
 void add_scene_options(CLI::App& cmd, SimulateOptions& o) {
   cmd.add_option("SCENE", o.scene_path, "a .scene file (corpus/scenes/)")->required();
-  cmd.add_option("--grid", o.grid, "particles per side (default: the scene's)")
+  cmd.add_option("--grid", o.scene.grid, "particles per side (default: the scene's)")
       ->type_name("N")
       ->check(scene_value_validator("grid"));
   cmd.add_option("--frames", o.run.frames, "frames to run (default: the scene's)")
@@ -121,12 +101,12 @@ void add_scene_options(CLI::App& cmd, SimulateOptions& o) {
   cmd.add_option("--k", o.run.k, "the FDH's k: 6, 14, 18 (default) or 26")
       ->type_name("K")
       ->check(kdop_k_validator(false));
-  cmd.add_option("--thickness", o.thickness,
+  cmd.add_option("--thickness", o.scene.thickness,
                  "the collision skin in m (default: the scene's; 0 collides\n"
                  "with the obstacles' own surfaces, see docs/cloth.md)")
       ->type_name("T")
       ->check(scene_value_validator("thickness"));
-  cmd.add_option("--self", o.self,
+  cmd.add_option("--self", o.scene.self,
                  "the cloth against itself: moving vertex-face and edge-edge\n"
                  "tests with robust CCD among primitives sharing no particle\n"
                  "(default: the scene's self_collision, else off)")

@@ -6,6 +6,8 @@
 
 namespace fdh::verify {
 
+constexpr long kMaxGeneratedQueries = 100'000'000L;  // generate --count
+
 // Writes `count` queries of the family named `family` (families.hpp, a known name) to `path` in
 // the native format, whole (fdh/os/atomic_file.hpp): a comment line with the command, then case
 // i from the seed (seed, i) as in fuzz, with id FAMILY/i and the truth where the construction
