@@ -21,7 +21,6 @@
 #include <functional>
 #include <nlohmann/json_fwd.hpp>
 #include <ostream>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
