@@ -47,7 +47,7 @@ install(FILES ${PROJECT_BINARY_DIR}/fdhcertConfig.cmake
 
 # The corpus that `certify` and `report` read, installed as data (issue 24): their --corpus
 # default finds it from the program's folder when ./corpus is not there
-# (verify/cli/src/corpus_option.cpp), so an installed fdhcert certifies from any folder.
+# (verify/certify/src/corpus_folder.cpp), so an installed fdhcert certifies from any folder.
 if(FDH_BUILD_VERIFY)
   set(FDH_CORPUS_INSTALL_DIR ${CMAKE_INSTALL_DATADIR}/fdhcert/corpus)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/corpus/ DESTINATION ${FDH_CORPUS_INSTALL_DIR})
@@ -56,7 +56,7 @@ if(FDH_BUILD_VERIFY)
   else()
     file(RELATIVE_PATH fdh_corpus_from_bindir /${CMAKE_INSTALL_BINDIR} /${FDH_CORPUS_INSTALL_DIR})
   endif()
-  target_compile_definitions(fdh_cli PRIVATE FDH_CORPUS_FROM_BINDIR="${fdh_corpus_from_bindir}")
+  target_compile_definitions(fdh_certify PRIVATE FDH_CORPUS_FROM_BINDIR="${fdh_corpus_from_bindir}")
   if(NOT FDH_FUZZERS)
     include(man_page)
   endif()

@@ -1,7 +1,5 @@
-// The progress line: drawn and erased on a terminal, absent otherwise; every long command takes
-// --quiet and prints no progress when its standard error is not a terminal (here: a string).
-#include "../../../verify/cli/src/progress.hpp"
-
+// --quiet and --progress: every long command takes --quiet and prints no progress when its
+// standard error is not a terminal (here: a string); --progress takes auto, always or never.
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -11,35 +9,6 @@
 
 namespace fdh::verify {
 namespace {
-
-TEST(Progress, ALineShowsStageCountTotalAndIsErased) {
-  std::ostringstream err;
-  {
-    ProgressLine line(err, true);
-    line.draw({"certify: generator families", 100, 4800, "queries"});
-    line.draw({"certify: scene table", 10, 600, "frames", "now frame 10"});
-    EXPECT_NE(err.str().find("\rcertify: generator families: 100 of 4800 queries"),
-              std::string::npos);
-    EXPECT_NE(err.str().find("certify: scene table: 10 of 600 frames, now frame 10"),
-              std::string::npos);
-  }
-  const std::string all = err.str();
-  EXPECT_EQ(all.back(), '\r');  // erased when it goes, the cursor back at the line's start
-  EXPECT_EQ(all.find('\n'), std::string::npos);  // never a line of its own
-}
-
-TEST(Progress, NothingWhenNotShown) {
-  std::ostringstream err;
-  {
-    ProgressLine line(err, false);
-    line.draw({"simulate", 1, 2, "frames"});
-    line.clear();
-  }
-  EXPECT_EQ(err.str(), "");
-  std::ostringstream out;
-  EXPECT_EQ(progress_wanted({out, err}, false),
-            ProgressShow::None);  // not the process's own stderr
-}
 
 TEST(Progress, LongCommandsTakeQuietAndPrintNoProgressOffATerminal) {
   const std::string dir = fresh_temp_dir("progress").string();
@@ -58,6 +27,7 @@ TEST(Progress, LongCommandsTakeQuietAndPrintNoProgressOffATerminal) {
     const CliRun help = fdhcert({cmd, "--help"});
     EXPECT_NE(help.out.find("--quiet"), std::string::npos) << cmd;
   }
+  EXPECT_EQ(fdhcert({"simulate", "--progress", "sometimes"}).status, 2);
 }
 
 }  // namespace

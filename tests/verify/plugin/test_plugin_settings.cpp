@@ -13,10 +13,10 @@
 #include <sstream>
 #include <thread>
 
-#include "../../../verify/cli/src/plugin_option.hpp"
-#include "../../../verify/cli/src/progress.hpp"
 #include "cli_run.hpp"
+#include "fdh/io/usage_error.hpp"
 #include "fdh/os/child_process.hpp"
+#include "fdh/plugin/plugin_argument.hpp"
 #include "fdhcert_process.hpp"
 #include "temp_dir.hpp"
 #include "test_data.hpp"
@@ -224,31 +224,6 @@ TEST(PluginBudget, FuzzStopsShrinkingAndResumes) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(has(r.out, "20 cases (")) << r.out;
   EXPECT_FALSE(has(r.out, "budget of")) << r.out;
-}
-
-TEST(Progress, LinesOffATerminalWithProgressAlways) {
-  std::ostringstream err;
-  {
-    ProgressLine line(err, ProgressShow::Lines);
-    line.draw({"certify: corpus", 1, 12, "files"});
-    line.draw({"certify: corpus", 2, 12, "files"});  // within kLineSeconds: not repeated
-    line.draw({"certify: generator families", 0, 4800, "queries"});  // a new stage: a line
-  }
-  const std::string all = err.str();
-  EXPECT_EQ(all.find('\r'), std::string::npos);
-  EXPECT_TRUE(has(all, "certify: corpus: 1 of 12 files [0 s]\n")) << all;
-  EXPECT_FALSE(has(all, "2 of 12")) << all;
-  EXPECT_TRUE(has(all, "certify: generator families: 0 of 4800 queries [0 s]\n")) << all;
-  std::ostringstream quiet;
-  {
-    ProgressLine line(quiet, ProgressShow::LinesWhenSlow);  // nothing in a run's first 10 s
-    line.draw({"certify: corpus", 1, 12, "files"});
-  }
-  EXPECT_EQ(quiet.str(), "");
-  std::ostringstream out;
-  EXPECT_EQ(progress_wanted({out, err}, ProgressWhen::Always), ProgressShow::Lines);
-  EXPECT_EQ(progress_wanted({out, err}, ProgressWhen::Auto), ProgressShow::None);
-  EXPECT_EQ(fdhcert({"simulate", "--progress", "sometimes"}).status, 2);
 }
 
 }  // namespace

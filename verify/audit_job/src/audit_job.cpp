@@ -9,10 +9,10 @@
 #include <stdexcept>
 
 #include "fdh/io/input_error.hpp"
+#include "fdh/io/json_text.hpp"
 #include "fdh/io/query_io.hpp"
 #include "fdh/kdop.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/io/json_text.hpp"
 #include "violation_picture.hpp"
 
 namespace fdh::verify {
@@ -47,6 +47,15 @@ nlohmann::ordered_json AuditResult::to_json() const {
 
 std::string AuditResult::text() const {
   return report_.text();
+}
+
+std::string AuditResult::written_text(const std::string& dir) const {
+  std::string text =
+      fmt::format("certificate    {0}/audit.json, {0}/audit.md{1}\n", dir,
+                  report_.clean() ? "" : fmt::format(", {}/first-violation.png", dir));
+  if (!report_.case_records().empty())
+    text += fmt::format("case files     {}/cases/*.vf ({})\n", dir, report_.case_records().size());
+  return text;
 }
 
 void AuditResult::write(const std::string& dir) const {

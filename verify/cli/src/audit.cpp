@@ -6,11 +6,9 @@
 
 #include "commands.hpp"
 #include "fdh/audit_job/audit_job.hpp"
+#include "fdh/io/json_text.hpp"
 #include "fdh/io/mesh_sequence.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/io/json_text.hpp"
-#include "progress.hpp"
-#include "threads_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -75,18 +73,10 @@ int run_audit_command(AuditCommand& o, const Io& io) {
   const AuditResult result = run_audit(source, o.job, progress.sink());
   progress.clear();
   if (!o.out.empty()) result.write(o.out);
-  const AuditReport& report = result.report();
-  if (o.json) {
+  if (o.json)
     print_json(io.out, result.to_json());
-    return result.exit_status();
-  }
-  io.out << result.text();
-  if (!o.out.empty())
-    io.out << fmt::format("certificate    {0}/audit.json, {0}/audit.md{1}\n", o.out,
-                          report.clean() ? "" : fmt::format(", {}/first-violation.png", o.out));
-  if (!report.case_records().empty())
-    io.out << fmt::format("case files     {}/cases/*.vf ({})\n", o.out,
-                          report.case_records().size());
+  else
+    io.out << result.text() << (o.out.empty() ? "" : result.written_text(o.out));
   return result.exit_status();
 }
 

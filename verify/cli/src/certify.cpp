@@ -3,14 +3,10 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "budget_option.hpp"
-#include "corpus_option.hpp"
+#include "fdh/certify/corpus_folder.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "min_distance_option.hpp"
-#include "plugin_option.hpp"
-#include "progress.hpp"
 #include "suite_commands.hpp"
-#include "threads_option.hpp"
 
 namespace fdh::verify {
 namespace {

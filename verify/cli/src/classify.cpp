@@ -6,7 +6,6 @@
 #include "commands.hpp"
 #include "fdh/classify/classify.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "plugin_option.hpp"
 
 namespace fdh::verify {
 namespace {

@@ -1,17 +1,14 @@
 // run_cli: one CLI11 app with a subcommand per command (commands.hpp explains the pattern).
 #include "fdh/cli/cli.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <new>
 #include <optional>
 #include <sstream>
 
-#include "budget_option.hpp"
 #include "commands.hpp"
 #include "fdh/io/input_error.hpp"
+#include "fdh/os/standard_output.hpp"
 #include "fdh/plugin/loader.hpp"
-#include "plugin_option.hpp"
 #include "suite_commands.hpp"
 
 namespace fdh::verify {
@@ -112,18 +109,6 @@ std::optional<int> parse(CLI::App& app, const std::vector<std::string>& args, co
     return 0;
   }
   return std::nullopt;
-}
-
-// Standard output is written in place; a write that failed (a full disk, a closed stdout) is
-// found here, when the command is done: exit 2 with the system's reason.
-int checked_output(int status, std::ostream& out, std::ostream& err) {
-  errno = 0;
-  out.flush();
-  if (out) return status;
-  const int why = errno;
-  err << "fdhcert: error: standard output: "
-      << (why ? std::strerror(why) : "cannot write (the stream failed)") << "\n";
-  return 2;
 }
 
 int run_command(const std::vector<Command>& commands, const Io& io) {

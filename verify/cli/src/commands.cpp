@@ -72,14 +72,6 @@ CLI::Option* add_seed_option(CLI::App& cmd, std::uint64_t& seed, const std::stri
       ->check(CLI::Range(std::uint64_t(0), std::uint64_t(1) << 62));
 }
 
-std::vector<Method> methods_named(const std::vector<std::string>& names, int gate_k) {
-  try {
-    return names.empty() ? all_methods(gate_k) : select_methods(names, gate_k);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
-}
-
 void print_json(std::ostream& os, const nlohmann::ordered_json& j) {
   os << json_text(j, "the JSON output");
 }

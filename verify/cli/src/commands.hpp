@@ -21,20 +21,18 @@
 #include <functional>
 #include <nlohmann/json_fwd.hpp>
 #include <ostream>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "fdh/check/registry.hpp"
-#include "fdh/io/query_record.hpp"
+#include "fdh/check/thread_limit.hpp"
+#include "fdh/io/usage_error.hpp"  // UsageError, for every command
+#include "fdh/os/budget.hpp"
+#include "fdh/os/progress_line.hpp"
+#include "fdh/plugin/loader.hpp"  // PluginScope: the plug-ins last for one run
 
 namespace fdh::verify {
-
-// A wrong command line found after parsing: printed as "fdhcert: <what>", exit status 2.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // Where a command prints.
 struct Io {
@@ -79,12 +77,6 @@ CLI::Option* add_number_option(CLI::App& cmd, const std::string& name, T& value,
                                const std::string& help, const std::string& type_name, T lo, T hi) {
   return cmd.add_option(name, value, help)->type_name(type_name)->check(CLI::Range(lo, hi));
 }
-// fuzz's bounds: --count N' <= 10^12 and --shard I/N with N <= 10^6, so that N' * N (the
-// shard arithmetic of fuzz/src/fuzz.cpp) stays below 10^18 < 2^63 - 1.
-constexpr long kMaxFuzzCount = 1'000'000'000'000L;
-constexpr long kMaxFuzzShards = 1'000'000L;
-constexpr long kMaxGeneratedQueries = 100'000'000L;  // generate --count
-static_assert(kMaxFuzzCount <= INT64_MAX / (kMaxFuzzShards + 1), "count * shard overflows");
 
 // `s` for a message: in quotes, at most about 80 characters (then "..." and its length),
 // control bytes and non-ASCII bytes escaped as \xNN.
@@ -93,15 +85,35 @@ std::string quoted_input(std::string_view s, std::size_t shown = 80);
 // --seed S: 0 to 2^62.
 CLI::Option* add_seed_option(CLI::App& cmd, std::uint64_t& seed, const std::string& help);
 
-// The named methods (all of them for an empty list); an unknown name or gate is a UsageError.
-std::vector<Method> methods_named(const std::vector<std::string>& names, int gate_k = 0);
-
-// A record's FILE:LINE, for messages.
-inline std::string where(const QueryRecord& q) {
-  return q.file + ":" + std::to_string(q.line);
-}
-
 // Every JSON output: one object, two-space indented, then a newline.
 void print_json(std::ostream& os, const nlohmann::ordered_json& j);
+
+// --- How a run runs (run_options.cpp) -------------------------------------------------------
+
+// --quiet and --progress WHEN on a long command, into `when` (--quiet: Never).
+CLI::Option* add_quiet_flag(CLI::App& cmd, ProgressWhen& when);
+// How progress should show on the command's standard error (fdh/os/progress_line.hpp).
+inline ProgressShow progress_wanted(const Io& io, ProgressWhen when) {
+  return progress_wanted(io.err, when);
+}
+// --quiet given: none; else as --progress auto.
+inline ProgressShow progress_wanted(const Io& io, bool quiet) {
+  return progress_wanted(io.err, quiet ? ProgressWhen::Never : ProgressWhen::Auto);
+}
+
+// --threads N in [1, 1024] (default 0: every core) for ThreadLimit; `what` names the loops
+// ("the step").
+CLI::Option* add_threads_option(CLI::App& cmd, int& threads, const std::string& what);
+
+// --budget SECONDS (0 < SECONDS <= 10^7) into `budget`, counted from run_start() (run_cli marks
+// it first); `what` says what it stops.
+CLI::Option* add_budget_option(CLI::App& cmd, Budget& budget, const std::string& what);
+
+// --plugin FILE[:SETTINGS], repeatable: loads the plug-in (fdh/plugin/loader.hpp) the moment it
+// is parsed, so that --methods and --method, checked when parsing ends, know its methods. A
+// plug-in that cannot be loaded, a malformed argument (fdh/plugin/plugin_argument.hpp) or
+// refused settings are a UsageError (exit 2); one that fails its probe, a PluginFailure (exit 3).
+// Also adds --plugin-timeout SECONDS (fdh/plugin/loader.hpp set_plugin_timeout).
+CLI::Option* add_plugin_option(CLI::App& cmd);
 
 }  // namespace fdh::verify

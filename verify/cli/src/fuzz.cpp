@@ -3,14 +3,11 @@
 
 #include <memory>
 
-#include "budget_option.hpp"
 #include "commands.hpp"
 #include "fdh/fuzz/fuzz.hpp"
 #include "fdh/gen/families.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "min_distance_option.hpp"
-#include "plugin_option.hpp"
-#include "progress.hpp"
 
 namespace fdh::verify {
 namespace {

@@ -3,9 +3,8 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "fdh/gen/case_seed.hpp"
 #include "fdh/gen/families.hpp"
-#include "fdh/io/query_io.hpp"
+#include "fdh/gen/family_file.hpp"
 #include "fdh/os/atomic_file.hpp"
 
 namespace fdh::verify {
@@ -36,17 +35,7 @@ struct GenerateOptions {
 
 int run_generate(const GenerateOptions& o, const Io& io) {
   check_output_path(o.file);
-  const Family* family = family_named(o.family);  // checked by CLI11
-  AtomicFile file(o.file);  // written as generated, published whole by commit()
-  std::ostream& os = file.stream();
-  os << "# fdhcert generate " << o.family << " --count " << o.count << " --seed " << o.seed << "\n";
-  double min_distance = 0;  // the stream's δ: a δ family's cases each carry their own
-  for (long i = 0; i < o.count; ++i) {
-    QueryRecord r = generate(*family, case_seed(o.seed, i)).record();
-    r.id = o.family + "/" + std::to_string(i);
-    write_native(os, r, min_distance);
-  }
-  file.commit();
+  write_family_file(o.family, o.count, o.seed, o.file);  // the family checked by CLI11
   io.out << "wrote " << o.count << " " << o.family << " queries to " << o.file << "\n";
   return 0;
 }

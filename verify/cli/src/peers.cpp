@@ -1,15 +1,11 @@
 // fdhcert peers: the project's own k-DOPs beside FCL's and Bullet's boxes (docs/peers.md).
-#include <fmt/format.h>
-
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/peer_certify/peer_certify.hpp"
-#include "progress.hpp"
 #include "suite_commands.hpp"
-#include "threads_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -43,24 +39,6 @@ struct PeersCommand {
   int threads = 0;  // 0: every core
 };
 
-// overlapping: the pairs whose exact FDHs overlap (where a "disjoint" is a miss).
-void print_table(const PeersReport& r, std::ostream& out) {
-  static constexpr char kLine[] = "{:<9}{:<9}{:<18}{:>4}  {:<12}{:>8}{:>12}{:>11}{:>8}  {}\n";
-  out << fmt::format("{} random point sets and {} touching pairs, seed {}\n", r.options.cases,
-                     r.options.cases, r.options.seed);
-  out << fmt::format(kLine, "library", "version", "method", "k", "property", "checked",
-                     "overlapping", "violations", "stored", "first shrunk case");
-  for (const PeerRow& row : r.rows)
-    for (const PeerProperty* p : {&row.containment, &row.overlap}) {
-      const bool overlap = p == &row.overlap;
-      out << fmt::format(kLine, row.library, row.version.substr(0, 8), row.method, row.k,
-                         overlap ? "overlap" : "containment", p->checked,
-                         overlap ? std::to_string(p->exact_overlaps) : "-", p->violations,
-                         fmt::format("{}/{}", p->stored_failing, p->stored),
-                         p->shrunk.empty() ? "-" : p->shrunk.front());
-    }
-}
-
 int run_peers(PeersCommand& cmd, const Io& io) {
   if (!cmd.peers.save_dir.empty()) check_output_dir(cmd.peers.save_dir);
   cmd.peers.replay_dir = (std::filesystem::path(cmd.corpus) / "peers").string();
@@ -72,7 +50,7 @@ int run_peers(PeersCommand& cmd, const Io& io) {
   if (cmd.json)
     print_json(io.out, peers_json(r));
   else
-    print_table(r, io.out);
+    io.out << peers_text(r);
   if (r.first_own_violation.empty()) return 0;
   io.err << "fdhcert: peers: " << r.first_own_violation << "\n";
   return 1;

@@ -5,7 +5,6 @@
 
 #include "commands.hpp"
 #include "fdh/classify/replay.hpp"
-#include "plugin_option.hpp"
 
 namespace fdh::verify {
 namespace {

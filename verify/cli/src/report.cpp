@@ -5,14 +5,11 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "corpus_option.hpp"
+#include "fdh/certify/corpus_folder.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/report/report_document.hpp"
 #include "fdh/report/report_summary.hpp"
-#include "plugin_option.hpp"
-#include "progress.hpp"
 #include "suite_commands.hpp"
-#include "threads_option.hpp"
 
 namespace fdh::verify {
 namespace {

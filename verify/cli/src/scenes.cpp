@@ -5,7 +5,6 @@
 
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/scene/scene_report.hpp"
-#include "progress.hpp"
 #include "suite_commands.hpp"
 
 namespace fdh::verify {

@@ -1,23 +1,14 @@
 // fdhcert simulate: one scene, frame by frame, timed and checked.
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <filesystem>
 #include <memory>
 #include <optional>
 
 #include "commands.hpp"
 #include "fdh/io/query_io.hpp"
-#include "fdh/io/scene_file.hpp"
-#include "fdh/io/scene_output.hpp"
 #include "fdh/io/scene_schema.hpp"
-#include "fdh/kdop.hpp"
-#include "fdh/os/atomic_file.hpp"
 #include "fdh/scene/scene_outputs.hpp"
-#include "fdh/scene/scene_report.hpp"
 #include "fdh/scene/scene_run.hpp"
-#include "progress.hpp"
-#include "threads_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -49,89 +40,19 @@ Exit status: 0; 2 for bad input. A scene error names the file and line.)";
 struct SimulateOptions {
   std::string scene_path;
   SceneOutputFiles files;
-  int grid = 0;           // 0: the scene's
-  std::string thickness;  // "": the scene's
-  std::string self;       // "on", "off" or "": the scene's
+  SceneOverrides scene;  // --grid, --thickness, --self
   bool json = false, no_check = false;
   ProgressWhen progress = ProgressWhen::Auto;
   int threads = 0;  // 0: every core
   SceneRunOptions run;
 };
 
-// The scene with the command line's overrides.
-cloth::Scene read_scene_as_asked(const SimulateOptions& o) {
-  cloth::Scene scene = read_scene(o.scene_path);
-  if (o.grid) scene.cloth.grid = o.grid;
-  std::string why;
-  if (!o.thickness.empty()) scene.thickness = *parse_double(o.thickness, why);  // checked
-  if (!o.self.empty()) scene.self_collision = o.self == "on";
-  if (o.grid || !o.thickness.empty()) check_scene(scene, o.scene_path);  // the overrides too
-  return scene;
-}
-
-// The scene, the step, and the time per frame.
-void print_timing(std::ostream& out, const SimulateOptions& o, const cloth::Scene& scene,
-                  std::size_t obstacle_tris, const SceneRun& r) {
-  const std::size_t n = scene.obstacles.size();
-  out << fmt::format("scene {} ({}): {}x{} particles, {} obstacle{} ({} triangles), skin {:g} m\n",
-                     scene.name, o.scene_path, r.grid, r.grid, n, n == 1 ? "" : "s", obstacle_tris,
-                     r.skin);
-  out << fmt::format(
-      "narrow phase {}, k = {}, {} frames of dt = {:g} s (stable up to {:g} s{})\n\n", o.run.narrow,
-      o.run.k, r.frames, r.dt, r.stable_dt,
-      r.dt_reduced ? fmt::format("; the scene's {:g} s is above it", scene.dt) : "");
-  const double per = r.frames ? 1e3 / r.frames : 0;  // s summed -> ms per frame
-  const cloth::FrameTimes& t = r.time;
-  out << fmt::format(
-      "ms per frame   springs+integration {:.4f}   refit {:.4f}   traversal {:.4f}   narrow "
-      "{:.4f}   response {:.4f}{}\n               collision {:.4f}   total {:.4f}\n",
-      per * t.springs, per * t.refit, per * t.traversal, per * t.narrow, per * t.response,
-      scene.self_collision ? fmt::format("   self {:.4f}", per * t.self) : "", per * t.collision(),
-      per * t.total());
-}
-
-// The counts, the checks and the files written.
-void print_counts(std::ostream& out, const SimulateOptions& o, const cloth::Scene& scene,
-                  const SceneRun& r) {
-  const double frames = r.frames ? r.frames : 1;
-  out << fmt::format(
-      "counts         {} candidate pairs, {} collisions ({:.1f} and {:.1f} per "
-      "frame)\n",
-      r.candidates, r.collisions, r.candidates / frames, r.collisions / frames);
-  if (o.run.check) {
-    out << fmt::format(
-        "accuracy       {} false positives, {} false negatives against the exact "
-        "test\n",
-        r.fp, r.fn);
-    out << fmt::format(
-        "audit (exact)  {} particles inside, {} cloth triangles meeting an obstacle "
-        "triangle, summed over the frames (last frame: {} and {})\n",
-        r.audit.inside, r.audit.obstacle_intersections, r.audit_last.inside,
-        r.audit_last.obstacle_intersections);
-  }
-  if (scene.self_collision)
-    out << fmt::format(
-        "self-collision {} CCD queries, {} contacts; frames resolved by particle stops {}, "
-        "by impact zones {} ({} particles), stopped whole {}\n",
-        r.self_queries, r.self_hits, r.self_round_frames - r.self_zone_frames, r.self_zone_frames,
-        r.self_zone_particles, r.self_stops);
-  if (r.self_audited)
-    out << fmt::format(
-        "self (exact)   {} pairs of cloth triangles sharing no particle that meet, "
-        "summed over the frames\n",
-        r.audit.self_intersections);
-  if (!o.files.png.empty()) out << "picture        " << o.files.png << "\n";
-  if (!o.files.movie.empty() && r.frames > 0) out << "movie          " << o.files.movie << "\n";
-  if (!o.files.record.empty()) out << "queries        " << o.files.record << "\n";
-  if (!o.files.obj_dir.empty()) out << "frames         " << o.files.obj_dir << "/frame_*.obj\n";
-}
-
 int run_simulate(SimulateOptions& o, const Io& io) {
   o.files.scene_path = o.scene_path;
   o.files.check();
   const ThreadLimit threads(o.threads);
   o.run.check = !o.no_check;
-  const cloth::Scene scene = read_scene_as_asked(o);
+  const cloth::Scene scene = read_scene_overridden(o.scene_path, o.scene);
   const int frames = o.run.frames < 0 ? scene.frames : o.run.frames;
   SceneOutputs outputs(o.files, scene, frames);
   ProgressLine progress(io.err, progress_wanted(io, o.progress));
@@ -146,8 +67,7 @@ int run_simulate(SimulateOptions& o, const Io& io) {
   if (o.json) {
     print_json(io.out, scene_run_json(scene, o.run, r));
   } else {
-    print_timing(io.out, o, scene, outputs.obstacles().tris.size(), r);
-    print_counts(io.out, o, scene, r);
+    io.out << simulate_text({o.files, o.run, outputs.obstacles().tris.size()}, scene, r);
   }
   return 0;
 }
@@ -169,7 +89,7 @@ CLI::Validator scene_value_validator(const char* field) {
 
 void add_scene_options(CLI::App& cmd, SimulateOptions& o) {
   cmd.add_option("SCENE", o.scene_path, "a .scene file (corpus/scenes/)")->required();
-  cmd.add_option("--grid", o.grid, "particles per side (default: the scene's)")
+  cmd.add_option("--grid", o.scene.grid, "particles per side (default: the scene's)")
       ->type_name("N")
       ->check(scene_value_validator("grid"));
   cmd.add_option("--frames", o.run.frames, "frames to run (default: the scene's)")
@@ -182,12 +102,12 @@ void add_scene_options(CLI::App& cmd, SimulateOptions& o) {
   cmd.add_option("--k", o.run.k, "the FDH's k: 6, 14, 18 (default) or 26")
       ->type_name("K")
       ->check(kdop_k_validator(false));
-  cmd.add_option("--thickness", o.thickness,
+  cmd.add_option("--thickness", o.scene.thickness,
                  "the collision skin in m (default: the scene's; 0 collides\n"
                  "with the obstacles' own surfaces, see docs/cloth.md)")
       ->type_name("T")
       ->check(scene_value_validator("thickness"));
-  cmd.add_option("--self", o.self,
+  cmd.add_option("--self", o.scene.self,
                  "the cloth against itself: moving vertex-face and edge-edge\n"
                  "tests with robust CCD among primitives sharing no particle\n"
                  "(default: the scene's self_collision, else off)")

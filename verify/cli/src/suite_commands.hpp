@@ -4,7 +4,6 @@
 
 #include "commands.hpp"
 #include "fdh/certify/certify.hpp"
-#include "progress.hpp"
 
 namespace fdh::verify {
 

@@ -10,7 +10,6 @@
 #include "fdh/io/scene_schema.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/table1/table1.hpp"
-#include "progress.hpp"
 #include "suite_commands.hpp"
 
 namespace fdh::verify {

@@ -70,4 +70,24 @@ std::string peers_markdown(const PeersReport& r) {
   return fmt::to_string(out);
 }
 
+// overlapping: the pairs whose exact FDHs overlap (where a "disjoint" is a miss).
+std::string peers_text(const PeersReport& r) {
+  std::string out;
+  static constexpr char kLine[] = "{:<9}{:<9}{:<18}{:>4}  {:<12}{:>8}{:>12}{:>11}{:>8}  {}\n";
+  out += fmt::format("{} random point sets and {} touching pairs, seed {}\n", r.options.cases,
+                     r.options.cases, r.options.seed);
+  out += fmt::format(kLine, "library", "version", "method", "k", "property", "checked",
+                     "overlapping", "violations", "stored", "first shrunk case");
+  for (const PeerRow& row : r.rows)
+    for (const PeerProperty* p : {&row.containment, &row.overlap}) {
+      const bool overlap = p == &row.overlap;
+      out += fmt::format(kLine, row.library, row.version.substr(0, 8), row.method, row.k,
+                         overlap ? "overlap" : "containment", p->checked,
+                         overlap ? std::to_string(p->exact_overlaps) : "-", p->violations,
+                         fmt::format("{}/{}", p->stored_failing, p->stored),
+                         p->shrunk.empty() ? "-" : p->shrunk.front());
+    }
+  return out;
+}
+
 }  // namespace fdh::verify

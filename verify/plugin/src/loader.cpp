@@ -430,4 +430,13 @@ void end_plugin_run() {
   plugin::run_finished();
 }
 
+PluginScope::PluginScope() {
+  set_plugin_timeout(kDefaultPluginTimeout);
+}
+
+PluginScope::~PluginScope() {
+  remove_added_methods();
+  end_plugin_run();
+}
+
 }  // namespace fdh::verify

@@ -9,6 +9,8 @@
 #include "fdh/check/checker.hpp"
 #include "fdh/exact/ccd.hpp"
 #include "fdh/exact/inside.hpp"
+#include "fdh/io/query_io.hpp"
+#include "fdh/io/scene_file.hpp"
 
 namespace fdh::verify {
 
@@ -110,6 +112,16 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
   r.energy_end = sim.cloth().energy();
   r.final_x = sim.cloth().x();
   return r;
+}
+
+cloth::Scene read_scene_overridden(const std::string& path, const SceneOverrides& o) {
+  cloth::Scene scene = read_scene(path);
+  if (o.grid) scene.cloth.grid = o.grid;
+  std::string why;
+  if (!o.thickness.empty()) scene.thickness = *parse_double(o.thickness, why);  // checked
+  if (!o.self.empty()) scene.self_collision = o.self == "on";
+  if (o.grid || !o.thickness.empty()) check_scene(scene, path);  // the overrides too
+  return scene;
 }
 
 }  // namespace fdh::verify

@@ -1,7 +1,8 @@
 // The audit job (`fdhcert audit`, Python's fdhcert.audit): a frame source (OBJ frames from disk,
 // or arrays from Python) through the audit engine (fdh/audit/auditor.hpp), streaming (one frame
-// read, audited and dropped at a time), into a Result: the certificate (fdh/audit_job/audit_report.hpp)
-// with its picture and case files. The CLI and Python only adapt their inputs and print it.
+// read, audited and dropped at a time), into a Result: the certificate
+// (fdh/audit_job/audit_report.hpp) with its picture and case files. The CLI and Python only adapt
+// their inputs and print it.
 #pragma once
 
 #include <nlohmann/json_fwd.hpp>
@@ -11,9 +12,9 @@
 #include <vector>
 
 #include "fdh/audit/auditor.hpp"
+#include "fdh/audit_job/audit_report.hpp"
 #include "fdh/io/mesh_sequence.hpp"
 #include "fdh/os/progress.hpp"
-#include "fdh/audit_job/audit_report.hpp"
 
 namespace fdh::verify {
 
@@ -66,6 +67,8 @@ class AuditResult {
   // DIR/audit.json, DIR/audit.md, DIR/first-violation.png (with a violation) and
   // DIR/cases/*.vf, each whole; creates DIR. Needs AuditOptions::files.
   void write(const std::string& dir) const;
+  // The lines that name what write(dir) wrote: the certificate, and the case files if any.
+  std::string written_text(const std::string& dir) const;
 
  private:
   friend AuditResult run_audit(FrameSource&, const AuditOptions&, const ProgressSink&);

@@ -42,6 +42,12 @@
 
 namespace fdh::verify {
 
+// fuzz's bounds: --count N' <= 10^12 and --shard I/N with N <= 10^6, so that N' * N (the
+// shard arithmetic of src/fuzz.cpp) stays below 10^18 < 2^63 - 1.
+constexpr long kMaxFuzzCount = 1'000'000'000'000L;
+constexpr long kMaxFuzzShards = 1'000'000L;
+static_assert(kMaxFuzzCount <= INT64_MAX / (kMaxFuzzShards + 1), "count * shard overflows");
+
 struct FuzzOptions {
   std::string method;
   // Look for queries where the method's verdict changes under a transform that keeps the truth

@@ -32,6 +32,12 @@ class Budget {
   Clock::time_point deadline_ = Clock::time_point::max();
 };
 
+// The run starts now: fdhcert calls it first, so that a budget counts the whole run (loading
+// and probing plug-ins included).
+void mark_run_start();
+// When the run started: the last mark_run_start, else the first call of either.
+Budget::Clock::time_point run_start();
+
 // What a budget cut short: a stage and how far it got ("generator families", 12 of 5600
 // "queries"); total 0 when it is not known.
 struct BudgetCut {

@@ -1,5 +1,5 @@
 // How far a long job has got: the one shape every job (certify, fuzz, report, peers, table1,
-// scenes, simulate) reports in, and the one the CLI draws (verify/cli/src/progress.hpp).
+// scenes, simulate) reports in, and the one the CLI draws (fdh/os/progress_line.hpp).
 #pragma once
 
 #include <functional>

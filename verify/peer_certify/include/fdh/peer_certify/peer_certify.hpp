@@ -59,6 +59,9 @@ struct PeersReport {
 PeersReport certify_peers(const PeerOptions& options);
 
 nlohmann::ordered_json peers_json(const PeersReport& r);
+// The table `fdhcert peers` prints: one row per method and property (checked, overlapping,
+// violations, stored cases failing, the first shrunk case).
+std::string peers_text(const PeersReport& r);
 // A "## Peers" section: one row per method and property, own rows first.
 std::string peers_markdown(const PeersReport& r);
 

@@ -58,4 +58,14 @@ void set_plugin_timeout(double seconds);
 // The run is over: standard output back on fd 1, exit() fdhcert's own again.
 void end_plugin_run();
 
+// The plug-ins' methods and their cage last for one run: they are forgotten when the scope ends
+// (remove_added_methods, end_plugin_run), so that in-process runs (the tests) start with the
+// built-in methods only and the default time limit.
+struct PluginScope {
+  PluginScope();
+  PluginScope(const PluginScope&) = delete;
+  PluginScope& operator=(const PluginScope&) = delete;
+  ~PluginScope();
+};
+
 }  // namespace fdh::verify

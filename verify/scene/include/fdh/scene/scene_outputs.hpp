@@ -1,6 +1,6 @@
 // What `fdhcert simulate` writes besides its report: the OBJ frames (for `fdhcert audit`,
 // Blender or ParaView), every narrow-phase query recorded as a native file, the last frame's
-// picture and the run's movie (as `fdhcert scenes` draws them).
+// picture and the run's movie (as `fdhcert scenes` draws them), and the text it prints.
 #pragma once
 
 #include <memory>
@@ -42,5 +42,14 @@ class SceneOutputs {
   std::unique_ptr<AtomicFile> recording_;
   std::optional<SceneMovie> movie_;
 };
+
+// What `fdhcert simulate` prints of a run: the scene, the step and the time per frame in its
+// five parts, then the counts, the checks (when run) and the files written.
+struct SimulateText {
+  const SceneOutputFiles& files;  // scene_path: the scene as named on the command line
+  const SceneRunOptions& run;
+  std::size_t obstacle_triangles = 0;
+};
+std::string simulate_text(const SimulateText& o, const cloth::Scene& scene, const SceneRun& r);
 
 }  // namespace fdh::verify

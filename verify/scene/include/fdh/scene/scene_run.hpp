@@ -64,6 +64,17 @@ TriMesh obstacles_of(const cloth::Scene& scene);
 
 SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt);
 
+// What a run may change of its scene (simulate --grid, --thickness, --self); 0 or "": the
+// scene's own.
+struct SceneOverrides {
+  int grid = 0;
+  std::string thickness;  // a number as query files write it (checked before: parse_double)
+  std::string self;       // "on" or "off"
+};
+// The scene read from `path` (read_scene) with `o` applied, checked again when the grid or the
+// thickness changed (check_scene: an InputError naming `path`).
+cloth::Scene read_scene_overridden(const std::string& path, const SceneOverrides& o);
+
 // The frames a bounded run of `scene` takes: its own, at most `frames`, and at most
 // `particle_frames` / particles, so that a large cloth (a 200x200 one costs 64 times a 25x25
 // one per frame) does not swamp a quick check.

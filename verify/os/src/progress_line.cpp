@@ -1,10 +1,9 @@
-#include "progress.hpp"
+#include "fdh/os/progress_line.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include <iostream>
-#include <map>
 
 namespace fdh::verify {
 
@@ -97,34 +96,12 @@ void ProgressLine::clear() {
   drawn_ = 0;
 }
 
-ProgressShow progress_wanted(const Io& io, ProgressWhen when) {
+ProgressShow progress_wanted(const std::ostream& err, ProgressWhen when) {
   if (when == ProgressWhen::Never) return ProgressShow::None;
-  if (&io.err != &std::cerr)
+  if (&err != &std::cerr)
     return when == ProgressWhen::Always ? ProgressShow::Lines : ProgressShow::None;
   if (::isatty(STDERR_FILENO)) return ProgressShow::Terminal;
   return when == ProgressWhen::Always ? ProgressShow::Lines : ProgressShow::LinesWhenSlow;
-}
-
-ProgressShow progress_wanted(const Io& io, bool quiet) {
-  return progress_wanted(io, quiet ? ProgressWhen::Never : ProgressWhen::Auto);
-}
-
-CLI::Option* add_quiet_flag(CLI::App& cmd, ProgressWhen& when) {
-  const std::map<std::string, ProgressWhen> words = {{"auto", ProgressWhen::Auto},
-                                                     {"always", ProgressWhen::Always},
-                                                     {"never", ProgressWhen::Never}};
-  CLI::Option* progress =
-      cmd.add_option("--progress", when,
-                     "auto (default): a line redrawn in place on a terminal;\n"
-                     "off one, a line every few seconds once the run has\n"
-                     "taken 10 s. always: lines from the start off a\n"
-                     "terminal. never: none")
-          ->type_name("WHEN")
-          ->transform(CLI::CheckedTransformer(words, CLI::ignore_case).description(""));
-  return cmd
-      .add_flag_callback(
-          "--quiet", [&when] { when = ProgressWhen::Never; }, "no progress (--progress never)")
-      ->excludes(progress);
 }
 
 }  // namespace fdh::verify

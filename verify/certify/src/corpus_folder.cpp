@@ -1,9 +1,9 @@
-#include "corpus_option.hpp"
+#include "fdh/certify/corpus_folder.hpp"
 
 #include <filesystem>
 #include <system_error>
 
-#include "commands.hpp"
+#include "fdh/io/usage_error.hpp"
 
 // The installed corpus relative to the installed program (cmake/install.cmake sets it from
 // GNUInstallDirs' BINDIR and DATADIR).
@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool is_folder(const fs::path& p) {
+bool is_corpus_folder(const fs::path& p) {
   std::error_code ec;
   return fs::is_directory(p, ec);
 }
@@ -33,9 +33,9 @@ fs::path installed_corpus() {
 
 std::string corpus_or_default(const std::string& given) {
   if (!given.empty()) return given;
-  if (is_folder("corpus")) return "corpus";
+  if (is_corpus_folder("corpus")) return "corpus";
   const fs::path installed = installed_corpus();
-  if (!installed.empty() && is_folder(installed)) return installed.string();
+  if (!installed.empty() && is_corpus_folder(installed)) return installed.string();
   throw UsageError("no corpus folder: looked for ./corpus (a source checkout) and " +
                    (installed.empty() ? std::string("the installed one (program path unknown)")
                                       : installed.string() + " (installed with fdhcert)") +

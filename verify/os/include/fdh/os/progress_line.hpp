@@ -1,12 +1,10 @@
-// The progress of long commands (certify, report, table1, simulate, scenes, fuzz, peers, audit):
-// it draws the jobs' one progress type (fdh/os/progress.hpp), what is being done, how far it has
-// got and its rate, on standard error. On a terminal, one line redrawn in place ('\r'). Off a
-// terminal (a log, a pipe), whole lines every few seconds once a run is slower than expected
+// The progress line of long commands (certify, report, table1, simulate, scenes, fuzz, peers,
+// audit): it draws the jobs' one progress type (fdh/os/progress.hpp), what is being done, how far
+// it has got and its rate, on standard error. On a terminal, one line redrawn in place ('\r'). Off
+// a terminal (a log, a pipe), whole lines every few seconds once a run is slower than expected
 // (kSlowRunSeconds), or from the start with --progress always, so that a slow run can be told
 // from a hung one. --quiet or --progress never: nothing.
 #pragma once
-
-#include <CLI/CLI.hpp>
 
 #include <chrono>
 #include <condition_variable>
@@ -17,7 +15,6 @@
 #include <string_view>
 #include <thread>
 
-#include "commands.hpp"
 #include "fdh/os/progress.hpp"
 
 namespace fdh::verify {
@@ -74,14 +71,9 @@ class ProgressLine {
   std::thread beat_;
 };
 
-// How progress should show for `when`: on the process's own standard error, on a terminal in
-// place, else as lines (auto: once the run is slow); on another stream (an in-process run),
-// lines with --progress always, else none.
-ProgressShow progress_wanted(const Io& io, ProgressWhen when);
-// --quiet given: none; else as --progress auto.
-ProgressShow progress_wanted(const Io& io, bool quiet);
-
-// --quiet and --progress WHEN on a long command, into `when` (--quiet: Never).
-CLI::Option* add_quiet_flag(CLI::App& cmd, ProgressWhen& when);
+// How progress should show for `when` on `err`: on the process's own standard error, on a
+// terminal in place, else as lines (auto: once the run is slow); on another stream (an in-process
+// run), lines with --progress always, else none.
+ProgressShow progress_wanted(const std::ostream& err, ProgressWhen when);
 
 }  // namespace fdh::verify

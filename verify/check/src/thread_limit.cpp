@@ -1,20 +1,11 @@
-#include "threads_option.hpp"
+#include "fdh/check/thread_limit.hpp"
 
 #include <cstddef>
 #include <set>
 
-#include "commands.hpp"
 #include "fdh/check/registry.hpp"
 
 namespace fdh::verify {
-
-CLI::Option* add_threads_option(CLI::App& cmd, int& threads, const std::string& what) {
-  return add_number_option(cmd, "--threads", threads,
-                           "threads for " + what +
-                               " (default: every core); the results\n"
-                               "are the same for any number",
-                           "N", 1, 1024);
-}
 
 std::string threads_ignored(int threads) {
   if (threads <= 1 || registry_thread_safe()) return "";
