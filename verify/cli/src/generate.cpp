@@ -5,7 +5,6 @@
 #include "commands.hpp"
 #include "fdh/gen/families.hpp"
 #include "fdh/gen/family_file.hpp"
-#include "fdh/os/atomic_file.hpp"
 
 namespace fdh::verify {
 namespace {
