@@ -4,7 +4,6 @@ found by both."""
 import json
 import os
 import subprocess
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -13,14 +12,6 @@ import pytest
 import fdhcert
 
 FDHCERT = os.environ["FDHCERT_BIN"]
-
-
-@pytest.fixture
-def tmp_path():
-    """A folder of this test's own, removed when it ends (pytest's own tmp_path keeps the last
-    runs' folders in the temporary folder, which ./run test counts as litter)."""
-    with tempfile.TemporaryDirectory(prefix="fdh_pytest_") as d:
-        yield Path(d)
 
 
 def grid(n):
