@@ -9,9 +9,12 @@ namespace fdh::verify {
 
 ProgressLine::ProgressLine(std::ostream& err, ProgressShow show) : err_(err), show_(show) {
   // Lines are repeated from a thread of their own only on the process's standard error, whose
-  // writes are safe from any thread; another stream hears only draw().
-  if ((show_ == ProgressShow::Lines || show_ == ProgressShow::LinesWhenSlow) && &err == &std::cerr)
-    beat_ = std::thread([this] { beat(); });
+  // writes are safe from any thread; another stream hears only draw(). The thread starts at the
+  // first draw(): a job that forks its workers first (fuzz) forks a process of one thread, since
+  // a child forked beside a running thread can inherit a lock held there (ASan's allocator's
+  // did: the worker hung in its first allocation).
+  beats_ = (show_ == ProgressShow::Lines || show_ == ProgressShow::LinesWhenSlow) &&
+           &err == &std::cerr;
 }
 
 ProgressLine::~ProgressLine() {
@@ -43,6 +46,7 @@ std::string ProgressLine::text_of(const Progress& p, Clock::time_point now) cons
 void ProgressLine::draw(const Progress& p) {
   if (show_ == ProgressShow::None) return;
   const std::lock_guard lock(mutex_);
+  if (beats_ && !beat_.joinable()) beat_ = std::thread([this] { beat(); });
   const Clock::time_point now = Clock::now();
   const bool new_stage = p.stage != what_, new_detail = p.detail != detail_;
   if (new_stage) what_ = p.stage, stage_start_ = now;

@@ -68,7 +68,8 @@ class ProgressLine {
   std::condition_variable wake_;
   bool stopping_ = false;
   std::optional<Progress> last_;  // what the beat repeats; none after clear()
-  std::thread beat_;
+  bool beats_ = false;            // lines repeated by the beat (off a terminal, on std::cerr)
+  std::thread beat_;              // started by the first draw(), not before: see the constructor
 };
 
 // How progress should show for `when` on `err`: on the process's own standard error, on a
