@@ -25,13 +25,18 @@
 #include "init_call.hpp"
 #include "private_stdout.hpp"
 #include "probe.hpp"
+#include "struct_checks.hpp"
 #include "watchdog.hpp"
 
 namespace fdh::verify {
 namespace {
 
 using plugin::CallSite;
+using plugin::check_promises;
+using plugin::check_settings;
 using plugin::InCall;
+using plugin::refuse;
+using plugin::within_struct;
 
 // A loaded plug-in: its struct, copied, its name, settings and flags. The library stays loaded
 // for the process (its functions are in the registry until the run ends).
@@ -57,10 +62,6 @@ std::vector<std::pair<dev_t, ino_t>>& loaded_files() {
 std::vector<LoadedPlugin>& loaded_list() {
   static std::vector<LoadedPlugin> list;
   return list;
-}
-
-[[noreturn]] void refuse(const std::string& path, const std::string& why) {
-  throw PluginLoadError("plug-in " + path + ": " + why + " (docs/plugins.md)");
 }
 
 // A letter or digit, then letters, digits and . _ + -: never a path like "..", since fuzz makes
@@ -107,53 +108,6 @@ double limit_of_child() {
 std::string not_loaded(const std::string& file, const std::string& dlerror_words) {
   const std::string machine = plugin::wrong_machine(file);
   return machine.empty() ? dlerror_words : machine + " (dlerror: " + dlerror_words + ")";
-}
-
-// Settings as fdh_plugin_init may take them: keys non-empty and each given once.
-void check_settings(const std::string& path, const PluginSettings& settings) {
-  for (std::size_t i = 0; i < settings.size(); ++i) {
-    if (settings[i].first.empty()) refuse(path, "a setting has an empty key");
-    for (std::size_t j = 0; j < i; ++j)
-      if (settings[j].first == settings[i].first)
-        refuse(path, "setting '" + settings[i].first + "' is given twice");
-  }
-}
-
-// A promise of the ABI as an int in range, else refused.
-void check_promises(const std::string& path, const char* what, int promise, int time_promise) {
-  if (promise < FDH_PROMISE_NONE || promise > FDH_PROMISE_EXACT)
-    refuse(path, std::string(what) + "promise " + std::to_string(promise) + " is none of 0, 1, 2");
-  if (time_promise < FDH_TIME_NONE || time_promise > FDH_TIME_EXACT_ENCLOSURE)
-    refuse(path, std::string(what) + "time_promise " + std::to_string(time_promise) +
-                     " is none of 0, 1, 2");
-}
-
-// fdh_plugin_min_distance's struct, checked: a method answers δ for every decision (and time)
-// it answers at contact, or for none, since Method::answers_min_distance is one flag.
-std::optional<fdh_min_distance> within_struct(void* lib, const std::string& path,
-                                              const fdh_plugin& a) {
-  bool exported = false;
-  const fdh_min_distance* returned = plugin::call_min_distance(lib, path, &exported);
-  if (!exported) return std::nullopt;
-  if (!returned) refuse(path, "fdh_plugin_min_distance returned NULL");
-  const fdh_min_distance w = *returned;
-  check_promises(path, "fdh_plugin_min_distance's ", w.promise, w.time_promise);
-  const auto missing = [&](bool at_contact, bool within, const char* function) {
-    if (at_contact && !within)
-      refuse(path, std::string("fdh_plugin_min_distance gives no ") + function +
-                       ", which the plug-in answers at contact (a plug-in answers the minimum "
-                       "separation for every decision it makes, or for none)");
-  };
-  missing(a.point_triangle && !a.vertex_face_ccd, w.point_triangle || w.vertex_face_ccd,
-          "point_triangle");
-  missing(a.vertex_face_ccd, w.vertex_face_ccd, "vertex_face_ccd");
-  missing(a.edge_edge_ccd, w.edge_edge_ccd, "edge_edge_ccd");
-  missing(a.vertex_face_toi, w.vertex_face_toi, "vertex_face_toi");
-  missing(a.edge_edge_toi, w.edge_edge_toi, "edge_edge_toi");
-  if (!w.point_triangle && !w.vertex_face_ccd && !w.edge_edge_ccd && !w.vertex_face_toi &&
-      !w.edge_edge_toi)
-    refuse(path, "fdh_plugin_min_distance gives no function");
-  return w;
 }
 
 // The struct the entry point returns, checked field by field, after fdh_plugin_init took the
