@@ -307,27 +307,6 @@ std::string cut_words(const BudgetCut& cut) {
   return fmt::format("{}: {} of {} {}", cut.stage, grouped(cut.done), grouped(cut.total), cut.unit);
 }
 
-std::string DeltaStage::delta_words() const {
-  if (min_distance < 0) return "2^-20 of each query's scale";
-  return fmt::format("{}", min_distance);  // the shortest text that reads back as D
-}
-
-long DeltaStage::checks() const {
-  long n = truths;
-  for (const PromiseCheck& p : promises) n += p.checked;
-  for (const TimePromiseCheck& p : times) n += p.tally.checked;
-  for (const MetamorphicCheck& m : metamorphic) n += (m.held() ? m.checked : 0) + m.judged;
-  return n;
-}
-
-long DeltaStage::violations() const {
-  long n = truth_violations;
-  for (const PromiseCheck& p : promises) n += p.violations;
-  for (const TimePromiseCheck& p : times) n += p.tally.broken;
-  for (const MetamorphicCheck& m : metamorphic) n += (m.held() ? m.violations : 0) + m.broken;
-  return n;
-}
-
 long Certificate::checks() const {
   long n = truths + delta.checks();
   for (const PromiseCheck& p : promises) n += p.checked;
