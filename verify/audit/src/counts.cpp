@@ -7,12 +7,7 @@ void AuditCounts::add(const AuditCounts& c) {
   obstacle_intersections += c.obstacle_intersections;
   static_candidates += c.static_candidates;
   inside += c.inside;
-  step.self_vertex_face += c.step.self_vertex_face;
-  step.self_edge_edge += c.step.self_edge_edge;
-  step.cloth_vertex_obstacle += c.step.cloth_vertex_obstacle;
-  step.obstacle_vertex_cloth += c.step.obstacle_vertex_cloth;
-  step.cloth_edge_obstacle_edge += c.step.cloth_edge_obstacle_edge;
-  step.candidates += c.step.candidates;
+  step.add(c.step);
 }
 
 AuditCounts counts_of(const FrameReport& r) {

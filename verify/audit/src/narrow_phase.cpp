@@ -167,12 +167,7 @@ void Part::add(Violation v, int keep) {
 }
 
 void Part::merge(Part& other, int keep) {
-  step.self_vertex_face += other.step.self_vertex_face;
-  step.self_edge_edge += other.step.self_edge_edge;
-  step.cloth_vertex_obstacle += other.step.cloth_vertex_obstacle;
-  step.obstacle_vertex_cloth += other.step.obstacle_vertex_cloth;
-  step.cloth_edge_obstacle_edge += other.step.cloth_edge_obstacle_edge;
-  step.candidates += other.step.candidates;
+  step.add(other.step);
   self_intersections += other.self_intersections;
   obstacle_intersections += other.obstacle_intersections;
   static_candidates += other.static_candidates;

@@ -75,6 +75,12 @@ struct StepCounts {  // contacts during one step
     return self_vertex_face + self_edge_edge + cloth_vertex_obstacle + obstacle_vertex_cloth +
            cloth_edge_obstacle_edge;
   }
+  void add(const StepCounts& o) {  // the one sum of two parts' or frames' step counts
+    self_vertex_face += o.self_vertex_face, self_edge_edge += o.self_edge_edge;
+    cloth_vertex_obstacle += o.cloth_vertex_obstacle;
+    obstacle_vertex_cloth += o.obstacle_vertex_cloth;
+    cloth_edge_obstacle_edge += o.cloth_edge_obstacle_edge, candidates += o.candidates;
+  }
 };
 // The counter of a step kind in StepCounts; nullptr for a frame kind (the one map from kinds to
 // counters, for the engine and the certificate).
