@@ -1,10 +1,10 @@
 // A scene run from Python: the frames as arrays, with the run's summary.
 #include <chrono>
 #include <optional>
+#include <utility>
 
 #include "bindings.hpp"
-#include "fdh/io/scene_file.hpp"
-#include "fdh/scene/scene_run.hpp"
+#include "fdh/scene/simulate_job.hpp"
 
 namespace fdh::python {
 namespace {
@@ -41,10 +41,10 @@ py::dict simulate(const py::object& scene_path, const std::optional<int>& frames
   if (frames && *frames < 0)
     throw py::value_error("frames must be 0 or more (None: the scene's), not " +
                           std::to_string(*frames));
-  const std::string path = path_of(scene_path);
-  cloth::Scene scene = verify::read_scene(path);
-  if (grid) scene.cloth.grid = grid, verify::check_scene(scene, path);
-  verify::SceneRunOptions opt;
+  verify::SimulateOptions job;
+  job.scene_path = path_of(scene_path);
+  job.overrides.grid = grid;
+  verify::SceneRunOptions& opt = job.run;
   opt.narrow = narrow, opt.k = k, opt.frames = frames.value_or(-1), opt.check = check;
   std::vector<std::vector<Vec3>> kept;
   std::vector<int> numbers;
@@ -61,7 +61,7 @@ py::dict simulate(const py::object& scene_path, const std::optional<int>& frames
   verify::SceneRun run;
   {
     py::gil_scoped_release release;
-    run = verify::run_scene(scene, opt);
+    run = verify::simulate_job(std::move(job)).r;
   }
   const py::ssize_t n = run.particles;
   py::array_t<double> pos({py::ssize_t(kept.size()), n, py::ssize_t(3)});

@@ -3,9 +3,9 @@
 
 #include <new>
 #include <optional>
-#include <sstream>
 
 #include "commands.hpp"
+#include "fdh/help/help_layout.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/os/standard_output.hpp"
 #include "fdh/plugin/loader.hpp"
@@ -23,39 +23,6 @@ const char* const kFooter =
     "3 a --plugin crashed, hung past --plugin-timeout, called exit() or answered\n"
     "garbage (docs/plugins.md), or an internal error; 128+N killed by signal N\n"
     "(this run's temporary files removed first).";
-
-// fdhcert's help layout: the usage line first, then the description (as the help texts read
-// before CLI11); the command list shows the first line of each command's description.
-class HelpFormatter : public CLI::Formatter {
- public:
-  std::string make_help(const CLI::App* app, std::string name,
-                        CLI::AppFormatMode mode) const override {
-    if (mode == CLI::AppFormatMode::Sub) return make_expanded(app);
-    return make_usage(app, name) + "\n" + make_description(app) + make_positionals(app) +
-           make_groups(app, mode) + make_subcommands(app, mode) + "\n" + make_footer(app);
-  }
-  // The description without the blank lines a raw string may end with.
-  std::string make_description(const CLI::App* app) const override {
-    std::string d = app->get_description();
-    while (!d.empty() && d.back() == '\n') d.pop_back();
-    return d.empty() ? d : d + "\n";
-  }
-  // An option's value as its type name alone (its help says the range or the choices), and
-  // "..." after a positional that takes several.
-  std::string make_option_opts(const CLI::Option* opt) const override {
-    if (opt->get_type_size() == 0) return "";  // a flag
-    if (opt->get_positional()) return opt->get_expected_max() > 1 ? " ..." : "";
-    const std::string type = opt->get_type_name();
-    return " " + type.substr(0, type.find(':'));
-  }
-  std::string make_subcommand(const CLI::App* sub) const override {
-    const std::string& d = sub->get_description();
-    std::ostringstream out;
-    CLI::detail::format_help(out, sub->get_display_name(true), d.substr(0, d.find('\n')),
-                             column_width_);
-    return out.str();
-  }
-};
 
 std::vector<Command> add_commands(CLI::App& app) {
   return {add_classify(app), add_fuzz(app),   add_replay(app),   add_generate(app),
@@ -122,7 +89,7 @@ int run_command(const std::vector<Command>& commands, const Io& io) {
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   mark_run_start();  // --budget counts from here
   CLI::App app(kAbout, "fdhcert");
-  app.formatter(std::make_shared<HelpFormatter>());
+  app.formatter(help_layout());
   app.get_formatter()->column_width(24);
   app.require_subcommand(1);
   app.set_version_flag("--version", "fdhcert " FDH_VERSION, "print the version and exit");

@@ -7,8 +7,7 @@
 #include "commands.hpp"
 #include "fdh/io/query_io.hpp"
 #include "fdh/io/scene_schema.hpp"
-#include "fdh/scene/scene_outputs.hpp"
-#include "fdh/scene/scene_run.hpp"
+#include "fdh/scene/simulate_job.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -37,38 +36,23 @@ const char* const kSimulateFooter =
 grows), 0.9 times the stable step is used, and the output says so.
 Exit status: 0; 2 for bad input. A scene error names the file and line.)";
 
-struct SimulateOptions {
-  std::string scene_path;
-  SceneOutputFiles files;
-  SceneOverrides scene;  // --grid, --thickness, --self
+// The job's options (fdh/scene/simulate_job.hpp) and what only the command line has.
+struct SimulateCli {
+  SimulateOptions job;
   bool json = false, no_check = false;
   ProgressWhen progress = ProgressWhen::Auto;
-  int threads = 0;  // 0: every core
-  SceneRunOptions run;
 };
 
-int run_simulate(SimulateOptions& o, const Io& io) {
-  o.files.scene_path = o.scene_path;
-  o.files.check();
-  const ThreadLimit threads(o.threads);
-  o.run.check = !o.no_check;
-  const cloth::Scene scene = read_scene_overridden(o.scene_path, o.scene);
-  const int frames = o.run.frames < 0 ? scene.frames : o.run.frames;
-  SceneOutputs outputs(o.files, scene, frames);
+int run_simulate(SimulateCli& o, const Io& io) {
+  o.job.run.check = !o.no_check;
   ProgressLine progress(io.err, progress_wanted(io, o.progress));
-  o.run.on_start = [&](const cloth::Simulation& sim) { outputs.start(sim); };
-  o.run.on_frame = [&](const cloth::Simulation& sim, int frame) {
-    outputs.frame(sim, frame);
-    progress.draw({"simulate " + scene.name, frame, frames, "frames"});
-  };
-  const SceneRun r = run_scene(scene, o.run);
+  o.job.progress = progress.sink();
+  const SimulateResult r = simulate_job(o.job);
   progress.clear();
-  outputs.finish(scene, r);
-  if (o.json) {
-    print_json(io.out, scene_run_json(scene, o.run, r));
-  } else {
-    io.out << simulate_text({o.files, o.run, outputs.obstacles().tris.size()}, scene, r);
-  }
+  if (o.json)
+    print_json(io.out, r.to_json());
+  else
+    io.out << r.text();
   return 0;
 }
 
@@ -89,7 +73,7 @@ CLI::Validator scene_value_validator(const char* field) {
 
 void add_scene_options(CLI::App& cmd, SimulateOptions& o) {
   cmd.add_option("SCENE", o.scene_path, "a .scene file (corpus/scenes/)")->required();
-  cmd.add_option("--grid", o.scene.grid, "particles per side (default: the scene's)")
+  cmd.add_option("--grid", o.overrides.grid, "particles per side (default: the scene's)")
       ->type_name("N")
       ->check(scene_value_validator("grid"));
   cmd.add_option("--frames", o.run.frames, "frames to run (default: the scene's)")
@@ -102,12 +86,12 @@ void add_scene_options(CLI::App& cmd, SimulateOptions& o) {
   cmd.add_option("--k", o.run.k, "the FDH's k: 6, 14, 18 (default) or 26")
       ->type_name("K")
       ->check(kdop_k_validator(false));
-  cmd.add_option("--thickness", o.scene.thickness,
+  cmd.add_option("--thickness", o.overrides.thickness,
                  "the collision skin in m (default: the scene's; 0 collides\n"
                  "with the obstacles' own surfaces, see docs/cloth.md)")
       ->type_name("T")
       ->check(scene_value_validator("thickness"));
-  cmd.add_option("--self", o.scene.self,
+  cmd.add_option("--self", o.overrides.self,
                  "the cloth against itself: moving vertex-face and edge-edge\n"
                  "tests with robust CCD among primitives sharing no particle\n"
                  "(default: the scene's self_collision, else off)")
@@ -118,7 +102,8 @@ void add_scene_options(CLI::App& cmd, SimulateOptions& o) {
                "that share no particle) even without the self-collision pass");
 }
 
-void add_output_options(CLI::App& cmd, SimulateOptions& o) {
+void add_output_options(CLI::App& cmd, SimulateCli& c) {
+  SimulateOptions& o = c.job;
   cmd.add_option("--obj", o.files.obj_dir,
                  "write DIR/frame_NNNNN.obj for every frame, from 00000 (the\n"
                  "initial state), with objects cloth and obstacles, for\n"
@@ -138,17 +123,17 @@ void add_output_options(CLI::App& cmd, SimulateOptions& o) {
                  "native vf format, for `fdhcert classify FILE`")
       ->type_name("FILE");
   add_threads_option(cmd, o.threads, "the step");
-  cmd.add_flag("--json", o.json, "print one JSON object instead of the text");
-  cmd.add_flag("--no-check", o.no_check, "skip the accuracy count and the audit");
-  add_quiet_flag(cmd, o.progress);
+  cmd.add_flag("--json", c.json, "print one JSON object instead of the text");
+  cmd.add_flag("--no-check", c.no_check, "skip the accuracy count and the audit");
+  add_quiet_flag(cmd, c.progress);
 }
 
 }  // namespace
 
 Command add_simulate(CLI::App& app) {
-  auto o = std::make_shared<SimulateOptions>();
+  auto o = std::make_shared<SimulateCli>();
   CLI::App* cmd = add_command(app, "simulate", kSimulateAbout, kSimulateFooter);
-  add_scene_options(*cmd, *o);
+  add_scene_options(*cmd, o->job);
   add_output_options(*cmd, *o);
   return {cmd, [o](const Io& io) { return run_simulate(*o, io); }};
 }
