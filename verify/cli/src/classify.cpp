@@ -157,16 +157,17 @@ Command add_classify(CLI::App& app) {
                     "--time's and --time-ratio's timed batches per query and\n"
                     "method (default 7)",
                     "N", 1, 100);
-  cmd->add_flag("--toi", o->toi,
-                "also the time of impact of every method that gives one:\n"
-                "late, zero and how early against the exact earliest\n"
-                "contact (a second table, or \"toi\" in --json); with\n"
-                "--per-query, each method's enclosure t_lo, t_hi too");
+  CLI::Option* toi = cmd->add_flag("--toi", o->toi,
+                                   "also the time of impact of every method that gives one:\n"
+                                   "late, zero and how early against the exact earliest\n"
+                                   "contact (a second table, or \"toi\" in --json); with\n"
+                                   "--per-query, each method's enclosure t_lo, t_hi too");
   cmd->add_option("--width", o->width,
-                  "the width of enclosure asked of each time of impact\n"
-                  "(default 2^-30 of the step)")
+                  "with --toi: the width of enclosure asked of each time of\n"
+                  "impact, in [2^-52, 1] steps (default 2^-30; 2^-N is taken)")
       ->type_name("W")
-      ->check(CLI::Range(0x1p-52, 1.0));
+      ->transform(real_range(0x1p-52, 1.0, "[2^-52, 1]"))
+      ->needs(toi);
   cmd->add_option("--min-distance", o->min_distance,
                   "ask every query at minimum separation D: a hit is any time\n"
                   "within distance D, not only contact (docs/methods.md);\n"
