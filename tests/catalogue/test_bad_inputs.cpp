@@ -442,6 +442,11 @@ const std::vector<Row>& rows() {
          return Args{"classify", kBad + "good.vf", "--ratio-limit", "nan"};
        },
        2, "--ratio-limit: 'nan' is not a finite number; give a number in [0.001, 1000]"},
+      {"MinDistanceNaN",  // "fdhcert: min distance must be ...", no option named
+       [](const fs::path&) {
+         return Args{"classify", kBad + "good.vf", "--min-distance", "nan"};
+       },
+       2, "--min-distance: takes a finite number >= 0: 'nan' is not a finite number"},
       // Class 9: messages that said something else than what was wrong.
       {"ObjHexFloatAndUnderflowTaken",  // were "not a finite number"
        [](const fs::path& d) {
@@ -461,6 +466,20 @@ const std::vector<Row>& rows() {
          return Args{"audit", (d / "loop.obj").string()};
        },
        2, "loop.obj: cannot be read: Too many levels of symbolic links"},
+      {"ReplayLinkLoopNamed",  // was "no such file or folder"
+       [](const fs::path& d) {
+         fs::create_symlink(d / "loop", d / "loop");
+         return Args{"replay", (d / "loop").string()};
+       },
+       2, "loop: cannot be read: Too many levels of symbolic links"},
+      {"CertifyCorpusLinkLoopNamed",  // was the raw "filesystem error: status: ..."
+       [](const fs::path& d) {
+         fs::create_symlink(d / "loop", d / "loop");
+         return Args{"certify",  "--quick",
+                     "--corpus", (d / "loop").string(),
+                     "--out",    (d / "out.csv").string()};
+       },
+       2, "loop: cannot be read: Too many levels of symbolic links"},
       {"WidthRangeWritten",  // was "0.000000 to 1.000000"
        [](const fs::path&) {
          return Args{"classify", kBad + "good.vf", "--toi", "--width", "1e-300"};

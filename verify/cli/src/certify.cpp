@@ -178,7 +178,8 @@ void add_certify_options(CLI::App& cmd, CertifyCommand& c) {
   add_threads_option(cmd, c.threads, "the checks");
   add_quiet_flag(cmd, c.progress);
   cmd.add_option("EXTRA", opt.extra_files,
-                 "more query files: native (*.vf) or CCD benchmark CSV (*.csv)");
+                 "more query files: native (*.vf) or CCD benchmark CSV (*.csv),\n"
+                 "read before any check (a bad one is refused at once)");
 }
 
 Command add_certify(CLI::App& app) {

@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "fdh/classify/classify.hpp"
 #include "fdh/os/atomic_file.hpp"
+#include "min_distance_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -168,12 +169,11 @@ Command add_classify(CLI::App& app) {
       ->type_name("W")
       ->transform(real_range(0x1p-52, 1.0, "[2^-52, 1]"))
       ->needs(toi);
-  cmd->add_option("--min-distance", o->min_distance,
-                  "ask every query at minimum separation D: a hit is any time\n"
-                  "within distance D, not only contact (docs/methods.md);\n"
-                  "a file's truth counts only where the file's D is this D;\n"
-                  "methods that answer contact only show n/a (default 0)")
-      ->type_name("D");
+  add_min_distance_option(*cmd, o->min_distance,
+                          "ask every query at minimum separation D: a hit is any time\n"
+                          "within distance D, not only contact (docs/methods.md);\n"
+                          "a file's truth counts only where the file's D is this D;\n"
+                          "methods that answer contact only show n/a (default 0)");
   cmd->add_flag("--check", cli->check,
                 "exit 1 if exact disagrees with a file's truth, or a method\n"
                 "breaks its promise (robust's exact answers, a conservative\n"

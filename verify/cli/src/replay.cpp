@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "fdh/classify/replay.hpp"
+#include "min_distance_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -79,11 +80,10 @@ Command add_replay(CLI::App& app) {
       ->type_name("T")
       ->transform(real_range(0.0, 1.0, "[0, 1]"))
       ->needs(toi);
-  cmd->add_option("--min-distance", o->min_distance,
-                  "ask every case at minimum separation D (default 0:\n"
-                  "contact); a stored truth counts only where the case's D\n"
-                  "is this D; methods that answer contact only are not counted")
-      ->type_name("D");
+  add_min_distance_option(*cmd, o->min_distance,
+                          "ask every case at minimum separation D (default 0:\n"
+                          "contact); a stored truth counts only where the case's D\n"
+                          "is this D; methods that answer contact only are not counted");
   return {cmd, [cli](const Io& io) { return run_replay(*cli, io); }};
 }
 
