@@ -53,6 +53,8 @@ CLI::Validator real_range(double lo, double hi, const std::string& shown) {
         std::optional<double> v = power_of_two(s);
         if (v)
           s = fmt::format("{:.17g}", *v);  // what the option's conversion reads
+        else if (s.compare(0, 2, "2^") == 0)
+          why = quoted_input(s) + " is not 2^N with N a whole number in [-1074, 1023]";
         else
           v = parse_double(s, why);
         if (!v) return why + "; give a number in " + shown;
