@@ -480,6 +480,13 @@ const std::vector<Row>& rows() {
                      "--out",    (d / "out.csv").string()};
        },
        2, "loop: cannot be read: Too many levels of symbolic links"},
+      {"ScenesLinkLoopNamed",  // was the raw "filesystem error: status: ..."
+       [](const fs::path& d) {
+         fs::create_symlink(d / "loop", d / "loop");
+         return Args{"scenes", "--scenes", (d / "loop").string(), "--out",
+                     (d / "out.csv").string()};
+       },
+       2, "loop: cannot be read: Too many levels of symbolic links"},
       {"WidthRangeWritten",  // was "0.000000 to 1.000000"
        [](const fs::path&) {
          return Args{"classify", kBad + "good.vf", "--toi", "--width", "1e-300"};
@@ -717,6 +724,21 @@ TEST(BadInputCatalogueSpecial, CertifyRefusesABadExtraFileAtOnce) {
   EXPECT_LT(seconds, 5.0) << "the extra file was read after the work";
   EXPECT_EQ(out.str(), "");
   EXPECT_FALSE(fs::exists(d / "cert" / "certificate.json"));
+}
+
+// Class 10: `scenes` reads every scene before it runs the first: a bad one is refused before any
+// output is written (it was found after the scenes before it had run and written theirs).
+TEST(BadInputCatalogueSpecial, ScenesReadsEverySceneFirst) {
+  const fs::path d = fresh_temp_dir("catalogue_scenes_first");
+  fs::create_directories(d / "scenes");
+  write_text(d / "scenes" / "a.scene", "name a\ngrid 5\nframes 2\n");
+  write_text(d / "scenes" / "b.scene", "grid 5\nframes nine\n");
+  std::ostringstream out, err;
+  EXPECT_EQ(run_cli({"scenes", "--scenes", (d / "scenes").string(), "--out", (d / "out").string()},
+                    out, err),
+            2);
+  EXPECT_NE(err.str().find("b.scene:2: "), std::string::npos) << err.str();
+  EXPECT_FALSE(fs::exists(d / "out")) << "a scene ran before the bad one was read";
 }
 
 // Class 3: a plug-in's settings go into certificate.md with their control bytes as \xNN.

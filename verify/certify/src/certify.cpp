@@ -156,10 +156,12 @@ void check_soups(Certificate& c, Certifier& cert) {
   cert.check_soups(a, b);
 }
 
-// Every input read before any work (issue 34): a bad extra file or scene is refused at once, not
-// after the stages before it. The extra files' queries are kept for their stage; the scenes are
-// read again by theirs (a few lines each).
+// Every input read before any work (issue 34), before the output folder is made: a bad corpus
+// file, scene or extra file is refused at once, not after the stages before it. The extra files'
+// queries are kept for their stage; the corpus (172 small files) and the scenes (a few lines
+// each) are read again by theirs.
 std::vector<std::vector<QueryRecord>> read_inputs_first(const CertifyOptions& o) {
+  for (const std::string& f : list_query_files(o.corpus_dir)) (void)read_native(f);
   const fs::path scenes = fs::path(o.corpus_dir) / "scenes";
   std::error_code ec;  // a corpus that is a link loop is refused by its reader, by name
   if (fs::is_directory(scenes, ec))
