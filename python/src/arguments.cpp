@@ -23,8 +23,8 @@ std::string dtype_name(const py::array& a) {
 // Integers: each must be within 2^53 in magnitude, as int64 or uint64 (numpy's widest).
 void check_integers(const py::array& a, const char* what) {
   const bool is_signed = a.dtype().kind() == 'i';
-  const py::array wide = is_signed ? py::array(py::array_t<std::int64_t>::ensure(a))
-                                   : py::array(py::array_t<std::uint64_t>::ensure(a));
+  const py::array wide = is_signed ? py::array(converted(py::array_t<std::int64_t>::ensure(a)))
+                                   : py::array(converted(py::array_t<std::uint64_t>::ensure(a)));
   const py::ssize_t n = wide.size();
   const auto limit = std::uint64_t(kExactIntegers);
   for (py::ssize_t i = 0; i < n; ++i) {
@@ -67,7 +67,7 @@ Points points_of(const py::handle& obj, const char* what) {
       throw py::value_error(std::string(what) + ": " + dtype_name(a) +
                             " is not an array of real numbers");
   }
-  return Points::ensure(a);
+  return converted(Points::ensure(a));
 }
 
 std::vector<std::optional<bool>> truths_of(const py::handle& obj, std::size_t n) {
@@ -77,7 +77,8 @@ std::vector<std::optional<bool>> truths_of(const py::handle& obj, std::size_t n)
   if (!a || std::string("biuf").find(a.dtype().kind()) == std::string::npos)
     throw py::value_error("truth must hold one 0 or 1 per query, as numbers");
   // As float64: an integer other than 0 or 1 never becomes 0.0 or 1.0, however large.
-  const auto t = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  const auto t =
+      converted(py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a));
   if (t.ndim() != 1 || std::size_t(t.shape(0)) != n)
     throw py::value_error("truth must hold one 0 or 1 per query");
   for (std::size_t i = 0; i < n; ++i) {

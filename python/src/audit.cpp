@@ -1,8 +1,10 @@
 // fdhcert.audit: a sequence of mesh frames held in numpy arrays, certified as `fdhcert audit`
 // certifies OBJ files: the same job (fdh/audit_job/audit_job.hpp) over the arrays, its result's
 // certificate as a dict.
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <type_traits>
 
 #include "bindings.hpp"
 #include "fdh/audit_job/audit_job.hpp"
@@ -10,28 +12,38 @@
 namespace fdh::python {
 namespace {
 
-using Faces = py::array_t<long long, py::array::c_style | py::array::forcecast>;
-
-// Faces as integers only: a float index (1.5) would be truncated into another face.
-std::vector<Tri> faces_of(const py::object& obj, py::ssize_t vertices, const char* what) {
-  const py::array a = py::array::ensure(obj);
-  if (!a || (a.dtype().kind() != 'i' && a.dtype().kind() != 'u'))
-    throw py::value_error(std::string(what) + " must be an M×3 array of integer vertex indices");
-  const Faces f = Faces::ensure(a);
+// Faces of index type T (int64, or uint64 so that 2^64 - 1 is named as it is, not as -1).
+template <class T>
+std::vector<Tri> faces_as(const py::array& a, py::ssize_t vertices, const char* what) {
+  using Faces = py::array_t<T, py::array::c_style | py::array::forcecast>;
+  const Faces f = converted(Faces::ensure(a));
   if (f.ndim() != 2 || f.shape(1) != 3)
     throw py::value_error(std::string(what) + " must be an M×3 array of vertex indices");
+  if (f.shape(0) == 0)  // as `fdhcert audit` refuses a frame without faces
+    throw py::value_error(std::string(what) + ": no faces (M = 0)");
   std::vector<Tri> out(std::size_t(f.shape(0)));
-  const auto v = f.unchecked<2>();
+  const auto v = f.template unchecked<2>();
   for (py::ssize_t i = 0; i < f.shape(0); ++i)
     for (py::ssize_t c = 0; c < 3; ++c) {
-      const long long x = v(i, c);  // a uint64 beyond 2^63 wraps negative: refused below
-      if (x < 0 || x >= vertices)
+      const T x = v(i, c);
+      bool outside = x >= T(vertices);
+      if constexpr (std::is_signed_v<T>) outside = outside || x < 0;
+      if (outside)
         throw py::value_error(std::string(what) + " " + std::to_string(i) + ": vertex index " +
                               std::to_string(x) + " is not in [0, " + std::to_string(vertices) +
                               ")");
       out[std::size_t(i)][std::size_t(c)] = int(x);
     }
   return out;
+}
+
+// Faces as integers only: a float index (1.5) would be truncated into another face.
+std::vector<Tri> faces_of(const py::object& obj, py::ssize_t vertices, const char* what) {
+  const py::array a = py::array::ensure(obj);
+  if (!a || (a.dtype().kind() != 'i' && a.dtype().kind() != 'u'))
+    throw py::value_error(std::string(what) + " must be an M×3 array of integer vertex indices");
+  return a.dtype().kind() == 'u' ? faces_as<std::uint64_t>(a, vertices, what)
+                                 : faces_as<std::int64_t>(a, vertices, what);
 }
 
 // Row `f` of an F×N×3 array (or the N×3 array itself when `a` has two dimensions).

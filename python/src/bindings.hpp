@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <new>
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <stdexcept>
@@ -48,6 +49,15 @@ std::vector<Query> queries_of(const Points& a, QueryKind kind, double min_distan
 // conversion would change: integers beyond 2^53 in magnitude, complex numbers, floats longer
 // than float64 that do not fit, objects. ValueError starting with `what` (arguments.cpp).
 Points points_of(const py::handle& obj, const char* what);
+
+// pybind11's array_t::ensure clears the Python error it meets and gives a null array. Between
+// number types the one error a conversion can meet is a copy numpy cannot allocate: raised as
+// MemoryError (std::bad_alloc) instead of a null array used later.
+template <class Array>
+Array converted(Array a) {
+  if (!a) throw std::bad_alloc();
+  return a;
+}
 
 // N truths: none for None; else exactly 0 or 1 each (0.7 and 2^32 + 1 are refused).
 std::vector<std::optional<bool>> truths_of(const py::handle& obj, std::size_t n);

@@ -77,7 +77,7 @@ py::dict contact_time(const py::object& given, const std::string& kind) {
   const Points a = points_of(given, "query");
   if (a.ndim() != 2 || a.shape(0) != 8 || a.shape(1) != 3)
     throw py::value_error("contact_time takes one query: an 8×3 array");
-  Points one = py::array::ensure(a);
+  Points one = converted(Points::ensure(a));
   one.resize({py::ssize_t(1), py::ssize_t(8), py::ssize_t(3)});
   const Query q = queries_of(one, kind_named(kind)).front();
   const exact::CcdContact c = exact::ccd(q);

@@ -104,7 +104,7 @@ TEST(AuditReport, ArraysHaveNoPlacesAndNoCaseFiles) {
   EXPECT_FALSE(j["first_violation"].contains("places"));
   EXPECT_FALSE(j["first_violation"].contains("case_file"));
   EXPECT_TRUE(r.case_records().empty());
-  EXPECT_EQ(r.summary_line().rfind("VIOLATION: 2 frames, 1 steps, 1 violations; first: ", 0), 0u);
+  EXPECT_EQ(r.summary_line().rfind("VIOLATION: 2 frames, 1 step, 1 violation; first: ", 0), 0u);
 }
 
 }  // namespace

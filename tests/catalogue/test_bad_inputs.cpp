@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +25,7 @@
 #include <thread>
 #include <vector>
 
+#include "fdh/certify/certify.hpp"
 #include "fdh/cli/cli.hpp"
 #include "fdh/cloth/simulation.hpp"
 #include "fdh/io/case_files.hpp"
@@ -81,6 +83,26 @@ class EnvGuard {
 };
 
 using Args = std::vector<std::string>;
+
+// A frame for `audit`: a cloth triangle far above two obstacle triangles that cross each other.
+// Clean, as obstacles may cross; were the obstacles read as cloth, a self-intersection.
+const std::string kCrossedObstacles =
+    "o cloth\nv 0 0 5\nv 1 0 5\nv 1 1 5\nf 1 2 3\no obstacles\nv -1 0 0\nv 1 0 0\n"
+    "v 0 0 1\nv 0 -1 0.5\nv 0 1 0.5\nv 0 0 -0.5\nf 4 5 6\nf 7 8 9\n";
+// A cloth square and an obstacle triangle through it: a violation within the frame.
+const std::string kPierced =
+    "o cloth\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\no obstacles\n"
+    "v 0.5 0.2 -1\nv 0.5 0.2 1\nv 0.6 0.9 0\nf 5 6 7\n";
+// The options of a `replay --toi` on one stored moving case.
+const std::string kMovingCase = FDH_SOURCE_DIR "/corpus/toi/float-cubic/coplanar";
+
+// Two frames for `audit`: `first`, then `second`, in a folder of their own.
+std::string two_frames(const fs::path& d, const std::string& first, const std::string& second) {
+  fs::create_directories(d / "seq");
+  write_text(d / "seq" / "f1.obj", first);
+  write_text(d / "seq" / "f2.obj", second);
+  return (d / "seq").string();
+}
 
 // The catalogue itself: one row per class of bad input. A table, so longer than a function
 // should be; each row is read alone.
@@ -355,6 +377,179 @@ const std::vector<Row>& rows() {
          return Args{"simulate", kBad + "damping_dt.scene"};
        },
        2, "damping_dt.scene:2: damping 1000 1/s times dt 0.01 s must be at most 1"},
+      // Issue 34, class 1: a wrong answer from a byte-order mark; other encodings, unknown words.
+      {"ObjByteOrderMarkKeepsTheFirstLine",  // `o cloth` was lost: 1 violation, not clean
+       [](const fs::path& d) {
+         return Args{"audit", write_text(d / "bom.obj", "\xEF\xBB\xBF" + kCrossedObstacles)};
+       },
+       0, "clean: 1 frame, 0 steps, 0 violations"},
+      {"ObjUtf16RefusedByName",  // was "no faces"
+       [](const fs::path& d) {
+         std::string utf16 = "\xFF\xFE";
+         for (const char c : kCrossedObstacles) utf16 += std::string(1, c) + '\0';
+         return Args{"audit", write_text(d / "u16.obj", utf16)};
+       },
+       2, "u16.obj:1: the file is UTF-16; an OBJ file must be UTF-8 or ASCII"},
+      {"ObjUnknownStatementRefused",
+       [](const fs::path& d) {
+         return Args{"audit", write_text(d / "w.obj", "vv 0 0 0\n" + kCrossedObstacles)};
+       },
+       2, "w.obj:1: unknown statement 'vv': not an OBJ keyword"},
+      // Class 3: a plug-in's words are quoted as any input is.
+      {"PluginRefusalEscaped",
+       [](const fs::path&) {
+         return Args{"classify", kBad + "good.vf", "--plugin",
+                     FDH_TUNABLE_PLUGIN ":answer=\x1b[2J\x07x"};
+       },
+       2, "refused its settings: 'cannot take answer=\\x1b[2J\\x07x"},
+      // Class 4 and 6: NaN passed CLI11's Range (both comparisons false).
+      {"WidthNaN",
+       [](const fs::path&) {
+         return Args{"classify", kBad + "good.vf", "--toi", "--width", "nan"};
+       },
+       2, "--width: 'nan' is not a finite number; give a number in [2^-52, 1]"},
+      {"ReplayToleranceNaN",  // exited 0
+       [](const fs::path&) {
+         return Args{"replay", kMovingCase, "--toi", "--toi-tolerance", "nan"};
+       },
+       2, "--toi-tolerance: 'nan' is not a finite number; give a number in [0, 1]"},
+      {"FuzzWidthNaN",
+       [](const fs::path& d) {
+         return Args{"fuzz",
+                     "--method",
+                     "robust",
+                     "--family",
+                     "random-linear",
+                     "--out",
+                     (d / "out.csv").string(),
+                     "--toi",
+                     "--width",
+                     "nan"};
+       },
+       2, "--width: 'nan' is not a finite number"},
+      {"BudgetNaN",
+       [](const fs::path&) {
+         return Args{"certify", "--budget", "nan"};
+       },
+       2, "--budget: 'nan' is not a finite number; give a number in [0.001, 1e+07]"},
+      {"PluginTimeoutNaN",
+       [](const fs::path&) {
+         return Args{"classify", kBad + "good.vf", "--plugin-timeout", "nan"};
+       },
+       2, "--plugin-timeout: 'nan' is not a finite number"},
+      {"RatioLimitNaN",
+       [](const fs::path&) {
+         return Args{"classify", kBad + "good.vf", "--ratio-limit", "nan"};
+       },
+       2, "--ratio-limit: 'nan' is not a finite number; give a number in [0.001, 1000]"},
+      {"MinDistanceNaN",  // "fdhcert: min distance must be ...", no option named
+       [](const fs::path&) {
+         return Args{"classify", kBad + "good.vf", "--min-distance", "nan"};
+       },
+       2, "--min-distance: takes a finite number >= 0: 'nan' is not a finite number"},
+      // Class 9: messages that said something else than what was wrong.
+      {"ObjHexFloatAndUnderflowTaken",  // were "not a finite number"
+       [](const fs::path& d) {
+         std::string text = kCrossedObstacles;
+         text.replace(text.find("v 0 0 5"), 7, "v 0x0p+0 1e-400 5");
+         return Args{"audit", write_text(d / "hex.obj", text)};
+       },
+       0, "clean: 1 frame, 0 steps, 0 violations"},
+      {"ObjOverflowNamed",
+       [](const fs::path& d) {
+         return Args{"audit", write_text(d / "o.obj", "v 1e400 0 0\n" + kCrossedObstacles)};
+       },
+       2, "o.obj:1: coordinate 1: '1e400' is outside the range of a double"},
+      {"LinkLoopNamed",  // was "no such file or folder"
+       [](const fs::path& d) {
+         fs::create_symlink(d / "loop.obj", d / "loop.obj");
+         return Args{"audit", (d / "loop.obj").string()};
+       },
+       2, "loop.obj: cannot be read: Too many levels of symbolic links"},
+      {"ReplayLinkLoopNamed",  // was "no such file or folder"
+       [](const fs::path& d) {
+         fs::create_symlink(d / "loop", d / "loop");
+         return Args{"replay", (d / "loop").string()};
+       },
+       2, "loop: cannot be read: Too many levels of symbolic links"},
+      {"CertifyCorpusLinkLoopNamed",  // was the raw "filesystem error: status: ..."
+       [](const fs::path& d) {
+         fs::create_symlink(d / "loop", d / "loop");
+         return Args{"certify",  "--quick",
+                     "--corpus", (d / "loop").string(),
+                     "--out",    (d / "out.csv").string()};
+       },
+       2, "loop: cannot be read: Too many levels of symbolic links"},
+      {"ScenesLinkLoopNamed",  // was the raw "filesystem error: status: ..."
+       [](const fs::path& d) {
+         fs::create_symlink(d / "loop", d / "loop");
+         return Args{"scenes", "--scenes", (d / "loop").string(), "--out",
+                     (d / "out.csv").string()};
+       },
+       2, "loop: cannot be read: Too many levels of symbolic links"},
+      {"WidthRangeWritten",  // was "0.000000 to 1.000000"
+       [](const fs::path&) {
+         return Args{"classify", kBad + "good.vf", "--toi", "--width", "1e-300"};
+       },
+       2, "--width: Value '1e-300' not in range [2^-52, 1]"},
+      {"WidthAsTheHelpWritesIt",
+       [](const fs::path&) {
+         return Args{"classify", "--methods", "exact", kBad + "good.vf",
+                     "--toi",    "--width",   "2^-10"};
+       },
+       0, "1 static vertex-face"},
+      {"WidthWithoutToi",  // was ignored
+       [](const fs::path&) {
+         return Args{"classify", kBad + "good.vf", "--width", "2^-10"};
+       },
+       2, "--width requires --toi"},
+      {"ReplayWidthWithoutToi",
+       [](const fs::path&) {
+         return Args{"replay", kMovingCase, "--width", "2^-10"};
+       },
+       2, "--width requires --toi"},
+      {"AuditPlacesByTheJsonRule",  // a Latin-1 name: U+EFE9 in JSON, as docs/formats.md says
+       [](const fs::path& d) {
+         return Args{"audit", "--json", write_text(d / "caf\xe9.obj", kPierced)};
+       },
+       1, "caf\xee\xbf\xa9.obj:6"},
+      {"VertexMoreNamesTheLine",  // named the file only
+       [](const fs::path& d) {
+         return Args{"audit", two_frames(d, kCrossedObstacles, kCrossedObstacles + "v 0 0 0\n")};
+       },
+       2, "f2.obj:15: 10 vertices, and "},
+      {"OneFrame",  // "1 frames"
+       [](const fs::path& d) {
+         return Args{"audit", write_text(d / "one.obj", kCrossedObstacles)};
+       },
+       0, "clean: 1 frame, 0 steps"},
+      {"ClothNamedInAFileWithoutObjects",  // "(objects: '')"
+       [](const fs::path& d) {
+         return Args{"audit", write_text(d / "n.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+                     "--cloth", "sheet"};
+       },
+       2, "n.obj: no object named 'sheet' (the file has no o or g line; without --cloth"},
+      {"RotatedFaceIsTheSameFace",  // was "differs"
+       [](const fs::path& d) {
+         std::string later = kCrossedObstacles;
+         later.replace(later.find("f 4 5 6"), 7, "f 5 6 4");
+         return Args{"audit", two_frames(d, kCrossedObstacles, later)};
+       },
+       0, "clean: 2 frames, 1 step, 0 violations"},
+      {"ReversedFaceStillDiffers",
+       [](const fs::path& d) {
+         std::string later = kCrossedObstacles;
+         later.replace(later.find("f 4 5 6"), 7, "f 4 6 5");
+         return Args{"audit", two_frames(d, kCrossedObstacles, later)};
+       },
+       2, "f2.obj:13: face 2 differs from "},
+      // Class 10: an extra file is read before the work starts (it was read last, after 13 s).
+      {"CertifyReadsExtraFilesFirst",
+       [](const fs::path& d) {
+         return Args{"certify", "--quick", "--out", (d / "cert").string(),
+                     write_text(d / "BAD.vf", "vf q 1 2 3\n")};
+       },
+       2, "BAD.vf:1: expected 'vf <id> <24 numbers> [truth]'"},
   };
   return r;
 }
@@ -491,6 +686,80 @@ TEST(BadInputCatalogueSpecial, DivergingRunStopsWithAnError) {
     const std::runtime_error& as_runtime = e;  // what run_cli catches
     (void)as_runtime;
   }
+}
+
+// Issue 34, class 9: the quads note counts a later frame's quads too (it was printed only when
+// the first frame had them), in the singular for one.
+TEST(BadInputCatalogueSpecial, QuadsOfALaterFrameAreSaid) {
+  const fs::path d = fresh_temp_dir("catalogue_later_quads");
+  const std::string tris = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+  const std::string quad = "v 0 0 0.1\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+  const std::string seq = two_frames(d, tris, quad);
+  std::ostringstream out, err;
+  EXPECT_EQ(run_cli({"audit", seq}, out, err), 0) << err.str();
+  EXPECT_EQ(err.str(),
+            "fdhcert: note: 1 face of more than three vertices was split into triangles (fan)\n");
+}
+
+// Class 9: a clean audit --out makes no empty cases/ folder; one with a violation has its cases.
+TEST(BadInputCatalogueSpecial, CleanAuditMakesNoCasesFolder) {
+  const fs::path d = fresh_temp_dir("catalogue_no_cases");
+  std::ostringstream out, err;
+  const std::string clean = write_text(d / "c.obj", kCrossedObstacles);
+  EXPECT_EQ(run_cli({"audit", clean, "--out", (d / "out").string()}, out, err), 0) << err.str();
+  EXPECT_TRUE(fs::exists(d / "out" / "audit.json"));
+  EXPECT_FALSE(fs::exists(d / "out" / "cases"));
+}
+
+// Class 10: a bad extra file is refused before the work starts: at once, not after the corpus,
+// the families and the scenes (13 s with --quick).
+TEST(BadInputCatalogueSpecial, CertifyRefusesABadExtraFileAtOnce) {
+  const fs::path d = fresh_temp_dir("catalogue_certify_extra");
+  const std::string bad = write_text(d / "BAD.vf", "vf q 1 2 3\n");
+  std::ostringstream out, err;
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(run_cli({"certify", "--quick", "--out", (d / "cert").string(), bad}, out, err), 2);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 5.0) << "the extra file was read after the work";
+  EXPECT_EQ(out.str(), "");
+  EXPECT_FALSE(fs::exists(d / "cert" / "certificate.json"));
+}
+
+// Class 10: `scenes` reads every scene before it runs the first: a bad one is refused before any
+// output is written (it was found after the scenes before it had run and written theirs).
+TEST(BadInputCatalogueSpecial, ScenesReadsEverySceneFirst) {
+  const fs::path d = fresh_temp_dir("catalogue_scenes_first");
+  fs::create_directories(d / "scenes");
+  write_text(d / "scenes" / "a.scene", "name a\ngrid 5\nframes 2\n");
+  write_text(d / "scenes" / "b.scene", "grid 5\nframes nine\n");
+  std::ostringstream out, err;
+  EXPECT_EQ(run_cli({"scenes", "--scenes", (d / "scenes").string(), "--out", (d / "out").string()},
+                    out, err),
+            2);
+  EXPECT_NE(err.str().find("b.scene:2: "), std::string::npos) << err.str();
+  EXPECT_FALSE(fs::exists(d / "out")) << "a scene ran before the bad one was read";
+}
+
+// Class 3: a plug-in's settings go into certificate.md with their control bytes as \xNN.
+TEST(BadInputCatalogueSpecial, CertificateWritesSettingsPrintable) {
+  const fs::path d = fresh_temp_dir("catalogue_certificate_settings");
+  Certificate c;
+  c.options.out_dir = (d / "cert").string();
+  fs::create_directories(c.options.out_dir);  // as certify makes it
+  c.options.plugins = {{"p\x1b.so",
+                        "p",
+                        {{"mode",
+                          "a\x1b[2J\x07"
+                          "b"}},
+                        false}};
+  write_certificate(c);
+  std::ifstream in(d / "cert" / "certificate.md", std::ios::binary);
+  const std::string md((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(md.find("`mode=a\\x1b[2J\\x07b`"), std::string::npos) << md;
+  EXPECT_NE(md.find("`p\\x1b.so`"), std::string::npos) << md;
+  EXPECT_EQ(md.find('\x1b'), std::string::npos);
+  EXPECT_EQ(md.find('\x07'), std::string::npos);
 }
 
 }  // namespace fdh::verify::bad_inputs_catalogue

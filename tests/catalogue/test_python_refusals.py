@@ -176,3 +176,73 @@ def test_ctrl_c_stops_a_long_simulate_within_a_second():
     assert out == "interrupted\n", err
     print(f"KeyboardInterrupt {took:.3f} s after SIGINT")
     assert took < 1.0
+
+
+# Issue 34: a square cloth pierced by an obstacle triangle in every frame (a violation), as
+# arrays; each refusal below is run in a child first where it crashed the interpreter before.
+SQUARE = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype=np.float64)
+SQUARE_FACES = np.array([[0, 1, 2], [0, 2, 3]])
+PIERCING = np.array([[0.5, 0.2, -1], [0.5, 0.2, 1], [0.6, 0.9, 0]], dtype=np.float64)
+PIERCING_FACES = np.array([[0, 1, 2]])
+
+KEEP_PROBE = """
+import sys
+import numpy as np
+import fdhcert
+frames = np.array([[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]] * 2, dtype=np.float64)
+obstacle = np.array([[0.5, 0.2, -1], [0.5, 0.2, 1], [0.6, 0.9, 0]], dtype=np.float64)
+try:
+    fdhcert.audit(frames, np.array([[0, 1, 2], [0, 2, 3]]), obstacle, np.array([[0, 1, 2]]),
+                  keep=int(sys.argv[1]))
+    print("taken")
+except ValueError as e:
+    print("ValueError:", e)
+"""
+
+
+@pytest.mark.parametrize("keep", [0, -1])
+def test_audit_keep_below_1_is_refused_not_a_crash(keep):
+    run = subprocess.run([sys.executable, "-c", KEEP_PROBE, str(keep)], capture_output=True,
+                         text=True)
+    assert run.returncode == 0, f"status {run.returncode}: {run.stderr}"
+    assert run.stdout.startswith("ValueError: keep must be 1 or more"), run.stdout
+
+
+MEMORY_PROBE = """
+import numpy as np
+import fdhcert
+# 2^40 points of float32 in 12 bytes (a broadcast view): their float64 copy cannot be made.
+huge = np.broadcast_to(np.zeros(3, dtype=np.float32), (2**40, 3))
+try:
+    fdhcert.kdop(huge, 6)
+    print("taken")
+except MemoryError:
+    print("MemoryError")
+"""
+
+
+def test_an_array_too_large_to_convert_raises_memory_error():
+    run = subprocess.run([sys.executable, "-c", MEMORY_PROBE], capture_output=True, text=True)
+    assert run.returncode == 0, f"status {run.returncode}: {run.stderr}"
+    assert run.stdout == "MemoryError\n"
+
+
+def test_audit_without_faces_is_refused_as_the_program_does():
+    frames = np.stack([SQUARE, SQUARE])
+    with pytest.raises(ValueError, match=r"faces: no faces"):
+        fdhcert.audit(frames, np.zeros((0, 3), dtype=np.int64), PIERCING, PIERCING_FACES)
+    with pytest.raises(ValueError, match=r"obstacle_faces: no faces"):
+        fdhcert.audit(frames, SQUARE_FACES, PIERCING, np.zeros((0, 3), dtype=np.int64))
+
+
+def test_audit_names_the_frame_of_a_nan():
+    frames = np.stack([SQUARE, SQUARE, SQUARE])
+    frames[2, 1, 0] = np.nan
+    with pytest.raises(ValueError, match=r"^frame 2: "):
+        fdhcert.audit(frames, SQUARE_FACES)
+
+
+def test_audit_names_a_uint64_index_as_it_is():
+    faces = np.array([[0, 1, 2**64 - 1]], dtype=np.uint64)
+    with pytest.raises(ValueError, match=r"vertex index 18446744073709551615 is not in \[0, 4\)"):
+        fdhcert.audit(np.stack([SQUARE]), faces)

@@ -61,14 +61,13 @@ std::string AuditResult::written_text(const std::string& dir) const {
 void AuditResult::write(const std::string& dir) const {
   namespace fs = std::filesystem;
   std::error_code ec;
-  fs::create_directories(fs::path(dir) / "cases", ec);
+  // cases/ only when there are case files: a clean run leaves no empty folder.
+  fs::create_directories(report_.case_records().empty() ? fs::path(dir) : fs::path(dir) / "cases",
+                         ec);
   if (ec) throw std::runtime_error(dir + ": cannot create folder: " + ec.message());
   write_file_atomically(dir + "/audit.json", json_text(report_.json(), "audit.json"));
   write_file_atomically(dir + "/audit.md", report_.markdown());
-  if (first_ && !report_.kept().empty())
-    write_file_atomically(dir + "/first-violation.png",
-                          violation_picture(first_->cloth, first_->obstacle,
-                                            report_.kept().front().violation, topology_));
+  if (!picture_.empty()) write_file_atomically(dir + "/first-violation.png", picture_);
   for (const KeptViolation& k : report_.kept()) {
     if (k.case_file.empty()) continue;
     const std::size_t f = std::size_t(k.violation.frame);
@@ -94,10 +93,12 @@ std::string detail_of(const audit::FrameReport& r) {
   return n ? fmt::format("{} violations in frame {}", n, r.frame) : std::string();
 }
 
-// The engine's refusal of a frame, named by its file when it has one.
-[[noreturn]] void refuse(const std::string& file, const std::invalid_argument& e) {
-  if (file.empty()) throw;
-  throw InputError(file, 0, e.what());
+// The engine's refusal of frame `i` (-1: of the faces), named by its file when it has one, else
+// by the frame's index.
+[[noreturn]] void refuse(const std::string& file, int i, const std::invalid_argument& e) {
+  if (!file.empty()) throw InputError(file, 0, e.what());
+  if (i < 0) throw;
+  throw std::invalid_argument(fmt::format("frame {}: {}", i, e.what()));
 }
 
 }  // namespace
@@ -110,10 +111,9 @@ AuditResult run_audit(FrameSource& source, const AuditOptions& o, const Progress
   try {
     auditor.emplace(t, o.engine());
   } catch (const std::invalid_argument& e) {  // the reader checks the faces: not expected
-    refuse(source.name(0), e);
+    refuse(source.name(0), -1, e);
   }
   AuditResult result(AuditReport(t, o.engine(), o.keep, o.files));
-  result.topology_ = t;
   Placed prev;
   for (int i = 0; i < source.frames(); ++i) {
     MeshFrame m = source.read(i);
@@ -121,7 +121,7 @@ AuditResult run_audit(FrameSource& source, const AuditOptions& o, const Progress
     try {
       r = auditor->add_frame(m.cloth, m.obstacle);
     } catch (const std::invalid_argument& e) {
-      refuse(m.file, e);
+      refuse(m.file, i, e);
     }
     result.names_.push_back(source.name(i));
     Placed now{std::move(m.cloth_vertices), std::move(m.cloth_tris), std::move(m.obstacle_vertices),
@@ -133,6 +133,11 @@ AuditResult run_audit(FrameSource& source, const AuditOptions& o, const Progress
       result.first_ = AuditResult::FirstFrame{std::move(m.cloth), std::move(m.obstacle)};
     prev = std::move(now);
     report(progress, {"audit", i + 1, source.frames(), "frames", detail_of(r)});
+  }
+  if (result.first_ && !result.report_.kept().empty()) {  // drawn here: its memory counts too
+    result.picture_ = violation_picture(result.first_->cloth, result.first_->obstacle,
+                                        result.report_.kept().front().violation, t);
+    result.first_.reset();
   }
   result.report_.finish(
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "fdh/io/input_error.hpp"
 #include "fdh/io/json_text.hpp"
 
 namespace fdh::verify {
@@ -135,12 +136,21 @@ std::vector<QueryRecord> AuditReport::case_records() const {
   return out;
 }
 
+namespace {
+
+// "1 frame", "2 frames".
+std::string counted(long n, const char* what) {
+  return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s");
+}
+
+}  // namespace
+
 std::string AuditReport::summary_line() const {
   const int steps = std::max(0, frames() - 1);
-  if (clean())
-    return fmt::format("clean: {} frames, {} steps, 0 violations (exact)", frames(), steps);
-  return fmt::format("VIOLATION: {} frames, {} steps, {} violations; first: {}", frames(), steps,
-                     total_.total(), describe(kept_.front().violation));
+  const std::string run = counted(frames(), "frame") + ", " + counted(steps, "step");
+  if (clean()) return fmt::format("clean: {}, 0 violations (exact)", run);
+  return fmt::format("VIOLATION: {}, {}; first: {}", run, counted(total_.total(), "violation"),
+                     describe(kept_.front().violation));
 }
 
 std::string AuditReport::text(int max_frames) const {
@@ -236,10 +246,10 @@ std::string AuditReport::markdown() const {
   const int steps = std::max(0, frames() - 1);
   std::string md = "# Audit\n\n**" + summary_line() + "**\n\n";
   md += fmt::format(
-      "Cloth: {} vertices, {} triangles; obstacles: {} vertices, {} triangles; {} frames, {} "
-      "steps; FDH k = {}.\n\n",
+      "Cloth: {} vertices, {} triangles; obstacles: {} vertices, {} triangles; {}, {}; FDH k = "
+      "{}.\n\n",
       topology_.cloth_vertices, topology_.cloth.size(), topology_.obstacle_vertices,
-      topology_.obstacle.size(), frames(), steps, options_.k);
+      topology_.obstacle.size(), counted(frames(), "frame"), counted(steps, "step"), options_.k);
   md += "| kind | count |\n|---|---|\n";
   for (const ViolationKind k : kKinds)
     md += fmt::format("| {} | {} |\n", audit::to_string(k), count_of(total_, k));
@@ -250,7 +260,8 @@ std::string AuditReport::markdown() const {
     md += "| # | what | where | case file |\n|---|---|---|---|\n";
     for (std::size_t i = 0; i < kept_.size(); ++i) {
       std::string where;
-      for (const std::string& p : kept_[i].places) where += (where.empty() ? "" : ", ") + p;
+      for (const std::string& p : kept_[i].places)
+        where += (where.empty() ? "" : ", ") + printable(p);
       md += fmt::format("| {} | {} | {} | {} |\n", i + 1, describe(kept_[i].violation), where,
                         kept_[i].case_file);
     }

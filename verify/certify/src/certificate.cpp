@@ -7,6 +7,7 @@
 
 #include "fdh/certify/certify.hpp"
 #include "fdh/classify/toi_report.hpp"
+#include "fdh/io/input_error.hpp"
 #include "fdh/io/json_text.hpp"
 #include "fdh/os/atomic_file.hpp"
 
@@ -291,8 +292,8 @@ void plugins_markdown(Out to, const Certificate& c) {
   for (const CertifiedPlugin& p : c.options.plugins) {
     std::string settings;
     for (const auto& [key, value] : p.settings)
-      settings += (settings.empty() ? "" : ", ") + ("`" + key + "=" + value + "`");
-    fmt::format_to(to, "| `{}` | `{}` | {} | {} |\n", p.name, p.file,
+      settings += (settings.empty() ? "" : ", ") + ("`" + key + "=" + printable(value) + "`");
+    fmt::format_to(to, "| `{}` | `{}` | {} | {} |\n", p.name, printable(p.file),
                    settings.empty() ? "none" : settings, p.thread_safe ? "yes" : "no");
   }
   fmt::format_to(to, "\n");

@@ -81,7 +81,8 @@ void note_cut(Certificate& c, const std::string& stage, long done, long total,
 // 64x64 and more also runs its step on every core), counted in the scenes' order.
 void check_scenes(Certificate& c, Certifier& cert) {
   const fs::path dir = fs::path(c.options.corpus_dir) / "scenes";
-  if (!fs::is_directory(dir)) return;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return;
   const std::vector<std::string> files = scene_files(dir.string());
   if (c.options.budget.spent()) return note_cut(c, "scenes", 0, long(files.size()), "scenes");
   tell(c, "scenes", 0, long(files.size()));
@@ -155,11 +156,26 @@ void check_soups(Certificate& c, Certifier& cert) {
   cert.check_soups(a, b);
 }
 
-void check_extra_files(Certificate& c, Certifier& cert) {
+// Every input read before any work (issue 34), before the output folder is made: a bad corpus
+// file, scene or extra file is refused at once, not after the stages before it. The extra files'
+// queries are kept for their stage; the corpus (172 small files) and the scenes (a few lines
+// each) are read again by theirs.
+std::vector<std::vector<QueryRecord>> read_inputs_first(const CertifyOptions& o) {
+  for (const std::string& f : list_query_files(o.corpus_dir)) (void)read_native(f);
+  const fs::path scenes = fs::path(o.corpus_dir) / "scenes";
+  std::error_code ec;  // a corpus that is a link loop is refused by its reader, by name
+  if (fs::is_directory(scenes, ec))
+    for (const std::string& f : scene_files(scenes.string())) (void)read_scene(f);
+  std::vector<std::vector<QueryRecord>> extra;
+  for (const std::string& f : o.extra_files) extra.push_back(read_query_file(f));
+  return extra;
+}
+
+void check_extra_files(Certificate& c, Certifier& cert,
+                       const std::vector<std::vector<QueryRecord>>& extra) {
   long done = 0, total = 0;
-  for (const std::string& f : c.options.extra_files) {
-    tell(c, "extra files", done++, long(c.options.extra_files.size()));
-    const std::vector<QueryRecord> qs = read_query_file(f);
+  for (const std::vector<QueryRecord>& qs : extra) {
+    tell(c, "extra files", done++, long(extra.size()));
     total += long(qs.size());
     c.extra_queries += cert.check_queries(qs);
   }
@@ -247,12 +263,13 @@ Certificate certify(const CertifyOptions& options) {
   c.commit = build_commit();
   c.cgal = exact::cgal_library_version();
   c.gmp = exact::gmp_library_version();
+  const std::vector<std::vector<QueryRecord>> extra = read_inputs_first(c.options);
   Certifier cert(c);
   check_corpus(c, cert);
   check_families(c, cert);
   check_scenes(c, cert);
   check_soups(c, cert);
-  check_extra_files(c, cert);
+  check_extra_files(c, cert, extra);
   note_metamorphic_cut(c);
   check_delta(c);
   if (c.options.budget.spent()) {

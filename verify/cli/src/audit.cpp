@@ -47,8 +47,10 @@ replayable case per kept step violation (`fdhcert classify` / `replay`, truth
 1). See docs/audit.md.
 Exit status: 0 clean; 1 a violation; 2 bad input (FILE:LINE: what; nothing is
 written): a frame whose faces differ from the first's, a non-manifold cloth, a
-degenerate face, a coordinate that is not a finite number, a file past the
-bounds of docs/limits.md.)";
+degenerate face, a coordinate that is not a finite number, a line that is not
+an OBJ statement (vt, vn, s, usemtl, ... are read past), a UTF-16 or UTF-32
+file (a UTF-8 byte-order mark is taken), a file past the bounds of
+docs/limits.md.)";
 
 // The command line: the frame source's arguments, the outputs, and the job's options.
 struct AuditCommand {
@@ -63,15 +65,16 @@ int run_audit_command(AuditCommand& o, const Io& io) {
   if (!o.out.empty()) check_output_dir(o.out, {"audit.json", "audit.md", "first-violation.png"});
   const ThreadLimit threads(o.job.threads);
   const MeshSequence seq(o.frames, o.cloth, o.obstacles);
-  if (seq.polygons() > 0)
-    io.err << fmt::format(
-        "fdhcert: note: {} faces of more than three vertices were split into triangles (fan)\n",
-        seq.polygons());
   ObjFrames source(seq);
   o.job.files = !o.out.empty();
   ProgressLine progress(io.err, progress_wanted(io, o.progress));
   const AuditResult result = run_audit(source, o.job, progress.sink());
   progress.clear();
+  // After the run: a later frame's quads count too (the most in any one frame).
+  if (const long n = seq.polygons(); n > 0)
+    io.err << fmt::format(
+        "fdhcert: note: {} face{} of more than three vertices {} split into triangles (fan)\n", n,
+        n == 1 ? "" : "s", n == 1 ? "was" : "were");
   if (!o.out.empty()) result.write(o.out);
   if (o.json)
     print_json(io.out, result.to_json());

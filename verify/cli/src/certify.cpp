@@ -110,13 +110,13 @@ int run_certify(const CertifyCommand& cmd, const Io& io) {
   CertifyOptions opt = cmd.options;
   check_output_dir(opt.out_dir, {"certificate.json", "certificate.md"});
   opt.corpus_dir = corpus_or_default(opt.corpus_dir);
-  io.out << "corpus: " << opt.corpus_dir << "\n";
   opt.plugins = certified_plugins();
   const ThreadLimit threads(cmd.threads, io.err);
   ProgressLine progress(io.err, progress_wanted(io, cmd.progress));
   opt.progress = progress.sink("certify: ");
-  const Certificate c = certify(opt);
+  const Certificate c = certify(opt);  // its inputs read first: bad input prints nothing
   progress.clear();
+  io.out << "corpus: " << opt.corpus_dir << "\n";
   write_certificate(c);
   const std::filesystem::path dir(opt.out_dir);
   io.out << verdict(c) << ": " << c.checks() << " checks, " << c.violations() << " violations ("
@@ -178,7 +178,8 @@ void add_certify_options(CLI::App& cmd, CertifyCommand& c) {
   add_threads_option(cmd, c.threads, "the checks");
   add_quiet_flag(cmd, c.progress);
   cmd.add_option("EXTRA", opt.extra_files,
-                 "more query files: native (*.vf) or CCD benchmark CSV (*.csv)");
+                 "more query files: native (*.vf) or CCD benchmark CSV (*.csv),\n"
+                 "read before any check (a bad one is refused at once)");
 }
 
 Command add_certify(CLI::App& app) {

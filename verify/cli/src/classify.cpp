@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "fdh/classify/classify.hpp"
 #include "fdh/os/atomic_file.hpp"
+#include "min_distance_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -157,22 +158,22 @@ Command add_classify(CLI::App& app) {
                     "--time's and --time-ratio's timed batches per query and\n"
                     "method (default 7)",
                     "N", 1, 100);
-  cmd->add_flag("--toi", o->toi,
-                "also the time of impact of every method that gives one:\n"
-                "late, zero and how early against the exact earliest\n"
-                "contact (a second table, or \"toi\" in --json); with\n"
-                "--per-query, each method's enclosure t_lo, t_hi too");
+  CLI::Option* toi = cmd->add_flag("--toi", o->toi,
+                                   "also the time of impact of every method that gives one:\n"
+                                   "late, zero and how early against the exact earliest\n"
+                                   "contact (a second table, or \"toi\" in --json); with\n"
+                                   "--per-query, each method's enclosure t_lo, t_hi too");
   cmd->add_option("--width", o->width,
-                  "the width of enclosure asked of each time of impact\n"
-                  "(default 2^-30 of the step)")
+                  "with --toi: the width of enclosure asked of each time of\n"
+                  "impact, in [2^-52, 1] steps (default 2^-30; 2^-N is taken)")
       ->type_name("W")
-      ->check(CLI::Range(0x1p-52, 1.0));
-  cmd->add_option("--min-distance", o->min_distance,
-                  "ask every query at minimum separation D: a hit is any time\n"
-                  "within distance D, not only contact (docs/methods.md);\n"
-                  "a file's truth counts only where the file's D is this D;\n"
-                  "methods that answer contact only show n/a (default 0)")
-      ->type_name("D");
+      ->transform(real_range(0x1p-52, 1.0, "[2^-52, 1]"))
+      ->needs(toi);
+  add_min_distance_option(*cmd, o->min_distance,
+                          "ask every query at minimum separation D: a hit is any time\n"
+                          "within distance D, not only contact (docs/methods.md);\n"
+                          "a file's truth counts only where the file's D is this D;\n"
+                          "methods that answer contact only show n/a (default 0)");
   cmd->add_flag("--check", cli->check,
                 "exit 1 if exact disagrees with a file's truth, or a method\n"
                 "breaks its promise (robust's exact answers, a conservative\n"

@@ -3,9 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "fdh/io/json_text.hpp"
+#include "fdh/io/query_io.hpp"  // parse_double
 
 namespace fdh::verify {
 
@@ -21,6 +25,44 @@ std::string quoted_input(std::string_view s, std::size_t shown) {
   out += "'";
   if (s.size() > shown) out += fmt::format("... ({} bytes)", s.size());
   return out;
+}
+
+std::string range_text(double lo, double hi) {
+  return fmt::format("[{:g}, {:g}]", lo, hi);
+}
+
+namespace {
+
+// `2^N` or `2^-N` (N whole, the double's exponents), else nothing.
+std::optional<double> power_of_two(const std::string& s) {
+  if (s.size() < 3 || s.compare(0, 2, "2^") != 0) return std::nullopt;
+  int n = 0;
+  const char *b = s.data() + 2, *e = s.data() + s.size();
+  const auto [p, ec] = std::from_chars(b, e, n);
+  if (ec != std::errc() || p != e || n < -1074 || n > 1023) return std::nullopt;
+  return std::ldexp(1.0, n);
+}
+
+}  // namespace
+
+CLI::Validator real_range(double lo, double hi, const std::string& shown) {
+  return CLI::Validator(
+      [lo, hi, shown](std::string& s) -> std::string {
+        const std::string given = s;
+        std::string why;
+        std::optional<double> v = power_of_two(s);
+        if (v)
+          s = fmt::format("{:.17g}", *v);  // what the option's conversion reads
+        else if (s.compare(0, 2, "2^") == 0)
+          why = quoted_input(s) + " is not 2^N with N a whole number in [-1074, 1023]";
+        else
+          v = parse_double(s, why);
+        if (!v) return why + "; give a number in " + shown;
+        if (!(*v >= lo && *v <= hi))
+          return "Value " + quoted_input(given) + " not in range " + shown;
+        return {};
+      },
+      "");
 }
 
 CLI::Validator known_method() {

@@ -23,6 +23,7 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "fdh/check/registry.hpp"
@@ -71,11 +72,23 @@ inline CLI::App* add_command(CLI::App& app, const char* name, const char* about,
   cmd->footer(footer);
   return cmd;
 }
-// A whole number in [lo, hi]; outside it is a usage error naming the range.
+// "[0.001, 1000]": a closed range as the help and the errors write it.
+std::string range_text(double lo, double hi);
+
+// A real number in [lo, hi], `shown` as the help and the error write the range ("[2^-52, 1]"):
+// NaN, which passes CLI::Range (both of its comparisons are false), and infinities are refused,
+// and `2^N` (as the help writes powers of two) is read as the double it names. Apply it with
+// ->transform(), so that `2^N` reaches the option as a number.
+CLI::Validator real_range(double lo, double hi, const std::string& shown);
+// A number in [lo, hi]; outside it (or NaN) is a usage error naming the range.
 template <class T>
 CLI::Option* add_number_option(CLI::App& cmd, const std::string& name, T& value,
                                const std::string& help, const std::string& type_name, T lo, T hi) {
-  return cmd.add_option(name, value, help)->type_name(type_name)->check(CLI::Range(lo, hi));
+  CLI::Option* o = cmd.add_option(name, value, help)->type_name(type_name);
+  if constexpr (std::is_floating_point_v<T>)
+    return o->transform(real_range(double(lo), double(hi), range_text(double(lo), double(hi))));
+  else
+    return o->check(CLI::Range(lo, hi));
 }
 
 // `s` for a message: in quotes, at most about 80 characters (then "..." and its length),

@@ -236,15 +236,16 @@ Command add_fuzz(CLI::App& app) {
                                    "of impact on a moving family (above)");
   toi->excludes("--metamorphic");
   cmd->add_option("--width", opt.toi_width,
-                  "with --toi: the enclosure width asked of each time\n(default 2^-30)")
+                  "with --toi: the enclosure width asked of each time, in\n"
+                  "[2^-52, 1] steps (default 2^-30; 2^-N is taken)")
       ->type_name("W")
-      ->check(CLI::Range(0x1p-52, 1.0))
+      ->transform(real_range(0x1p-52, 1.0, "[2^-52, 1]"))
       ->needs(toi);
   cmd->add_option("--toi-tolerance", opt.toi_tolerance,
                   "with --toi: how early (t* - t_lo, in steps) a time may be\n"
-                  "before it is a finding (default 0.1)")
+                  "before it is a finding, T in [0, 1] (default 0.1)")
       ->type_name("T")
-      ->check(CLI::Range(0.0, 1.0))
+      ->transform(real_range(0.0, 1.0, "[0, 1]"))
       ->needs(toi);
   add_min_distance_option(*cmd, opt.min_distance,
                           "ask every case at minimum separation D (a hit: within\n"

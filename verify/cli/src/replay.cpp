@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "fdh/classify/replay.hpp"
+#include "min_distance_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -64,23 +65,25 @@ Command add_replay(CLI::App& app) {
   add_methods_option(*cmd, o->methods, "comma-separated methods (default: all)");
   add_plugin_option(*cmd);
   cmd->add_flag("--json", cli->json, "print one JSON object (below)");
-  cmd->add_flag("--toi", o->toi,
-                "also re-check every method's time of impact: the cases\n"
-                "where it is late, 0, or breaks its time promise");
-  cmd->add_option("--width", o->width, "the enclosure width asked of each time (default 2^-30)")
+  CLI::Option* toi = cmd->add_flag("--toi", o->toi,
+                                   "also re-check every method's time of impact: the cases\n"
+                                   "where it is late, 0, or breaks its time promise");
+  cmd->add_option("--width", o->width,
+                  "with --toi: the enclosure width asked of each time, in\n"
+                  "[2^-52, 1] steps (default 2^-30; 2^-N is taken)")
       ->type_name("W")
-      ->check(CLI::Range(0x1p-52, 1.0));
+      ->transform(real_range(0x1p-52, 1.0, "[2^-52, 1]"))
+      ->needs(toi);
   cmd->add_option("--toi-tolerance", o->tolerance,
                   "with --toi: list a time as early when t* - t_lo exceeds\n"
-                  "T steps (default 0.1, as fuzz --toi)")
+                  "T steps, T in [0, 1] (default 0.1, as fuzz --toi)")
       ->type_name("T")
-      ->check(CLI::Range(0.0, 1.0))
-      ->needs("--toi");
-  cmd->add_option("--min-distance", o->min_distance,
-                  "ask every case at minimum separation D (default 0:\n"
-                  "contact); a stored truth counts only where the case's D\n"
-                  "is this D; methods that answer contact only are not counted")
-      ->type_name("D");
+      ->transform(real_range(0.0, 1.0, "[0, 1]"))
+      ->needs(toi);
+  add_min_distance_option(*cmd, o->min_distance,
+                          "ask every case at minimum separation D (default 0:\n"
+                          "contact); a stored truth counts only where the case's D\n"
+                          "is this D; methods that answer contact only are not counted");
   return {cmd, [cli](const Io& io) { return run_replay(*cli, io); }};
 }
 

@@ -43,7 +43,7 @@ CLI::Option* add_budget_option(CLI::App& cmd, Budget& budget, const std::string&
               "written whole and say what was cut short. A plug-in call\n"
               "in progress ends first (at most --plugin-timeout)")
       ->type_name("SECONDS")
-      ->check(CLI::Range(1e-3, 1e7));
+      ->transform(real_range(1e-3, 1e7, range_text(1e-3, 1e7)));
 }
 
 CLI::Option* add_plugin_option(CLI::App& cmd) {
@@ -54,7 +54,7 @@ CLI::Option* add_plugin_option(CLI::App& cmd) {
          "plug-in, the function and the query (docs/plugins.md).\n"
          "Give it before --plugin to limit loading too")
       ->type_name("SECONDS")
-      ->check(CLI::Range(0.0, 1e6))
+      ->transform(real_range(0.0, 1e6, range_text(0.0, 1e6)))
       ->trigger_on_parse();
   return cmd
       .add_option_function<std::string>(

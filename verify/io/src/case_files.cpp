@@ -33,6 +33,9 @@ std::vector<std::string> list_query_files(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
+  // A link loop (ELOOP) or a folder on the way that cannot be entered is not "no such file".
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    throw InputError(path, 0, "cannot be read: " + ec.message());
   if (!fs::exists(st)) throw InputError(path, 0, "no such file or folder");
   // A file, a FIFO or a device: the reader takes it or refuses it (InputFile).
   if (!fs::is_directory(st)) return {path};

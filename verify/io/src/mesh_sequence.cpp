@@ -15,6 +15,9 @@ std::vector<std::string> frame_files(const std::vector<std::string>& args) {
   for (const std::string& a : args) {
     std::error_code ec;
     const fs::file_status st = fs::status(a, ec);
+    // A link loop (ELOOP) or a folder on the way that cannot be entered is not "no such file".
+    if (ec && ec != std::errc::no_such_file_or_directory)
+      throw InputError(a, 0, "cannot be read: " + ec.message());
     if (!fs::exists(st)) throw InputError(a, 0, "no such file or folder");
     if (!fs::is_directory(st)) {
       out.push_back(a);
@@ -24,7 +27,8 @@ std::vector<std::string> frame_files(const std::vector<std::string>& args) {
     for (const fs::directory_entry& e : fs::directory_iterator(a, ec)) {
       std::string ext = e.path().extension().string();
       std::transform(ext.begin(), ext.end(), ext.begin(), [](char c) { return char(c | 0x20); });
-      if (ext == ".obj" && !e.is_directory()) found.push_back(e.path().string());
+      std::error_code entry;  // a link loop among the files is read (and refused) as a file
+      if (ext == ".obj" && !e.is_directory(entry)) found.push_back(e.path().string());
     }
     if (ec) throw InputError(a, 0, "cannot list the folder: " + ec.message());
     if (found.empty()) throw InputError(a, 0, "a folder without an .obj file");
@@ -76,7 +80,7 @@ void Places::add(std::string file, std::shared_ptr<const std::vector<int>> lines
 std::string Places::at(int index) const {
   for (const Part& p : parts_) {
     if (index < int(p.lines->size()))
-      return printable(p.file) + ":" + std::to_string((*p.lines)[std::size_t(index)]);
+      return p.file + ":" + std::to_string((*p.lines)[std::size_t(index)]);
     index -= int(p.lines->size());
   }
   return "?";
@@ -102,8 +106,20 @@ std::vector<Vec3> gather(const std::vector<Vec3>& x, const std::vector<int>& at)
 
 std::string object_list(const ObjFile& f) {
   std::string s;
-  for (const ObjObject& o : f.objects) s += (s.empty() ? "'" : ", '") + printable(o.name) + "'";
+  for (const ObjObject& o : f.objects)
+    s += (s.empty() ? "" : ", ") +
+         (o.name.empty() ? std::string("faces before any o or g") : "'" + printable(o.name) + "'");
   return s.empty() ? "none" : s;
+}
+
+// Two triangles with the same corners in the same cyclic order: the same face, the same way
+// round, whichever corner an exporter lists first.
+bool same_face(const Tri& a, const Tri& b) {
+  for (int r = 0; r < 3; ++r)
+    if (a[0] == b[std::size_t(r)] && a[1] == b[std::size_t((r + 1) % 3)] &&
+        a[2] == b[std::size_t((r + 2) % 3)])
+      return true;
+  return false;
 }
 
 // A frame file's faces as the first frame has them: what every later frame must repeat.
@@ -116,10 +132,15 @@ class Shape {
   const std::string& file() const { return file_; }
 
   void check(const ObjFile& f) const {
-    if (f.x.size() != vertices_)
-      throw InputError(f.path, 0,
+    if (f.x.size() != vertices_) {
+      // The line of the first vertex too many, or of the last one there is.
+      const bool more = f.x.size() > vertices_;
+      const std::size_t at = more ? vertices_ : f.x.size() - 1;
+      throw InputError(f.path, f.x.empty() ? 0 : f.vertex_lines[at],
                        std::to_string(f.x.size()) + " vertices, and " + printable(file_) + " has " +
-                           std::to_string(vertices_) + "; every frame needs the same");
+                           std::to_string(vertices_) + "; every frame needs the same (" +
+                           (more ? "the first vertex too many" : "the last vertex") + " is here)");
+    }
     if (f.objects.size() != objects_.size())
       throw InputError(f.path, 0,
                        "objects " + object_list(f) + ", and " + printable(file_) + " has " +
@@ -141,7 +162,7 @@ class Shape {
                            printable(have.name) + "', and " + printable(file_) + " has " +
                            std::to_string(want.tris.size()));
     for (std::size_t t = 0; t < want.tris.size(); ++t, ++face)
-      if (want.tris[t] != have.tris[t])
+      if (!same_face(want.tris[t], have.tris[t]))
         throw InputError(
             f.path, have.lines[t],
             "face " + std::to_string(face + 1) + " differs from " + printable(file_) + "'s");
@@ -255,12 +276,15 @@ struct MeshSequence::Impl {
   Split split;
   SequenceTopology topology;
   std::vector<ObstacleSource> obstacles;
-  long polygons = 0;
+  // Faces of more than three corners: the most in any one frame read so far (its frame file and
+  // obstacle files), so that a later frame's quads are said too.
+  mutable long polygons = 0;
+  long fixed_polygons = 0;       // those of the obstacles that stand still
   std::optional<ObjFile> first;  // frame 0 as read for the checks, until read(0) takes it
 
   void read_first(const std::string& cloth);
   void add_obstacle(const std::string& arg);
-  void add_obstacles(MeshFrame& m, int i) const;
+  long add_obstacles(MeshFrame& m, int i) const;  // their polygons
 };
 
 void MeshSequence::Impl::read_first(const std::string& cloth) {
@@ -270,9 +294,13 @@ void MeshSequence::Impl::read_first(const std::string& cloth) {
   cloth_name = cloth;
   if (cloth.empty() && f.object("cloth")) cloth_name = "cloth";
   if (!cloth_name.empty() && !f.object(cloth_name))
-    throw InputError(
-        f.path, 0,
-        "no object named '" + printable(cloth_name) + "' (objects: " + object_list(f) + ")");
+    throw InputError(f.path, 0,
+                     "no object named '" + printable(cloth_name) + "' (" +
+                         (f.objects.size() == 1 && f.objects[0].name.empty()
+                              ? std::string("the file has no o or g line; without --cloth the "
+                                            "whole file is the cloth")
+                              : "objects: " + object_list(f)) +
+                         ")");
   split = verify::split(f, cloth_name);
   check_manifold(f, split);
   shape = std::make_unique<Shape>(f);
@@ -302,11 +330,12 @@ void MeshSequence::Impl::add_obstacle(const std::string& arg) {
   if (per_frame)
     o.shape = std::make_unique<Shape>(f);
   else
-    o.take(f);
+    o.take(f), fixed_polygons += f.polygons;
   obstacles.push_back(std::move(o));
 }
 
-void MeshSequence::Impl::add_obstacles(MeshFrame& m, int i) const {
+long MeshSequence::Impl::add_obstacles(MeshFrame& m, int i) const {
+  long polygons = fixed_polygons;
   for (const ObstacleSource& o : obstacles) {
     if (!o.shape) {
       m.obstacle.insert(m.obstacle.end(), o.x.begin(), o.x.end());
@@ -318,10 +347,12 @@ void MeshSequence::Impl::add_obstacles(MeshFrame& m, int i) const {
     const ObjFile f = read_obj(o.files[std::size_t(i)]);
     o.shape->check(f);
     now.take(f);
+    polygons += f.polygons;
     m.obstacle.insert(m.obstacle.end(), now.x.begin(), now.x.end());
     m.obstacle_vertices.add(f.path, now.vertex_lines);
     m.obstacle_tris.add(f.path, now.tri_lines);
   }
+  return polygons;
 }
 
 MeshSequence::MeshSequence(const std::vector<std::string>& frames, const std::string& cloth,
@@ -364,7 +395,7 @@ MeshFrame MeshSequence::read(int i) const {
   m.cloth_tris.add(f.path, face_lines(f, s.cloth_objects));
   m.obstacle_vertices.add(f.path, gather(f.vertex_lines, s.obstacle_v));
   m.obstacle_tris.add(f.path, face_lines(f, s.obstacle_objects));
-  impl_->add_obstacles(m, i);
+  impl_->polygons = std::max(impl_->polygons, f.polygons + impl_->add_obstacles(m, i));
   return m;
 }
 

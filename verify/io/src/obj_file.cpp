@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
+#include <set>
 
 #include "fdh/io/input_error.hpp"
 #include "fdh/io/query_io.hpp"
@@ -32,6 +34,37 @@ std::string rest_of(std::string_view line, std::string_view keyword) {
   return std::string(s);
 }
 
+// The statements of the OBJ specification (Wavefront, "Object Files (.obj)", Appendix B1 of the
+// Advanced Visualizer manual) that carry no triangle: read past. Any other first word is refused,
+// so that a line the reader cannot read (a byte-order mark glued to `o cloth`) never silently
+// moves faces between the cloth and the obstacles.
+bool ignored_statement(std::string_view w) {
+  static const std::set<std::string_view> kIgnored = {
+      "vt",        "vn",       "vp",       "cstype", "deg",    "bmat",   "step",
+      "p",         "l",        "curv",     "curv2",  "surf",   "parm",   "trim",
+      "hole",      "scrv",     "sp",       "end",    "con",    "s",      "mg",
+      "bevel",     "c_interp", "d_interp", "lod",    "usemtl", "mtllib", "shadow_obj",
+      "trace_obj", "ctech",    "stech",    "maplib", "usemap", "call",   "csh"};
+  return kIgnored.count(w) > 0;
+}
+
+// A file's first line: a UTF-8 byte-order mark is dropped; UTF-16 and UTF-32 (by their marks, or
+// by the NUL bytes that every ASCII character carries in them) are refused by name.
+std::string_view without_byte_order_mark(std::string_view line, const std::string& path) {
+  if (line.substr(0, 3) == "\xEF\xBB\xBF") return line.substr(3);
+  const bool utf32 = line.substr(0, 4) == std::string_view("\x00\x00\xFE\xFF", 4) ||
+                     line.substr(0, 4) == std::string_view("\xFF\xFE\x00\x00", 4);
+  const bool utf16 = line.substr(0, 2) == "\xFF\xFE" || line.substr(0, 2) == "\xFE\xFF";
+  if (utf16 || utf32 || line.find('\0') != std::string_view::npos)
+    throw InputError(path, 1,
+                     std::string("the file is ") +
+                         (utf32   ? "UTF-32"
+                          : utf16 ? "UTF-16"
+                                  : "not text (it holds NUL bytes: UTF-16?)") +
+                         "; an OBJ file must be UTF-8 or ASCII (save it as UTF-8)");
+  return line;
+}
+
 // Builds an ObjFile line by line.
 class ObjReader {
  public:
@@ -49,12 +82,16 @@ class ObjReader {
   }
 
  private:
-  void take(const std::string& line) {
+  void take(std::string_view line) {
+    if (in_.line() == 1) line = without_byte_order_mark(line, in_.path());
     const std::vector<std::string_view> w = words(line);
     if (w.empty() || w[0][0] == '#') return;
     if (w[0] == "v") return vertex(w);
     if (w[0] == "f") return face(w);
     if (w[0] == "o" || w[0] == "g") return start_object(rest_of(line, w[0]));
+    if (!ignored_statement(w[0]))
+      fail("unknown statement " + quote(w[0]) +
+           ": not an OBJ keyword (v, f, o, g, and the ones read past: docs/audit.md)");
   }
 
   [[noreturn]] void fail(const std::string& what) const {
@@ -66,8 +103,7 @@ class ObjReader {
     double c[3];
     for (int i = 0; i < 3; ++i)
       if (!parse_finite(w[std::size_t(i) + 1], c[i]))
-        fail("coordinate " + std::to_string(i + 1) + ": " + quote(w[std::size_t(i) + 1]) +
-             " is not a finite number");
+        fail("coordinate " + std::to_string(i + 1) + ": " + number_refusal(w[std::size_t(i) + 1]));
     if (obj_.x.size() >= std::size_t(std::numeric_limits<int>::max() - 1))
       fail("more than 2^31 - 2 vertices");
     obj_.x.push_back({c[0], c[1], c[2]});
@@ -155,7 +191,19 @@ bool parse_finite(std::string_view token, double& out) {
   if (token.empty() || token.front() == '+') return false;
   const char* end = token.data() + token.size();
   const auto [p, ec] = std::from_chars(token.data(), end, out, std::chars_format::general);
-  return ec == std::errc() && p == end && std::isfinite(out);
+  if (ec == std::errc() && p == end) return std::isfinite(out);
+  // The rarer numbers the query files take too (parse_double): hex floats, and a decimal below
+  // the smallest double, rounded to it or to 0 as strtod rounds.
+  std::string why;
+  const std::optional<double> v = parse_double(std::string(token), why);
+  if (v) out = *v;
+  return v.has_value();
+}
+
+std::string number_refusal(std::string_view token) {
+  std::string why;
+  if (!parse_double(std::string(token), why)) return why;
+  return quote(token) + " is not a number";
 }
 
 ObjFile read_obj(const std::string& path) {

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "fdh/io/input_error.hpp"
 #include "fdh/plugin.h"
 #include "guard.hpp"
 
@@ -27,7 +28,8 @@ std::optional<std::string> call_init(void* lib, const std::string& path,
     if (const char* why = init(settings.size(), keys.data(), values.data())) refused = why;
   }
   if (!refused) return std::nullopt;
-  return "fdh_plugin_init refused its settings: " + *refused;
+  // Its words quoted as any input is (docs/limits.md): no raw control byte reaches the terminal.
+  return "fdh_plugin_init refused its settings: " + quote(*refused, 200);
 }
 
 unsigned call_flags(void* lib, const std::string& path) {

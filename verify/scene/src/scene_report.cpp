@@ -11,10 +11,10 @@
 
 #include "fdh/cloth/cloth.hpp"
 #include "fdh/io/input_error.hpp"
+#include "fdh/io/json_text.hpp"
 #include "fdh/io/scene_file.hpp"
 #include "fdh/io/scene_output.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/io/json_text.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -105,10 +105,16 @@ void SceneMovie::write(const std::string& path) const {
 }
 
 std::vector<std::string> scene_files(const std::string& dir) {
-  if (!fs::is_directory(dir)) throw InputError(dir, 0, "not a folder of scenes");
+  std::error_code ec;  // a link loop is named as one, not as the raw filesystem error
+  if (!fs::is_directory(dir, ec))
+    throw InputError(dir, 0,
+                     ec && ec != std::errc::no_such_file_or_directory
+                         ? "cannot be read: " + ec.message()
+                         : std::string("not a folder of scenes"));
   std::vector<std::string> files;
-  for (const auto& e : fs::directory_iterator(dir))
+  for (const auto& e : fs::directory_iterator(dir, ec))
     if (e.path().extension() == ".scene") files.push_back(e.path().string());
+  if (ec) throw InputError(dir, 0, "cannot list the folder: " + ec.message());
   std::sort(files.begin(), files.end());
   return files;
 }
@@ -117,6 +123,7 @@ std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
                                              const std::string& out_dir,
                                              const SceneFolderOptions& opt) {
   const std::vector<std::string> files = scene_files(scene_dir);
+  for (const std::string& file : files) (void)read_scene(file);  // every scene before any run
   std::vector<std::string> outputs;
   for (const std::string& file : files) {
     const std::string stem = fs::path(file).stem().string();

@@ -77,8 +77,8 @@ class AuditResult {
     std::vector<Vec3> cloth, obstacle;
   };
   AuditReport report_;
-  audit::Topology topology_;
   std::optional<FirstFrame> first_;
+  std::string picture_;  // first-violation.png's bytes, drawn before the peak memory is taken
   std::vector<std::string> names_;  // each frame's, for the case files
 };
 

@@ -150,8 +150,9 @@ struct Certificate {
   long violations() const;  // every violation counted above (the same)
 };
 
-// Writes the first violating case (if any) into options.out_dir. Throws InputError for bad
-// inputs, std::runtime_error for I/O failures.
+// Writes the first violating case (if any) into options.out_dir. Reads the extra files and the
+// scenes before any check, so that bad input is refused before the work starts. Throws
+// InputError for bad inputs, std::runtime_error for I/O failures.
 Certificate certify(const CertifyOptions& options);
 
 std::string certificate_json(const Certificate& c);

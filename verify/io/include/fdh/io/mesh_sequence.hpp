@@ -36,7 +36,9 @@ struct SequenceTopology {
 class Places {
  public:
   void add(std::string file, std::shared_ptr<const std::vector<int>> lines);
-  std::string at(int index) const;  // "FILE:LINE"
+  // "FILE:LINE", the file name's bytes as they are: JSON writes them by its reversible rule
+  // (docs/formats.md), text by printable().
+  std::string at(int index) const;
   int size() const { return total_; }
 
  private:
@@ -74,11 +76,13 @@ class MeshSequence {
   const SequenceTopology& topology() const;
   // The cloth's object name as chosen ("" for the whole file).
   const std::string& cloth_name() const;
-  // Faces of more than three corners, fan-triangulated, in frame 0 and the obstacle files.
+  // Faces of more than three corners, fan-triangulated: the most in any one frame read so far
+  // (its frame file and the obstacle files), frame 0 once constructed.
   long polygons() const;
 
   // Frame i (0 <= i < frames()): read and checked against frame 0 (the same objects, vertex count
-  // and faces; InputError naming the face otherwise). The first read(0) hands over frame 0 as
+  // and faces, a triangle's corners in the same cyclic order; InputError naming the face or the
+  // vertex otherwise). The first read(0) hands over frame 0 as
   // the constructor read it; later ones read it again.
   MeshFrame read(int i) const;
 
