@@ -23,6 +23,8 @@ void AuditOptions::validate() const {
   if (threads < 0)
     throw std::invalid_argument(fmt::format("threads must be 0 or more, not {}", threads));
   if (keep < 1) throw std::invalid_argument(fmt::format("keep must be 1 or more, not {}", keep));
+  if (up < -1 || up > 2)
+    throw std::invalid_argument(fmt::format("up must be 0, 1 or 2 (x, y, z), not {}", up));
 }
 
 audit::Options AuditOptions::engine() const {
@@ -68,7 +70,8 @@ void AuditResult::write(const std::string& dir) const {
   if (first_ && !report_.kept().empty())
     write_file_atomically(dir + "/first-violation.png",
                           violation_picture(first_->cloth, first_->obstacle,
-                                            report_.kept().front().violation, topology_));
+                                            report_.kept().front().violation, topology_,
+                                            first_->up));
   for (const KeptViolation& k : report_.kept()) {
     if (k.case_file.empty()) continue;
     const std::size_t f = std::size_t(k.violation.frame);
@@ -115,8 +118,10 @@ AuditResult run_audit(FrameSource& source, const AuditOptions& o, const Progress
   AuditResult result(AuditReport(t, o.engine(), o.keep, o.files));
   result.topology_ = t;
   Placed prev;
+  std::vector<Vec3> start;  // frame 0's cloth: the picture's up axis from the data
   for (int i = 0; i < source.frames(); ++i) {
     MeshFrame m = source.read(i);
+    if (i == 0 && o.files && o.up < 0) start = m.cloth;
     audit::FrameReport r;
     try {
       r = auditor->add_frame(m.cloth, m.obstacle);
@@ -129,8 +134,10 @@ AuditResult run_audit(FrameSource& source, const AuditOptions& o, const Progress
     const FramePlaces before = prev.places(), here = now.places();
     const bool first =
         source.placed() ? result.report_.add(r, &before, &here) : result.report_.add(r);
-    if (first && o.files)
-      result.first_ = AuditResult::FirstFrame{std::move(m.cloth), std::move(m.obstacle)};
+    if (first && o.files) {
+      const int up = o.up >= 0 ? o.up : up_axis_of(start, m.cloth, m.obstacle);
+      result.first_ = AuditResult::FirstFrame{std::move(m.cloth), std::move(m.obstacle), up};
+    }
     prev = std::move(now);
     report(progress, {"audit", i + 1, source.frames(), "frames", detail_of(r)});
   }
