@@ -9,8 +9,8 @@ set -euo pipefail
 command -v blender >/dev/null || { echo "SKIP: no blender (./run installs it as root)"; exit 77; }
 fdhcert=$(realpath "$1")
 repo=$(realpath "$2")
-grid=12
-frames=24
+grid=20
+frames=30
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/fdh-blender-formats.XXXXXX")
 cleanup() {

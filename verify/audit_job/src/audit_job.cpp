@@ -118,10 +118,10 @@ AuditResult run_audit(FrameSource& source, const AuditOptions& o, const Progress
   AuditResult result(AuditReport(t, o.engine(), o.keep, o.files));
   result.topology_ = t;
   Placed prev;
-  std::vector<Vec3> start;  // frame 0's cloth: the picture's up axis from the data
+  std::vector<Vec3> frame0;  // frame 0's cloth: the picture's up axis from the data
   for (int i = 0; i < source.frames(); ++i) {
     MeshFrame m = source.read(i);
-    if (i == 0 && o.files && o.up < 0) start = m.cloth;
+    if (i == 0 && o.files && o.up < 0) frame0 = m.cloth;
     audit::FrameReport r;
     try {
       r = auditor->add_frame(m.cloth, m.obstacle);
@@ -135,7 +135,7 @@ AuditResult run_audit(FrameSource& source, const AuditOptions& o, const Progress
     const bool first =
         source.placed() ? result.report_.add(r, &before, &here) : result.report_.add(r);
     if (first && o.files) {
-      const int up = o.up >= 0 ? o.up : up_axis_of(start, m.cloth, m.obstacle);
+      const int up = o.up >= 0 ? o.up : up_axis_of(frame0, m.cloth, m.obstacle);
       result.first_ = AuditResult::FirstFrame{std::move(m.cloth), std::move(m.obstacle), up};
     }
     prev = std::move(now);

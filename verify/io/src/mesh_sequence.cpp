@@ -314,7 +314,9 @@ void MeshSequence::Impl::open_cache() {
                          ": " + std::to_string(cache->points) + " points, and " +
                          printable(first->path) + " has " + std::to_string(n) +
                          " vertices; a cache needs one point per vertex");
-  notes.push_back(printable(cache->path) + ": a " + cache->format + " point cache of " +
+  const bool vowel = cache->format == std::string("MDD");  // "an MDD", "a PC2"
+  notes.push_back(printable(cache->path) + (vowel ? ": an " : ": a ") + cache->format +
+                  " point cache of " +
                   std::to_string(cache->frames) + " frames, " + std::to_string(cache->points) +
                   " points; the faces are " + printable(first->path) + "'s");
   files.clear();
