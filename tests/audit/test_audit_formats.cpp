@@ -48,7 +48,7 @@ struct ZUpScene {
 };
 
 std::string obj_of(const std::vector<std::array<double, 3>>& x,
-                const std::vector<std::array<int, 3>>& t) {
+                   const std::vector<std::array<int, 3>>& t) {
   std::ostringstream os;
   for (const auto& p : x) os << "v " << p[0] << " " << p[1] << " " << p[2] << "\n";
   for (const auto& f : t) os << "f " << f[0] + 1 << " " << f[1] + 1 << " " << f[2] + 1 << "\n";
@@ -61,7 +61,7 @@ void put_bytes(std::string& s, const void* p, int n, bool big) {
 }
 
 std::string ply_of(const std::vector<std::array<double, 3>>& x,
-                const std::vector<std::array<int, 3>>& t, const std::string& format) {
+                   const std::vector<std::array<int, 3>>& t, const std::string& format) {
   const bool ascii = format == "ascii", big = format == "binary_big_endian";
   std::ostringstream os;
   os << "ply\nformat " << format << " 1.0\ncomment fdhcert test\nelement vertex " << x.size()
@@ -181,10 +181,23 @@ TEST_F(AuditFormats, TheOutputSaysWhatIsClothAndWhatObstacle) {
   EXPECT_NE(r.err.find("the frames are cloth_*.obj (3 files); fixed obstacles: ground.obj"),
             std::string::npos)
       << r.err;
-  const CliRun c = fdhcert({"audit", at("cloth.obj"), at("cloth.pc2"), "--obstacle",
-                            at("objs/ground.obj")});
+  const CliRun c = fdhcert(
+      {"audit", at("cloth.obj"), at("cloth.pc2"), "--obstacle", at("objs/ground.obj"), "--json"});
   EXPECT_NE(c.err.find("a PC2 point cache of 3 frames, 25 points"), std::string::npos) << c.err;
   EXPECT_NE(c.out.find("cloth.obj:"), std::string::npos) << c.out;  // places name the mesh
+  const std::string out = at("pc2-out");
+  EXPECT_EQ(fdhcert({"audit", at("cloth.obj"), at("cloth.pc2"), "--obstacle", at("objs/ground.obj"),
+                     "--out", out})
+                .status,
+            1);
+  std::string first_line;
+  for (const auto& e : fs::directory_iterator(out + "/cases")) {
+    std::ifstream in(e.path());
+    std::getline(in, first_line);
+    break;
+  }
+  EXPECT_NE(first_line.find("from " + at("cloth.pc2") + ", frame 1 to"), std::string::npos)
+      << first_line;  // a cached frame's name
   const CliRun b = fdhcert({"audit", at("binary_big_endian"), "--json"});
   EXPECT_NE(b.out.find("cloth_2.ply:byte "), std::string::npos) << b.out.substr(0, 2000);
 }

@@ -382,8 +382,8 @@ const std::vector<Row>& rows() {
        },
        2, "f.ply:2: unknown format 'binary_middle_endian'"},
       {"PlyNotAPly",
-       [](const fs::path& d) { return audit_args(d, "f.ply", "solid cube\n", false); },
-       2, "f.ply:1: not a PLY file: the first line must be 'ply'"},
+       [](const fs::path& d) { return audit_args(d, "f.ply", "solid cube\n", false); }, 2,
+       "f.ply:1: not a PLY file: the first line must be 'ply'"},
       {"PlyEndsEarly",
        [](const fs::path& d) {
          return audit_args(d, "f.ply", kPlyHeader + std::string(24 + 3, '\0'), false);
@@ -394,16 +394,16 @@ const std::vector<Row>& rows() {
          return audit_args(d, "f.ply", kPlyHeader + std::string(36 + 3, '\0'), false);
        },
        2, "f.ply: byte 151: 3 bytes after the last element; the header accounts for 151"},
-      {"Pc2NotAPc2",
-       [](const fs::path& d) { return audit_args(d, "c.pc2", "POINTCACHE3", true); },
+      {"Pc2NotAPc2", [](const fs::path& d) { return audit_args(d, "c.pc2", "POINTCACHE3", true); },
        2, "c.pc2: byte 0: not a PC2 file: it must begin with 'POINTCACHE2' and a zero byte"},
       {"Pc2SizeDoesNotMatch",
        [](const fs::path& d) {
          const std::string head = std::string("POINTCACHE2", 12) + words32({1, 4, 0, 0, 2});
          return audit_args(d, "c.pc2", head + std::string(48, '\0'), true);
        },
-       2, "c.pc2: byte 32: 2 samples of 4 points need 96 bytes after the 32-byte header, and "
-          "the file has 48"},
+       2,
+       "c.pc2: byte 32: 2 samples of 4 points need 96 bytes after the 32-byte header, and "
+       "the file has 48"},
       {"Pc2PointsAreNotTheMeshVertices",
        [](const fs::path& d) {
          const std::string head = std::string("POINTCACHE2", 12) + words32({1, 3, 0, 0, 1});
@@ -411,14 +411,17 @@ const std::vector<Row>& rows() {
        },
        2, "c.pc2: byte 16: 3 points, and "},
       {"MddNoFrames",
-       [](const fs::path& d) { return audit_args(d, "c.mdd", words32({0, 4}, true), true); },
+       [](const fs::path& d) {
+         return audit_args(d, "c.mdd", words32({0, 4}, true), true);
+       },
        2, "c.mdd: byte 0: 0 frames; a cache needs at least 1"},
       {"MddSizeDoesNotMatch",
        [](const fs::path& d) {
          return audit_args(d, "c.mdd", words32({1, 4, 0}, true) + std::string(47, '\0'), true);
        },
-       2, "c.mdd: byte 12: 1 frames of 4 points need 48 bytes after the 12-byte header, and the "
-          "file has 47"},
+       2,
+       "c.mdd: byte 12: 1 frames of 4 points need 48 bytes after the 12-byte header, and the "
+       "file has 47"},
       {"CacheWithoutMesh",
        [](const fs::path& d) {
          return Args{"audit", write_text(d / "c.pc2", "POINTCACHE2")};

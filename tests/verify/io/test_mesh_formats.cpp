@@ -70,10 +70,12 @@ TEST(PlyFile, BadBodiesNameTheLineOrTheByte) {
             std::string::npos);
   EXPECT_NE(err(v).find("b.ply:12: the file ends before face 0"), std::string::npos);
   EXPECT_NE(err(v + "3 0 1 2 5\n").find("b.ply:13: face 0 has 5 values"), std::string::npos);
-  const std::string p = put_file(dir / "h.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"
-                                                "property int x\nend_header\n1\n");
-  EXPECT_NE(error_text([&] { read_ply(p); })
-                .find("h.ply:3: the vertex element needs a property x of type float or double"),
+  const std::string p = put_file(dir / "h.ply",
+                                 "ply\nformat ascii 1.0\nelement vertex 1\n"
+                                 "property int x\nend_header\n1\n");
+  EXPECT_NE(error_text([&] {
+              read_ply(p);
+            }).find("h.ply:3: the vertex element needs a property x of type float or double"),
             std::string::npos);
 }
 
@@ -101,8 +103,8 @@ TEST(PointCache, HeadersAndFrames) {
 
 TEST(BakeFolder, NumberedFramesAndFixedObstacles) {
   const auto dir = fresh_temp_dir("bake");
-  for (const char* n : {"cloth_10.obj", "cloth_9.obj", "obstacle_sphere.obj", "ground.PLY",
-                        "notes.txt"})
+  for (const char* n :
+       {"cloth_10.obj", "cloth_9.obj", "obstacle_sphere.obj", "ground.PLY", "notes.txt"})
     put_file(dir / n, "");
   const BakeFolder b = read_bake_folder(dir.string());
   ASSERT_EQ(b.frames.size(), 2u);
@@ -114,8 +116,9 @@ TEST(BakeFolder, NumberedFramesAndFixedObstacles) {
             std::string::npos)
       << b.roles("D");
   put_file(dir / "obstacle_1.obj", "");
-  EXPECT_NE(error_text([&] { read_bake_folder(dir.string()); })
-                .find("numbered files of more than one name: cloth_*.obj (2), obstacle_*.obj (1)"),
+  EXPECT_NE(error_text([&] {
+              read_bake_folder(dir.string());
+            }).find("numbered files of more than one name: cloth_*.obj (2), obstacle_*.obj (1)"),
             std::string::npos);
 }
 

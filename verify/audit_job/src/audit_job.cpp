@@ -68,10 +68,10 @@ void AuditResult::write(const std::string& dir) const {
   write_file_atomically(dir + "/audit.json", json_text(report_.json(), "audit.json"));
   write_file_atomically(dir + "/audit.md", report_.markdown());
   if (first_ && !report_.kept().empty())
-    write_file_atomically(dir + "/first-violation.png",
-                          violation_picture(first_->cloth, first_->obstacle,
-                                            report_.kept().front().violation, topology_,
-                                            first_->up));
+    write_file_atomically(
+        dir + "/first-violation.png",
+        violation_picture(first_->cloth, first_->obstacle, report_.kept().front().violation,
+                          topology_, first_->up));
   for (const KeptViolation& k : report_.kept()) {
     if (k.case_file.empty()) continue;
     const std::size_t f = std::size_t(k.violation.frame);

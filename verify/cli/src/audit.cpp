@@ -109,7 +109,8 @@ void add_audit_options(CLI::App& cmd, AuditCommand& o) {
                  "the picture's up axis: x, y or z (default: from the data, the\n"
                  "way the cloth falls)")
       ->type_name("AXIS")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"x", 0}, {"y", 1}, {"z", 2}}));
+      ->transform(
+          CLI::CheckedTransformer(std::map<std::string, int>{{"x", 0}, {"y", 1}, {"z", 2}}));
   cmd.add_flag("--json", o.json, "print the certificate as one JSON object");
   cmd.add_option("--k", o.job.k, "the FDH's k: 6, 14, 18 (default) or 26")
       ->type_name("K")

@@ -43,8 +43,8 @@ bool is_mesh_file(const std::string& path) {
 std::string BakeFolder::roles(const std::string& folder) const {
   if (obstacles.empty()) return "";
   return printable(folder) + ": the frames are " + printable(stem) + "*" + printable(ext) + " (" +
-         std::to_string(frames.size()) + " files); fixed obstacles: " +
-         printable(file_list(obstacles));
+         std::to_string(frames.size()) +
+         " files); fixed obstacles: " + printable(file_list(obstacles));
 }
 
 BakeFolder read_bake_folder(const std::string& folder) {
@@ -65,7 +65,8 @@ BakeFolder read_bake_folder(const std::string& folder) {
   if (groups.size() > 1) {
     std::string names;
     for (const auto& [g, n] : groups)
-      names += (names.empty() ? "" : ", ") + g.first + "*" + g.second + " (" + std::to_string(n) + ")";
+      names +=
+          (names.empty() ? "" : ", ") + g.first + "*" + g.second + " (" + std::to_string(n) + ")";
     throw InputError(folder, 0,
                      "numbered files of more than one name: " + printable(names) +
                          "; pass the cloth's frames as files, a moving obstacle's folder with "
@@ -74,7 +75,8 @@ BakeFolder read_bake_folder(const std::string& folder) {
   const auto& [stem, ext] = groups.begin()->first;
   for (const std::string& f : all) {
     std::string s;
-    const bool frame = numbered_stem(f, s) && s == stem && lower(fs::path(f).extension().string()) == ext;
+    const bool frame =
+        numbered_stem(f, s) && s == stem && lower(fs::path(f).extension().string()) == ext;
     (frame ? b.frames : b.obstacles).push_back(f);
   }
   b.stem = stem, b.ext = fs::path(b.frames.front()).extension().string();

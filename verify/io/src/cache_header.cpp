@@ -30,7 +30,8 @@ void CacheHeader::need(std::size_t n, const char* format) const {
 
 std::int32_t CacheHeader::int32(std::size_t at, bool big) const {
   std::uint32_t u = 0;
-  for (int i = 0; i < 4; ++i) u |= std::uint32_t(bytes_[at + std::size_t(big ? i : 3 - i)]) << (8 * (3 - i));
+  for (int i = 0; i < 4; ++i)
+    u |= std::uint32_t(bytes_[at + std::size_t(big ? i : 3 - i)]) << (8 * (3 - i));
   return std::int32_t(u);
 }
 

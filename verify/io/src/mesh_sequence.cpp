@@ -274,7 +274,7 @@ struct MeshSequence::Impl {
   std::vector<ObstacleSource> obstacles;
   long polygons = 0;
   std::vector<std::string> notes;
-  std::optional<ObjFile> first;  // frame 0 as read for the checks, until read(0) takes it
+  std::optional<ObjFile> first;     // frame 0 as read for the checks, until read(0) takes it
   std::optional<PointCache> cache;  // the frames' positions, the faces those of `first`
 
   void read_first(const std::string& cloth);
@@ -316,9 +316,9 @@ void MeshSequence::Impl::open_cache() {
                          " vertices; a cache needs one point per vertex");
   const bool vowel = cache->format == std::string("MDD");  // "an MDD", "a PC2"
   notes.push_back(printable(cache->path) + (vowel ? ": an " : ": a ") + cache->format +
-                  " point cache of " +
-                  std::to_string(cache->frames) + " frames, " + std::to_string(cache->points) +
-                  " points; the faces are " + printable(first->path) + "'s");
+                  " point cache of " + std::to_string(cache->frames) + " frames, " +
+                  std::to_string(cache->points) + " points; the faces are " +
+                  printable(first->path) + "'s");
   files.clear();
   for (int i = 0; i < cache->frames; ++i) files.push_back(cached_frame_name(cache->path, i));
 }

@@ -52,10 +52,10 @@ bool is_float(Type t) {
 
 bool type_named(std::string_view w, Type& t) {
   static const std::pair<const char*, Type> names[] = {
-      {"char", Type::I8},     {"int8", Type::I8},     {"uchar", Type::U8},    {"uint8", Type::U8},
-      {"short", Type::I16},   {"int16", Type::I16},   {"ushort", Type::U16},  {"uint16", Type::U16},
-      {"int", Type::I32},     {"int32", Type::I32},   {"uint", Type::U32},    {"uint32", Type::U32},
-      {"float", Type::F32},   {"float32", Type::F32}, {"double", Type::F64},  {"float64", Type::F64}};
+      {"char", Type::I8},   {"int8", Type::I8},     {"uchar", Type::U8},   {"uint8", Type::U8},
+      {"short", Type::I16}, {"int16", Type::I16},   {"ushort", Type::U16}, {"uint16", Type::U16},
+      {"int", Type::I32},   {"int32", Type::I32},   {"uint", Type::U32},   {"uint32", Type::U32},
+      {"float", Type::F32}, {"float32", Type::F32}, {"double", Type::F64}, {"float64", Type::F64}};
   for (const auto& [name, type] : names)
     if (w == name) return t = type, true;
   return false;
@@ -84,9 +84,9 @@ std::string read_whole(const std::string& path) {
   while (in.read(buffer.data(), std::streamsize(buffer.size())) || in.gcount() > 0) {
     bytes.append(buffer.data(), std::size_t(in.gcount()));
     if ((long long)bytes.size() > max)
-      throw InputError(path, 0,
-                       "the file passes " + std::to_string(max) + " bytes; " +
-                           bound_text(kMaxFileBytes, max));
+      throw InputError(
+          path, 0,
+          "the file passes " + std::to_string(max) + " bytes; " + bound_text(kMaxFileBytes, max));
   }
   return bytes;
 }
@@ -142,8 +142,7 @@ class HeaderReader {
     else if (w[1] == "binary_big_endian")
       header_.format = Format::Big;
     else
-      fail("unknown format " + quote(w[1]) +
-           " (ascii, binary_little_endian or binary_big_endian)");
+      fail("unknown format " + quote(w[1]) + " (ascii, binary_little_endian or binary_big_endian)");
   }
 
   void element(const std::vector<std::string_view>& w) {
@@ -189,19 +188,26 @@ double decode(const unsigned char* p, Type t, bool big) {
   std::uint64_t u = 0;
   for (int i = 0; i < n; ++i) u |= std::uint64_t(p[big ? i : n - 1 - i]) << (8 * (n - 1 - i));
   switch (t) {
-    case Type::I8: return double(std::int8_t(std::uint8_t(u)));
-    case Type::U8: return double(u);
-    case Type::I16: return double(std::int16_t(std::uint16_t(u)));
-    case Type::U16: return double(u);
-    case Type::I32: return double(std::int32_t(std::uint32_t(u)));
-    case Type::U32: return double(u);
+    case Type::I8:
+      return double(std::int8_t(std::uint8_t(u)));
+    case Type::U8:
+      return double(u);
+    case Type::I16:
+      return double(std::int16_t(std::uint16_t(u)));
+    case Type::U16:
+      return double(u);
+    case Type::I32:
+      return double(std::int32_t(std::uint32_t(u)));
+    case Type::U32:
+      return double(u);
     case Type::F32: {
       const auto v = std::uint32_t(u);
       float f;
       std::memcpy(&f, &v, 4);
       return double(f);
     }
-    case Type::F64: break;
+    case Type::F64:
+      break;
   }
   double d;
   std::memcpy(&d, &u, 8);
@@ -359,7 +365,10 @@ class PlyReader {
       for (const Property& q : e.props) {
         if (!q.list) {
           const double v = body_.value(q.type, q.name);
-          double* axis = q.name == "x" ? &p.x : q.name == "y" ? &p.y : q.name == "z" ? &p.z : nullptr;
+          double* axis = q.name == "x"   ? &p.x
+                         : q.name == "y" ? &p.y
+                         : q.name == "z" ? &p.z
+                                         : nullptr;
           if (vertex && axis) *axis = v;
           continue;
         }

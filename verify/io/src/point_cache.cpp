@@ -45,8 +45,8 @@ std::vector<Vec3> read_cache_frame(const PointCache& c, int frame) {
   in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
   if (!in || std::size_t(in.gcount()) != bytes.size())
     throw InputError(c.path, 0,
-                     "byte " + std::to_string(at) + ": cannot read frame " +
-                         std::to_string(frame) + " (the file changed or cannot be read)");
+                     "byte " + std::to_string(at) + ": cannot read frame " + std::to_string(frame) +
+                         " (the file changed or cannot be read)");
   std::vector<Vec3> x(std::size_t(c.points));
   for (std::size_t p = 0; p < x.size(); ++p) {
     double v[3];

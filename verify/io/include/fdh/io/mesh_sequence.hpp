@@ -69,10 +69,10 @@ class MeshSequence {
  public:
   // `frames`: the arguments for frame_files, or MESH CACHE: a mesh file that gives the faces and
   // a point cache (.pc2, .mdd) that gives every frame's positions of its vertices, one point per
-  // vertex (a vertex's place is then its line in MESH). `cloth`: the object that is the cloth; "" for the
-  // object named `cloth` if frame 0 has one, else the whole file. Every other object of the frame
-  // files is an obstacle that moves per frame. `obstacles`: each a file (a fixed obstacle) or a
-  // folder of as many OBJ files as there are frames (one per frame). Reads frame 0 and the fixed
+  // vertex (a vertex's place is then its line in MESH). `cloth`: the object that is the cloth; ""
+  // for the object named `cloth` if frame 0 has one, else the whole file. Every other object of the
+  // frame files is an obstacle that moves per frame. `obstacles`: each a file (a fixed obstacle) or
+  // a folder of as many OBJ files as there are frames (one per frame). Reads frame 0 and the fixed
   // obstacles and checks them: the cloth named exists, no vertex is both cloth and obstacle, the
   // cloth is manifold (no edge in more than two triangles). Throws InputError.
   MeshSequence(const std::vector<std::string>& frames, const std::string& cloth,
