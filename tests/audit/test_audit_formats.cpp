@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -230,6 +231,8 @@ TEST_F(AuditFormats, ThePictureShowsTheViolation) {
     const long marks = mark_pixels(png, total);
     EXPECT_EQ(total, 800 * 600);
     EXPECT_GT(marks, total / 100) << marks << " of " << total << " pixels";
+    std::cout << "first-violation.png" << (up.empty() ? "" : " --up z") << ": " << marks << " of "
+              << total << " pixels in the mark's blue\n";
   }
   EXPECT_EQ(fdhcert({"audit", at("objs"), "--up", "w"}).status, 2);
 }

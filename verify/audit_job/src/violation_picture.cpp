@@ -74,7 +74,7 @@ Framing close_up(const std::vector<Vec3>& x, const std::vector<Tri>& marks) {
       lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
       hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
     }
-  return {0.5 * (lo + hi), std::max(0.75 * norm(hi - lo), 1e-9)};
+  return {0.5 * (lo + hi), std::max(0.55 * norm(hi - lo), 1e-9)};
 }
 
 // The triangles of `tris` whose box meets the ball: what a close-up draws, so that nothing far
@@ -187,7 +187,7 @@ std::string violation_picture(const std::vector<Vec3>& cloth_x, const std::vecto
                                         {"obstacles", &obstacle, &t.obstacle, kObstacleColour}};
   const std::vector<SceneMesh> marks = {{"marked", &cloth, &mc, kMarkColour}};
   const Framing view = close_up(cloth, mc);
-  const Framing ball{view.centre, 1.6 * view.radius};
+  const Framing ball{view.centre, 2 * view.radius};
   const std::vector<Tri> nc = near_ball(cloth, t.cloth, ball),
                          no = near_ball(obstacle, t.obstacle, ball);
   const std::vector<SceneMesh> near = {scene[0],
