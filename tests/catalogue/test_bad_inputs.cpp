@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -102,6 +103,30 @@ std::string two_frames(const fs::path& d, const std::string& first, const std::s
   write_text(d / "seq" / "f1.obj", first);
   write_text(d / "seq" / "f2.obj", second);
   return (d / "seq").string();
+}
+
+// Mesh frames and point caches for `audit`'s rows: a square of two triangles, and a file's bytes
+// (the binary ones built from little-endian words).
+const char* const kSquareObj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+const std::string kPlyHeader =  // 115 bytes
+    "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+    "property float y\nproperty float z\nend_header\n";
+
+std::string words32(std::initializer_list<std::uint32_t> ws, bool big = false) {
+  std::string s;
+  for (const std::uint32_t w : ws)
+    for (int i = 0; i < 4; ++i) s += char((w >> (8 * (big ? 3 - i : i))) & 0xff);
+  return s;
+}
+
+Args audit_args(const fs::path& d, const std::string& name, const std::string& bytes,
+                bool with_mesh) {
+  Args a = {"audit"};
+  if (with_mesh) a.push_back(write_text(d / "mesh.obj", kSquareObj));
+  a.push_back(write_text(d / name, bytes));
+  if (!with_mesh) a.push_back(write_text(d / "other.obj", kSquareObj));
+  a.insert(a.end(), {"--out", (d / "out.csv").string()});
+  return a;
 }
 
 // The catalogue itself: one row per class of bad input. A table, so longer than a function
@@ -372,6 +397,58 @@ const std::vector<Row>& rows() {
          return Args{"simulate", write_text(d / "w.scene", "wind 0 inf 0\n")};
        },
        2, "w.scene:1: wind: 'inf' is not a finite number"},
+      // Mesh frames and point caches (`audit`): a bad header or a size that does not match.
+      {"PlyUnknownFormat",
+       [](const fs::path& d) {
+         return audit_args(d, "f.ply", "ply\nformat binary_middle_endian 1.0\nend_header\n", false);
+       },
+       2, "f.ply:2: unknown format 'binary_middle_endian'"},
+      {"PlyNotAPly",
+       [](const fs::path& d) { return audit_args(d, "f.ply", "solid cube\n", false); }, 2,
+       "f.ply:1: not a PLY file: the first line must be 'ply'"},
+      {"PlyEndsEarly",
+       [](const fs::path& d) {
+         return audit_args(d, "f.ply", kPlyHeader + std::string(24 + 3, '\0'), false);
+       },
+       2, "f.ply: byte 139: the file ends inside vertex 2's x (it has 142 bytes)"},
+      {"PlyBytesAfterTheLastElement",
+       [](const fs::path& d) {
+         return audit_args(d, "f.ply", kPlyHeader + std::string(36 + 3, '\0'), false);
+       },
+       2, "f.ply: byte 151: 3 bytes after the last element; the header accounts for 151"},
+      {"Pc2NotAPc2", [](const fs::path& d) { return audit_args(d, "c.pc2", "POINTCACHE3", true); },
+       2, "c.pc2: byte 0: not a PC2 file: it must begin with 'POINTCACHE2' and a zero byte"},
+      {"Pc2SizeDoesNotMatch",
+       [](const fs::path& d) {
+         const std::string head = std::string("POINTCACHE2", 12) + words32({1, 4, 0, 0, 2});
+         return audit_args(d, "c.pc2", head + std::string(48, '\0'), true);
+       },
+       2,
+       "c.pc2: byte 32: 2 samples of 4 points need 96 bytes after the 32-byte header, and "
+       "the file has 48"},
+      {"Pc2PointsAreNotTheMeshVertices",
+       [](const fs::path& d) {
+         const std::string head = std::string("POINTCACHE2", 12) + words32({1, 3, 0, 0, 1});
+         return audit_args(d, "c.pc2", head + std::string(36, '\0'), true);
+       },
+       2, "c.pc2: byte 16: 3 points, and "},
+      {"MddNoFrames",
+       [](const fs::path& d) {
+         return audit_args(d, "c.mdd", words32({0, 4}, true), true);
+       },
+       2, "c.mdd: byte 0: 0 frames; a cache needs at least 1"},
+      {"MddSizeDoesNotMatch",
+       [](const fs::path& d) {
+         return audit_args(d, "c.mdd", words32({1, 4, 0}, true) + std::string(47, '\0'), true);
+       },
+       2,
+       "c.mdd: byte 12: 1 frames of 4 points need 48 bytes after the 12-byte header, and the "
+       "file has 47"},
+      {"CacheWithoutMesh",
+       [](const fs::path& d) {
+         return Args{"audit", write_text(d / "c.pc2", "POINTCACHE2")};
+       },
+       2, "c.pc2: a point cache is audited with the mesh that gives its faces"},
       {"DampingTimesStep",
        [](const fs::path&) {
          return Args{"simulate", kBad + "damping_dt.scene"};

@@ -13,6 +13,8 @@ obstacle's Collision modifier and, for `crumple`, self-collision and the pins th
            x = -0.25 and +0.25) while turning half a turn each in opposite senses about the x
            axis over the frames: the cloth is squeezed and twisted into folds; self-collision on
            unless --self-collision off.
+With --formats the cloth is triangulated before the bake (so that every format has the same
+triangles) and the animation is also exported with Blender's own bundled add-ons (export_formats).
 Frame f (1..F) is written to DIR/frame_0000f.obj: object `cloth`, the evaluated cloth mesh with
 the triangles Blender's collisions use (the loop triangles of frame 1, see write_frames), then
 for `drop` object `obstacles`, the sphere's; world coordinates printed with 17 significant
@@ -46,6 +48,9 @@ def parse_args(argv):
     p.add_argument("--grid", type=int, required=True, help="vertices along each side (>= 2)")
     p.add_argument("--frames", type=int, required=True, help="frames to bake and write (>= 2)")
     p.add_argument("--out", required=True, help="folder for frame_NNNNN.obj (created)")
+    p.add_argument("--formats", action="store_true",
+                   help="triangulate the cloth and also write DIR/formats/: the same animation "
+                        "as OBJ, PLY (io_mesh_ply), PC2 (io_export_pc2) and MDD (io_shape_mdd)")
     p.add_argument("--self-collision", choices=("on", "off"),
                    help="the cloth's self-collision (default: off for drop, on for crumple)")
     a = p.parse_args(args)
@@ -65,14 +70,22 @@ def empty_scene(frames):
     return scene
 
 
-def add_cloth(grid):
+def add_cloth(grid, triangulate=False):
     """The N x N vertex grid, its transform the identity (its mesh moved up instead), so that the
-    evaluated mesh's coordinates are the world's exactly as Blender computed them."""
+    evaluated mesh's coordinates are the world's exactly as Blender computed them. Triangulated
+    (each quad split in two, the vertices kept) for --formats: PLY writes faces as they are."""
     bpy.ops.mesh.primitive_grid_add(x_subdivisions=grid - 1, y_subdivisions=grid - 1,
                                     size=CLOTH_SIZE)
     obj = bpy.context.active_object
     obj.name = "cloth"
     obj.data.transform(Matrix.Translation((0.0, 0.0, CLOTH_HEIGHT)))
+    if triangulate:
+        import bmesh
+        bm = bmesh.new()
+        bm.from_mesh(obj.data)
+        bmesh.ops.triangulate(bm, faces=bm.faces[:])
+        bm.to_mesh(obj.data)
+        bm.free()
     return obj
 
 
@@ -83,8 +96,8 @@ def add_cloth_modifier(obj, frames, self_collision):
     return mod
 
 
-def build_drop(grid, frames, self_collision):
-    cloth = add_cloth(grid)
+def build_drop(grid, frames, self_collision, triangulate=False):
+    cloth = add_cloth(grid, triangulate)
     add_cloth_modifier(cloth, frames, self_collision)
     bpy.ops.mesh.primitive_uv_sphere_add(radius=SPHERE_RADIUS, location=(0.0, 0.0, 0.0))
     sphere = bpy.context.active_object
@@ -113,8 +126,8 @@ def add_hook(cloth, name, x, indices, frames, turn):
     empty.keyframe_insert("rotation_euler", frame=frames)
 
 
-def build_crumple(grid, frames, self_collision):
-    cloth = add_cloth(grid)
+def build_crumple(grid, frames, self_collision, triangulate=False):
+    cloth = add_cloth(grid, triangulate)
     half = CLOTH_SIZE / 2
     left = [v.index for v in cloth.data.vertices if v.co.x == -half]
     right = [v.index for v in cloth.data.vertices if v.co.x == half]
@@ -196,8 +209,8 @@ def write_whole(path, text):
         raise
 
 
-def write_frames(scene, objects, frames, out):
-    """Writes every frame. The triangles are frame 1's loop triangles, every frame: Blender splits
+def write_frames(scene, objects, frames, out, name="frame"):
+    """Writes every frame (DIR/NAME_0000f.obj). The triangles are frame 1's loop triangles, every frame: Blender splits
     a quad along the diagonal its shape of the moment picks, but its cloth and collision
     modifiers collide the triangles they split once, at the first frame. Raises if a mesh's
     topology (vertices and faces) differs from its first frame's."""
@@ -214,8 +227,48 @@ def write_frames(scene, objects, frames, out):
                                    f"({faces[0]} vertices, {len(faces[2])} faces; frame 1: "
                                    f"{faces1[0]} vertices, {len(faces1[2])} faces)")
             meshes.append((obj.name, points, tris1))
-        write_whole(os.path.join(out, f"frame_{frame:05d}.obj"), obj_text(meshes))
+        write_whole(os.path.join(out, f"{name}_{frame:05d}.obj"), obj_text(meshes))
     return {name: (faces[0], tris) for name, (faces, tris) in first.items()}
+
+
+def export_formats(scene, cloth, obstacle, frames, out):
+    """The cloth's animation as Blender's own bundled add-ons export it, beside our OBJ frames:
+      objs/cloth_0000f.obj   the cloth alone per frame (write_frames' way), and
+      objs/obstacle_sphere.obj  the sphere at frame 1 (it stands still): a bake folder;
+      ply/cloth_0000f.ply    io_mesh_ply, binary (its ascii prints 6 decimals, not the floats),
+                             beside the same obstacle_sphere.obj;
+      cloth.obj              the cloth's faces (frame 1), the mesh of the caches;
+      cloth.pc2, cloth.mdd   io_export_pc2 and io_shape_mdd, every frame, world coordinates."""
+    import shutil
+    import types
+    import io_export_pc2
+    from io_mesh_ply import export_ply
+    from io_shape_mdd import export_mdd
+    for sub in ("objs", "ply"):
+        os.makedirs(os.path.join(out, sub), exist_ok=True)
+    write_frames(scene, [cloth], frames, os.path.join(out, "objs"), "cloth")
+    scene.frame_set(1)
+    points, _, tris = evaluated_mesh(cloth, bpy.context.evaluated_depsgraph_get())
+    write_whole(os.path.join(out, "cloth.obj"), obj_text([("cloth", points, tris)]))
+    if obstacle:
+        points, _, tris = evaluated_mesh(obstacle, bpy.context.evaluated_depsgraph_get())
+        sphere = os.path.join(out, "objs", "obstacle_sphere.obj")
+        write_whole(sphere, obj_text([("obstacle_sphere", points, tris)]))
+        shutil.copyfile(sphere, os.path.join(out, "ply", "obstacle_sphere.obj"))
+    bpy.ops.object.select_all(action="DESELECT")
+    cloth.select_set(True)
+    bpy.context.view_layer.objects.active = cloth
+    for frame in range(1, frames + 1):
+        scene.frame_set(frame)
+        export_ply.save(bpy.context, filepath=os.path.join(out, "ply", f"cloth_{frame:05d}.ply"),
+                        use_ascii=False, use_selection=True, use_mesh_modifiers=True,
+                        use_normals=False, use_uv_coords=False, use_colors=False)
+    props = types.SimpleNamespace(rot_x90=False, world_space=True, apply_modifiers=True,
+                                  range_start=1, range_end=frames, sampling="1")
+    if not io_export_pc2.do_export(bpy.context, props, os.path.join(out, "cloth.pc2")):
+        raise RuntimeError("io_export_pc2 failed")
+    export_mdd.save(bpy.context, os.path.join(out, "cloth.mdd"), frame_start=1, frame_end=frames,
+                    fps=scene.render.fps)
 
 
 def main():
@@ -227,13 +280,15 @@ def main():
         sys.exit(2)
     scene = empty_scene(a.frames)
     build = build_drop if a.scene == "drop" else build_crumple
-    cloth, obstacle = build(a.grid, a.frames, a.self_collision == "on")
+    cloth, obstacle = build(a.grid, a.frames, a.self_collision == "on", a.formats)
     print_settings(cloth.modifiers["Cloth"], scene)
     seconds = bake()
     objects = [cloth] + ([obstacle] if obstacle else [])
     topology = write_frames(scene, objects, a.frames, a.out)
     shape = ", ".join(f"{name} {n} vertices {len(t)} triangles" for name, (n, t) in
                       topology.items())
+    if a.formats:
+        export_formats(scene, cloth, obstacle, a.frames, os.path.join(a.out, "formats"))
     print(f"bake_cloth: {a.scene} {a.grid}x{a.grid}, self-collision {a.self_collision}, "
           f"{a.frames} frames baked in {seconds:.1f} s "
           f"by Blender {bpy.app.version_string}; {shape}; wrote {a.out}/frame_00001.obj .. "

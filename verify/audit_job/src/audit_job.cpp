@@ -23,6 +23,8 @@ void AuditOptions::validate() const {
   if (threads < 0)
     throw std::invalid_argument(fmt::format("threads must be 0 or more, not {}", threads));
   if (keep < 1) throw std::invalid_argument(fmt::format("keep must be 1 or more, not {}", keep));
+  if (up < -1 || up > 2)
+    throw std::invalid_argument(fmt::format("up must be 0, 1 or 2 (x, y, z), not {}", up));
 }
 
 audit::Options AuditOptions::engine() const {
@@ -115,8 +117,10 @@ AuditResult run_audit(FrameSource& source, const AuditOptions& o, const Progress
   }
   AuditResult result(AuditReport(t, o.engine(), o.keep, o.files));
   Placed prev;
+  std::vector<Vec3> frame0;  // frame 0's cloth: the picture's up axis from the data
   for (int i = 0; i < source.frames(); ++i) {
     MeshFrame m = source.read(i);
+    if (i == 0 && o.files && o.up < 0) frame0 = m.cloth;
     audit::FrameReport r;
     try {
       r = auditor->add_frame(m.cloth, m.obstacle);
@@ -129,14 +133,17 @@ AuditResult run_audit(FrameSource& source, const AuditOptions& o, const Progress
     const FramePlaces before = prev.places(), here = now.places();
     const bool first =
         source.placed() ? result.report_.add(r, &before, &here) : result.report_.add(r);
-    if (first && o.files)
-      result.first_ = AuditResult::FirstFrame{std::move(m.cloth), std::move(m.obstacle)};
+    if (first && o.files) {
+      const int up = o.up >= 0 ? o.up : up_axis_of(frame0, m.cloth, m.obstacle);
+      result.first_ = AuditResult::FirstFrame{std::move(m.cloth), std::move(m.obstacle), up};
+    }
     prev = std::move(now);
     report(progress, {"audit", i + 1, source.frames(), "frames", detail_of(r)});
   }
   if (result.first_ && !result.report_.kept().empty()) {  // drawn here: its memory counts too
-    result.picture_ = violation_picture(result.first_->cloth, result.first_->obstacle,
-                                        result.report_.kept().front().violation, t);
+    result.picture_ =
+        violation_picture(result.first_->cloth, result.first_->obstacle,
+                          result.report_.kept().front().violation, t, result.first_->up);
     result.first_.reset();
   }
   result.report_.finish(

@@ -1,6 +1,7 @@
 // fdhcert audit: any simulator's output, a sequence of triangle-mesh frames, certified exactly.
 #include <fmt/format.h>
 
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -16,9 +17,13 @@ namespace {
 const char* const kAuditAbout =
     R"(certify a sequence of mesh frames: no penetration, decided exactly
 
-FRAMES are OBJ files, one per frame, in the order given; a folder stands for
-its *.obj files in natural order (frame_2 before frame_10). Every frame must
-have the first frame's faces; between two frames every vertex moves linearly.
+FRAMES are OBJ or PLY files (ascii or binary), one per frame, in the order
+given; or MESH CACHE: a mesh (OBJ, PLY) that gives the faces and a PC2 or MDD
+point cache of its vertices' positions, frame after frame. A folder stands for
+its numbered *.obj or *.ply files in natural order (frame_2 before frame_10);
+its un-numbered ones beside them (a Blender bake's obstacle_*.obj) are fixed
+obstacles, and the output says which is which. Every frame must have the
+first frame's faces; between two frames every vertex moves linearly.
 The cloth is the object named by --cloth (default: the object `cloth` if the
 first frame has one, else the whole file); every other object of the frame
 files is an obstacle that moves with it (as `simulate --obj` writes them).
@@ -41,16 +46,17 @@ have no inside).)";
 const char* const kAuditFooter =
     R"(Prints a summary line and a line per frame with violations (--json: the
 certificate as one JSON object, docs/formats.md "audit output"). --out DIR
-writes DIR/audit.json, DIR/audit.md, DIR/first-violation.png (the frame of the
-first violation, its primitives' triangles in blue) and DIR/cases/*.vf, one
-replayable case per kept step violation (`fdhcert classify` / `replay`, truth
-1). See docs/audit.md.
+writes DIR/audit.json, DIR/audit.md, DIR/first-violation.png (a close-up of
+the first violation, its primitives' triangles in blue, the whole frame in an
+inset) and DIR/cases/*.vf, one replayable case per kept step violation
+(`fdhcert classify` / `replay`, truth 1). See docs/audit.md.
 Exit status: 0 clean; 1 a violation; 2 bad input (FILE:LINE: what; nothing is
 written): a frame whose faces differ from the first's, a non-manifold cloth, a
 degenerate face, a coordinate that is not a finite number, a line that is not
 an OBJ statement (vt, vn, s, usemtl, ... are read past), a UTF-16 or UTF-32
-file (a UTF-8 byte-order mark is taken), a file past the bounds of
-docs/limits.md.)";
+file (a UTF-8 byte-order mark is taken), a PLY, PC2 or MDD file whose header
+is bad or whose size does not match it (FILE: byte N: what), a file past the
+bounds of docs/limits.md.)";
 
 // The command line: the frame source's arguments, the outputs, and the job's options.
 struct AuditCommand {
@@ -65,6 +71,7 @@ int run_audit_command(AuditCommand& o, const Io& io) {
   if (!o.out.empty()) check_output_dir(o.out, {"audit.json", "audit.md", "first-violation.png"});
   const ThreadLimit threads(o.job.threads);
   const MeshSequence seq(o.frames, o.cloth, o.obstacles);
+  for (const std::string& note : seq.notes()) io.err << "fdhcert: note: " << note << "\n";
   ObjFrames source(seq);
   o.job.files = !o.out.empty();
   ProgressLine progress(io.err, progress_wanted(io, o.progress));
@@ -84,10 +91,13 @@ int run_audit_command(AuditCommand& o, const Io& io) {
 }
 
 void add_audit_options(CLI::App& cmd, AuditCommand& o) {
-  cmd.add_option("FRAMES", o.frames, "OBJ files, one per frame, or folders of them")->required();
+  cmd.add_option("FRAMES", o.frames,
+                 "OBJ or PLY files, one per frame, or folders of them; or\n"
+                 "MESH CACHE (a .pc2 or .mdd point cache)")
+      ->required();
   cmd.add_option("--obstacle", o.obstacles,
-                 "an obstacle OBJ that stands still, or a folder of one OBJ per\n"
-                 "frame (as many as FRAMES); repeatable")
+                 "an obstacle OBJ or PLY that stands still, or a folder of one\n"
+                 "per frame (as many as FRAMES); repeatable")
       ->type_name("FILE")
       ->allow_extra_args(false);
   cmd.add_option("--cloth", o.cloth,
@@ -98,6 +108,12 @@ void add_audit_options(CLI::App& cmd, AuditCommand& o) {
                  "write audit.json, audit.md, first-violation.png and cases/\n"
                  "into DIR")
       ->type_name("DIR");
+  cmd.add_option("--up", o.job.up,
+                 "the picture's up axis: x, y or z (default: from the data, the\n"
+                 "way the cloth falls)")
+      ->type_name("AXIS")
+      ->transform(
+          CLI::CheckedTransformer(std::map<std::string, int>{{"x", 0}, {"y", 1}, {"z", 2}}));
   cmd.add_flag("--json", o.json, "print the certificate as one JSON object");
   cmd.add_option("--k", o.job.k, "the FDH's k: 6, 14, 18 (default) or 26")
       ->type_name("K")

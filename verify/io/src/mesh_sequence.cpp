@@ -5,12 +5,17 @@
 #include <filesystem>
 #include <optional>
 
+#include "fdh/io/bake_folder.hpp"
 #include "fdh/io/input_error.hpp"
+#include "fdh/io/ply_file.hpp"
+#include "fdh/io/point_cache.hpp"
 
 namespace fdh::verify {
 namespace fs = std::filesystem;
 
-std::vector<std::string> frame_files(const std::vector<std::string>& args) {
+std::vector<std::string> frame_files(const std::vector<std::string>& args,
+                                     std::vector<std::string>* fixed,
+                                     std::vector<std::string>* notes) {
   std::vector<std::string> out;
   for (const std::string& a : args) {
     std::error_code ec;
@@ -23,19 +28,21 @@ std::vector<std::string> frame_files(const std::vector<std::string>& args) {
       out.push_back(a);
       continue;
     }
-    std::vector<std::string> found;
-    for (const fs::directory_entry& e : fs::directory_iterator(a, ec)) {
-      std::string ext = e.path().extension().string();
-      std::transform(ext.begin(), ext.end(), ext.begin(), [](char c) { return char(c | 0x20); });
-      std::error_code entry;  // a link loop among the files is read (and refused) as a file
-      if (ext == ".obj" && !e.is_directory(entry)) found.push_back(e.path().string());
-    }
-    if (ec) throw InputError(a, 0, "cannot list the folder: " + ec.message());
-    if (found.empty()) throw InputError(a, 0, "a folder without an .obj file");
-    std::sort(found.begin(), found.end(), natural_less);
-    out.insert(out.end(), found.begin(), found.end());
+    const BakeFolder b = read_bake_folder(a);
+    if (!b.obstacles.empty() && !fixed)
+      throw InputError(a, 0,
+                       "un-numbered files beside numbered frames: " + b.roles(a).substr(a.size()));
+    if (fixed) fixed->insert(fixed->end(), b.obstacles.begin(), b.obstacles.end());
+    if (notes && !b.obstacles.empty()) notes->push_back(b.roles(a));
+    out.insert(out.end(), b.frames.begin(), b.frames.end());
   }
   return out;
+}
+
+ObjFile read_mesh(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](char c) { return char(c | 0x20); });
+  return ext == ".ply" ? read_ply(path) : read_obj(path);
 }
 
 namespace {
@@ -72,15 +79,17 @@ bool natural_less(const std::string& a, const std::string& b) {
   return a < b;  // equal as numbers ("02", "2"): byte order
 }
 
-void Places::add(std::string file, std::shared_ptr<const std::vector<int>> lines) {
+void Places::add(std::string file, std::shared_ptr<const std::vector<int>> lines, bool bytes) {
   total_ += int(lines->size());
-  parts_.push_back({std::move(file), std::move(lines)});
+  parts_.push_back({std::move(file), std::move(lines), bytes});
 }
 
 std::string Places::at(int index) const {
   for (const Part& p : parts_) {
-    if (index < int(p.lines->size()))
-      return p.file + ":" + std::to_string((*p.lines)[std::size_t(index)]);
+    if (index < int(p.lines->size())) {
+      const int n = (*p.lines)[std::size_t(index)];  // -1: past an int's bytes
+      return p.file + (p.bytes ? ":byte " : ":") + (n < 0 ? "?" : std::to_string(n));
+    }
     index -= int(p.lines->size());
   }
   return "?";
@@ -257,6 +266,7 @@ struct ObstacleSource {
   std::vector<Vec3> x;  // a fixed one's
   std::vector<Tri> tris;
   Lines vertex_lines, tri_lines;
+  bool bytes = false;  // the places are byte offsets
 
   void take(const ObjFile& f) {
     x = f.x;
@@ -264,13 +274,19 @@ struct ObstacleSource {
     std::vector<std::size_t> all;
     for (std::size_t k = 0; k < f.objects.size(); ++k) all.push_back(k);
     tri_lines = face_lines(f, all);
+    bytes = f.byte_offsets;
   }
 };
+
+// "cache.pc2, frame 3": a cached frame's name, for messages and case files.
+std::string cached_frame_name(const std::string& cache, int i) {
+  return cache + ", frame " + std::to_string(i);
+}
 
 }  // namespace
 
 struct MeshSequence::Impl {
-  std::vector<std::string> files;
+  std::vector<std::string> files;  // a frame's name each (a cache's: cached_frame_name)
   std::string cloth_name;
   std::unique_ptr<Shape> shape;
   Split split;
@@ -279,16 +295,20 @@ struct MeshSequence::Impl {
   // Faces of more than three corners: the most in any one frame read so far (its frame file and
   // obstacle files), so that a later frame's quads are said too.
   mutable long polygons = 0;
-  long fixed_polygons = 0;       // those of the obstacles that stand still
-  std::optional<ObjFile> first;  // frame 0 as read for the checks, until read(0) takes it
+  long fixed_polygons = 0;  // those of the obstacles that stand still
+  std::vector<std::string> notes;
+  std::optional<ObjFile> first;     // frame 0 as read for the checks, until read(0) takes it
+  std::optional<PointCache> cache;  // the frames' positions, the faces those of `first`
 
   void read_first(const std::string& cloth);
+  void open_cache();
   void add_obstacle(const std::string& arg);
   long add_obstacles(MeshFrame& m, int i) const;  // their polygons
+  MeshFrame assemble(const ObjFile& f, std::vector<Vec3> x, int i) const;
 };
 
 void MeshSequence::Impl::read_first(const std::string& cloth) {
-  first = read_obj(files.front());
+  first = read_mesh(files.front());
   const ObjFile& f = *first;
   if (f.objects.empty()) throw InputError(f.path, 0, "no faces");
   cloth_name = cloth;
@@ -311,6 +331,25 @@ void MeshSequence::Impl::read_first(const std::string& cloth) {
   topology.obstacle = split.obstacle;
 }
 
+// MESH CACHE: frame 0 (`first`) is the mesh, kept for its faces; the cache gives the frames.
+void MeshSequence::Impl::open_cache() {
+  cache = open_point_cache(files[1]);
+  const std::size_t n = first->x.size();
+  if (std::size_t(cache->points) != n)
+    throw InputError(cache->path, 0,
+                     "byte " + std::string(cache->format == std::string("PC2") ? "16" : "4") +
+                         ": " + std::to_string(cache->points) + " points, and " +
+                         printable(first->path) + " has " + std::to_string(n) +
+                         " vertices; a cache needs one point per vertex");
+  const bool vowel = cache->format == std::string("MDD");  // "an MDD", "a PC2"
+  notes.push_back(printable(cache->path) + (vowel ? ": an " : ": a ") + cache->format +
+                  " point cache of " + std::to_string(cache->frames) + " frames, " +
+                  std::to_string(cache->points) + " points; the faces are " +
+                  printable(first->path) + "'s");
+  files.clear();
+  for (int i = 0; i < cache->frames; ++i) files.push_back(cached_frame_name(cache->path, i));
+}
+
 void MeshSequence::Impl::add_obstacle(const std::string& arg) {
   ObstacleSource o;
   o.files = frame_files({arg});
@@ -319,7 +358,7 @@ void MeshSequence::Impl::add_obstacle(const std::string& arg) {
     throw InputError(arg, 0,
                      std::to_string(o.files.size()) + " obstacle frames for " +
                          std::to_string(files.size()) + " cloth frames");
-  const ObjFile f = read_obj(o.files.front());
+  const ObjFile f = read_mesh(o.files.front());
   if (f.objects.empty()) throw InputError(f.path, 0, "no faces");
   polygons += f.polygons;
   const int base = topology.obstacle_vertices;
@@ -339,27 +378,52 @@ long MeshSequence::Impl::add_obstacles(MeshFrame& m, int i) const {
   for (const ObstacleSource& o : obstacles) {
     if (!o.shape) {
       m.obstacle.insert(m.obstacle.end(), o.x.begin(), o.x.end());
-      m.obstacle_vertices.add(o.files.front(), o.vertex_lines);
-      m.obstacle_tris.add(o.files.front(), o.tri_lines);
+      m.obstacle_vertices.add(o.files.front(), o.vertex_lines, o.bytes);
+      m.obstacle_tris.add(o.files.front(), o.tri_lines, o.bytes);
       continue;
     }
     ObstacleSource now;
-    const ObjFile f = read_obj(o.files[std::size_t(i)]);
+    const ObjFile f = read_mesh(o.files[std::size_t(i)]);
     o.shape->check(f);
     now.take(f);
     polygons += f.polygons;
     m.obstacle.insert(m.obstacle.end(), now.x.begin(), now.x.end());
-    m.obstacle_vertices.add(f.path, now.vertex_lines);
-    m.obstacle_tris.add(f.path, now.tri_lines);
+    m.obstacle_vertices.add(f.path, now.vertex_lines, now.bytes);
+    m.obstacle_tris.add(f.path, now.tri_lines, now.bytes);
   }
   return polygons;
+}
+
+// Frame i from the faces and places of `f` and the positions `x` (f's own, or a cache's).
+MeshFrame MeshSequence::Impl::assemble(const ObjFile& f, std::vector<Vec3> x, int i) const {
+  const Split& s = split;
+  const bool b = f.byte_offsets;
+  MeshFrame m;
+  m.index = i, m.file = files[std::size_t(i)];
+  m.cloth = gather(x, s.cloth_v);
+  m.obstacle = gather(x, s.obstacle_v);
+  m.cloth_vertices.add(f.path, gather(f.vertex_lines, s.cloth_v), b);
+  m.cloth_tris.add(f.path, face_lines(f, s.cloth_objects), b);
+  m.obstacle_vertices.add(f.path, gather(f.vertex_lines, s.obstacle_v), b);
+  m.obstacle_tris.add(f.path, face_lines(f, s.obstacle_objects), b);
+  polygons = std::max(polygons, f.polygons + add_obstacles(m, i));
+  return m;
 }
 
 MeshSequence::MeshSequence(const std::vector<std::string>& frames, const std::string& cloth,
                            const std::vector<std::string>& obstacles)
     : impl_(std::make_unique<Impl>()) {
-  impl_->files = frame_files(frames);
+  std::vector<std::string> fixed;
+  impl_->files = frame_files(frames, &fixed, &impl_->notes);
+  const bool cached = impl_->files.size() == 2 && is_point_cache(impl_->files[1]);
+  for (std::size_t k = 0; k < impl_->files.size(); ++k)
+    if (is_point_cache(impl_->files[k]) && !(cached && k == 1))
+      throw InputError(impl_->files[k], 0,
+                       "a point cache is audited with the mesh that gives its faces: fdhcert "
+                       "audit MESH CACHE (one of each)");
   impl_->read_first(cloth);
+  if (cached) impl_->open_cache();
+  for (const std::string& o : fixed) impl_->add_obstacle(o);
   for (const std::string& o : obstacles) impl_->add_obstacle(o);
 }
 
@@ -380,23 +444,18 @@ const std::string& MeshSequence::cloth_name() const {
 long MeshSequence::polygons() const {
   return impl_->polygons;
 }
+const std::vector<std::string>& MeshSequence::notes() const {
+  return impl_->notes;
+}
 
 MeshFrame MeshSequence::read(int i) const {
+  if (impl_->cache) return impl_->assemble(*impl_->first, read_cache_frame(*impl_->cache, i), i);
   std::optional<ObjFile> taken;
   if (i == 0 && impl_->first) taken.swap(impl_->first);  // read once, not twice
-  const ObjFile f = taken ? std::move(*taken) : read_obj(impl_->files[std::size_t(i)]);
+  ObjFile f = taken ? std::move(*taken) : read_mesh(impl_->files[std::size_t(i)]);
   impl_->shape->check(f);
-  const Split& s = impl_->split;
-  MeshFrame m;
-  m.index = i, m.file = f.path;
-  m.cloth = gather(f.x, s.cloth_v);
-  m.obstacle = gather(f.x, s.obstacle_v);
-  m.cloth_vertices.add(f.path, gather(f.vertex_lines, s.cloth_v));
-  m.cloth_tris.add(f.path, face_lines(f, s.cloth_objects));
-  m.obstacle_vertices.add(f.path, gather(f.vertex_lines, s.obstacle_v));
-  m.obstacle_tris.add(f.path, face_lines(f, s.obstacle_objects));
-  impl_->polygons = std::max(impl_->polygons, f.polygons + impl_->add_obstacles(m, i));
-  return m;
+  std::vector<Vec3> x = std::move(f.x);
+  return impl_->assemble(f, std::move(x), i);
 }
 
 }  // namespace fdh::verify

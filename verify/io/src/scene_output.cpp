@@ -33,6 +33,7 @@ namespace {
 struct Camera {
   Vec3 eye, right, up, forward;
   double focal;  // pixels
+  double near;   // the near plane's depth: what is nearer is not drawn
   int width, height;
 
   // Pixel coordinates and depth; depth <= 0 behind the eye.
@@ -52,12 +53,13 @@ Camera fit_camera(const Framing& view, int width, int height) {
   const double radius = view.radius;
   Camera c;
   c.width = width, c.height = height;
-  c.forward = unit(Vec3{-0.55, -0.45, -1.0});  // from front, right and above
+  c.forward = unit(-1.0 * view.towards_eye);
   c.right = unit(cross(c.forward, Vec3{0, 1, 0}));
   c.up = cross(c.right, c.forward);
   const double half_fov = 0.45;  // radians, vertical
   c.focal = (height / 2.0) / std::tan(half_fov);
   c.eye = centre - (1.05 * radius / std::sin(half_fov)) * c.forward;
+  c.near = 1e-3 * radius;
   return c;
 }
 
@@ -75,16 +77,9 @@ void fill_background(Picture& pic) {
     }
 }
 
-// One triangle, flat shaded (two-sided Lambert: a cloth has no inside), into the depth buffer.
-void draw_triangle(Picture& pic, std::vector<double>& depth, const Camera& cam, const Vec3& a,
-                   const Vec3& b, const Vec3& c, const std::array<double, 3>& colour) {
-  const Vec3 light = unit(Vec3{0.3, 1.0, 0.6});
-  const Vec3 n = cross(b - a, c - a);
-  const double len = norm(n);
-  if (len == 0) return;
-  const double shade = 0.25 + 0.75 * std::fabs(dot(n, light)) / len;
-  const Vec3 p[3] = {cam.project(a), cam.project(b), cam.project(c)};
-  if (p[0].z <= 0 || p[1].z <= 0 || p[2].z <= 0) return;
+// A projected triangle (pixel x, y and depth) filled with `rgb` where it is nearest.
+void fill(Picture& pic, std::vector<double>& depth, const Vec3 (&p)[3],
+          const std::array<unsigned char, 3>& rgb) {
   const int x0 = std::max(0, int(std::floor(std::min({p[0].x, p[1].x, p[2].x}))));
   const int x1 = std::min(pic.width - 1, int(std::ceil(std::max({p[0].x, p[1].x, p[2].x}))));
   const int y0 = std::max(0, int(std::floor(std::min({p[0].y, p[1].y, p[2].y}))));
@@ -103,10 +98,36 @@ void draw_triangle(Picture& pic, std::vector<double>& depth, const Camera& cam, 
       const std::size_t i = std::size_t(y) * pic.width + x;
       if (z >= depth[i]) continue;
       depth[i] = z;
-      for (int k = 0; k < 3; ++k)
-        pic.rgb[i * 3 + k] =
-            (unsigned char)std::lround(255 * std::clamp(shade * colour[k], 0.0, 1.0));
+      for (int k = 0; k < 3; ++k) pic.rgb[i * 3 + k] = rgb[std::size_t(k)];
     }
+}
+
+// One triangle, flat shaded (two-sided Lambert: a cloth has no inside), into the depth buffer;
+// the part of it in front of the camera's near plane (a close-up's eye may stand above a
+// ground triangle: clipped, Sutherland-Hodgman, not dropped).
+void draw_triangle(Picture& pic, std::vector<double>& depth, const Camera& cam, const Vec3& a,
+                   const Vec3& b, const Vec3& c, const std::array<double, 3>& colour) {
+  const Vec3 light = unit(Vec3{0.3, 1.0, 0.6});
+  const Vec3 n = cross(b - a, c - a);
+  const double len = norm(n);
+  if (len == 0) return;
+  const double shade = 0.25 + 0.75 * std::fabs(dot(n, light)) / len;
+  std::array<unsigned char, 3> rgb;
+  for (std::size_t k = 0; k < 3; ++k)
+    rgb[k] = (unsigned char)std::lround(255 * std::clamp(shade * colour[k], 0.0, 1.0));
+  const Vec3 in[3] = {a, b, c};
+  std::vector<Vec3> poly;  // the clipped polygon, in the world
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 &p = in[i], &q = in[(i + 1) % 3];
+    const double dp = dot(p - cam.eye, cam.forward) - cam.near,
+                 dq = dot(q - cam.eye, cam.forward) - cam.near;
+    if (dp >= 0) poly.push_back(p);
+    if ((dp >= 0) != (dq >= 0)) poly.push_back(p + (dp / (dp - dq)) * (q - p));
+  }
+  for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
+    const Vec3 p[3] = {cam.project(poly[0]), cam.project(poly[i]), cam.project(poly[i + 1])};
+    fill(pic, depth, p, rgb);
+  }
 }
 
 }  // namespace

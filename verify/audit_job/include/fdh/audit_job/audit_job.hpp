@@ -25,6 +25,7 @@ struct AuditOptions {
   // The run will write its files (Result::write): case files are named and the first
   // violation's frame is kept for the picture.
   bool files = false;
+  int up = -1;  // the picture's up axis: 0, 1, 2 (x, y, z); -1: from the data
   // Throws std::invalid_argument naming the option (the one check of CLI and Python values).
   void validate() const;
   audit::Options engine() const;
@@ -75,6 +76,7 @@ class AuditResult {
   explicit AuditResult(AuditReport report) : report_(std::move(report)) {}
   struct FirstFrame {
     std::vector<Vec3> cloth, obstacle;
+    int up = 1;  // the picture's up axis
   };
   AuditReport report_;
   std::optional<FirstFrame> first_;

@@ -1,5 +1,6 @@
-// A sequence of mesh frames on disk, for `fdhcert audit`: one OBJ per frame (as `simulate --obj`,
-// Blender or any simulator writes them), a cloth and the obstacles that move with it, plus
+// A sequence of mesh frames on disk, for `fdhcert audit`: one OBJ or PLY per frame (as `simulate
+// --obj`, Blender or any simulator writes them), or a mesh and a point cache of its vertices'
+// positions (PC2, MDD: fdh/io/point_cache.hpp); a cloth and the obstacles that move with it, plus
 // obstacle files of their own. Every frame must have frame 0's faces. Frames are read one at a
 // time, so a long sequence streams.
 #pragma once
@@ -14,10 +15,17 @@
 
 namespace fdh::verify {
 
-// The frame files of `args`, in order: a file is kept as it is; a folder gives its `*.obj` files
-// (any case of the extension) in natural order. Throws InputError for a path that does not
-// exist, or a folder without an OBJ file.
-std::vector<std::string> frame_files(const std::vector<std::string>& args);
+// The frame files of `args`, in order: a file is kept as it is; a folder gives its numbered
+// `*.obj` or `*.ply` files (any case of the extension) in natural order (fdh/io/bake_folder.hpp).
+// A folder's un-numbered files beside numbered ones are fixed obstacles: added to `fixed` (with
+// their folder's roles line to `notes`), or an InputError where `fixed` is null. Throws
+// InputError for a path that does not exist, or a folder without an OBJ or PLY file.
+std::vector<std::string> frame_files(const std::vector<std::string>& args,
+                                     std::vector<std::string>* fixed = nullptr,
+                                     std::vector<std::string>* notes = nullptr);
+
+// A mesh file as the reader of its extension reads it: PLY (fdh/io/ply_file.hpp), else OBJ.
+ObjFile read_mesh(const std::string& path);
 
 // Natural order: runs of digits compare as numbers, so frame_2 comes before frame_10; names
 // equal as numbers (frame_02, frame_2) in byte order, so that the order is total.
@@ -33,11 +41,12 @@ struct SequenceTopology {
 };
 
 // Where primitives stand in the files: the file and the line of each `v` or `f`, by index.
+// A binary file's places are byte offsets: "FILE:byte N".
 class Places {
  public:
-  void add(std::string file, std::shared_ptr<const std::vector<int>> lines);
-  // "FILE:LINE", the file name's bytes as they are: JSON writes them by its reversible rule
-  // (docs/formats.md), text by printable().
+  void add(std::string file, std::shared_ptr<const std::vector<int>> lines, bool bytes = false);
+  // "FILE:LINE" (or "FILE:byte N"), the file name's bytes as they are: JSON writes them by its
+  // reversible rule (docs/formats.md), text by printable().
   std::string at(int index) const;
   int size() const { return total_; }
 
@@ -45,6 +54,7 @@ class Places {
   struct Part {
     std::string file;
     std::shared_ptr<const std::vector<int>> lines;
+    bool bytes = false;
   };
   std::vector<Part> parts_;
   int total_ = 0;
@@ -59,10 +69,12 @@ struct MeshFrame {
 
 class MeshSequence {
  public:
-  // `frames`: the arguments for frame_files. `cloth`: the object that is the cloth; "" for the
-  // object named `cloth` if frame 0 has one, else the whole file. Every other object of the frame
-  // files is an obstacle that moves per frame. `obstacles`: each a file (a fixed obstacle) or a
-  // folder of as many OBJ files as there are frames (one per frame). Reads frame 0 and the fixed
+  // `frames`: the arguments for frame_files, or MESH CACHE: a mesh file that gives the faces and
+  // a point cache (.pc2, .mdd) that gives every frame's positions of its vertices, one point per
+  // vertex (a vertex's place is then its line in MESH). `cloth`: the object that is the cloth; ""
+  // for the object named `cloth` if frame 0 has one, else the whole file. Every other object of the
+  // frame files is an obstacle that moves per frame. `obstacles`: each a file (a fixed obstacle) or
+  // a folder of as many OBJ files as there are frames (one per frame). Reads frame 0 and the fixed
   // obstacles and checks them: the cloth named exists, no vertex is both cloth and obstacle, the
   // cloth is manifold (no edge in more than two triangles). Throws InputError.
   MeshSequence(const std::vector<std::string>& frames, const std::string& cloth,
@@ -79,6 +91,9 @@ class MeshSequence {
   // Faces of more than three corners, fan-triangulated: the most in any one frame read so far
   // (its frame file and the obstacle files), frame 0 once constructed.
   long polygons() const;
+  // What the output says of how the input was read: a bake folder's frames and fixed obstacles,
+  // a point cache's format and frames. One line each, no newline.
+  const std::vector<std::string>& notes() const;
 
   // Frame i (0 <= i < frames()): read and checked against frame 0 (the same objects, vertex count
   // and faces, a triangle's corners in the same cyclic order; InputError naming the face or the

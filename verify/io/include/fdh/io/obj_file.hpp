@@ -27,6 +27,7 @@ struct ObjFile {
   std::vector<int> vertex_lines;   // the line of each `v`
   std::vector<ObjObject> objects;  // in order of first appearance; only those with faces
   long polygons = 0;               // faces of more than 3 vertices, fan-triangulated
+  bool byte_offsets = false;       // the lines are byte offsets (a binary file: PLY)
 
   // The object named `name`, or nullptr.
   const ObjObject* object(const std::string& name) const;

@@ -22,11 +22,12 @@ struct SceneMesh {
 // One OBJ with one object (`o name`) per mesh.
 void write_obj(const std::string& path, const std::vector<SceneMesh>& meshes);
 
-// What a picture shows: a sphere around the meshes, seen from a fixed direction (front, right
-// and above) at a distance that fits it in view.
+// What a picture shows: a sphere around the meshes, seen from a direction (by default front,
+// right and above; y is up) at a distance that fits it in view.
 struct Framing {
   Vec3 centre;
   double radius = 1;
+  Vec3 towards_eye{0.55, 0.45, 1.0};  // from the centre towards the eye; not along y
 };
 Framing frame_view(const std::vector<SceneMesh>& meshes);
 
