@@ -713,13 +713,8 @@ FilteredToi within_delta(const Query& q, const Bernstein& f, double width) {
   return robust_delta_search(q, width, contact_by);
 }
 
-}  // namespace
-
-Filtered robust_ccd_filter(const Query& q) {
-  return robust_ccd_toi_filter(q, 0).verdict;
-}
-
-FilteredToi robust_ccd_toi_filter(const Query& q, double width) {
+// robust_ccd_toi_filter, telling `stage` which stage decided (else RobustStage::Exact).
+FilteredToi filter(const Query& q, double width, RobustStage& stage) {
   // Interval bounds never overflow below 2^100: the conditions have degree 4 in coordinates.
   for (const Vec3& v : q.x)
     if (!(std::fabs(v.x) <= 0x1p100 && std::fabs(v.y) <= 0x1p100 && std::fabs(v.z) <= 0x1p100))
@@ -730,8 +725,12 @@ FilteredToi robust_ccd_toi_filter(const Query& q, double width) {
              w[2] = {x[3] - x[0], x[7] - x[4]};
   const Bernstein f = bernstein(u, v, w);
   if (!f.valid) return {};
+  stage = RobustStage::Subdivision;
   if (q.min_distance > 0) return within_delta(q, f, width);
-  if (bernstein_sign(f) != 0) return {Filtered::No, 1, 1, false};
+  if (bernstein_sign(f) != 0) {
+    stage = RobustStage::Volume;
+    return {Filtered::No, 1, 1, false};
+  }
   if (width <= 0) return {subdivide(q, f), 0, 1, false};
   ToiTrack toi{width, 2, {}};
   const Filtered verdict = subdivide(q, f, &toi);
@@ -739,6 +738,23 @@ FilteredToi robust_ccd_toi_filter(const Query& q, double width) {
   toi.out.verdict = verdict;
   if (verdict == Filtered::Uncertain) toi.out.t0 = std::min(toi.open, 1.0), toi.out.t1 = 1;
   return toi.out;
+}
+
+}  // namespace
+
+Filtered robust_ccd_filter(const Query& q) {
+  return robust_ccd_toi_filter(q, 0).verdict;
+}
+
+FilteredToi robust_ccd_toi_filter(const Query& q, double width) {
+  RobustStage stage;
+  return filter(q, width, stage);
+}
+
+RobustStage robust_ccd_stage(const Query& q) {
+  RobustStage stage = RobustStage::Exact;
+  const FilteredToi f = filter(q, 0, stage);
+  return f.verdict == Filtered::Uncertain ? RobustStage::Exact : stage;
 }
 
 }  // namespace fdh

@@ -37,6 +37,16 @@ struct FilteredToi {
 };
 FilteredToi robust_ccd_toi_filter(const Query& q, double width);
 
+// The stages of the verdict above, in the order a query meets them, and the one that decides a
+// query (with δ = q.min_distance > 0, the search within δ counts as the subdivision): for
+// measurement (bench/robust_stages.cpp, docs/performance.md "robust by stage"), never a verdict.
+enum class RobustStage {
+  Volume,       // stage 1: f's Bernstein coefficients of one certain sign
+  Subdivision,  // stage 2: root isolation and intervals
+  Exact,        // none: the caller's exact test
+};
+RobustStage robust_ccd_stage(const Query& q);
+
 using CcdTest = bool (*)(const Query& q);
 
 inline bool robust_ccd(const Query& q, CcdTest exact_fallback) {
