@@ -29,7 +29,7 @@
 namespace fdh::bench {
 namespace {
 
-constexpr std::array<const char*, 3> kStages = {"volume", "subdivision", "fallback"};
+constexpr std::array<const char*, 4> kStages = {"volume", "subdivision", "integer", "fallback"};
 constexpr std::array<const char*, 6> kHard = {"hourglass",      "two-crossings",
                                               "coplanar",       "sliding-on-edge",
                                               "parallel-edges", "degenerate-edge"};

@@ -5,7 +5,9 @@
 #include <limits>
 #include <optional>
 
+#include "ccd_robust_conditions.hpp"
 #include "ccd_robust_delta.hpp"
+#include "ccd_robust_integer.hpp"
 #include "fdh/interval.hpp"
 #include "fdh/orient3d_exact.hpp"
 #include "fdh/orient3d_filter.hpp"
@@ -70,40 +72,7 @@ int bernstein_sign(const Bernstein& f) {
 // ---- Stage 2: the inside conditions by intervals, and root isolation by subdivision of f.
 
 using namespace motion;
-
-// The conditions g_i over a time interval. At a coplanar time, contact iff every g_i >= 0 (the
-// same polynomials as reference/'s exact_ccd.cpp); g_i > 0 for all i implies contact, since the
-// g_i all vanish when the triangle has zero area or the edges are parallel. (f itself is
-// bounded on pieces by its Bernstein coefficients, not here.)
-template <class T>
-struct Conditions {
-  T g[4];
-  int n = 0;
-};
-
-template <class T>
-Conditions<T> vertex_face(const Query& q, const T& t) {
-  const V3<T> p = at(q.x[0], q.x[4], t), a = at(q.x[1], q.x[5], t), b = at(q.x[2], q.x[6], t),
-              c = at(q.x[3], q.x[7], t);
-  const V3<T> ap = a - p, bp = b - p, cp = c - p, n = cross(b - a, c - a);
-  // |n|^2 times p's barycentric coordinates when coplanar.
-  return {{dot(n, cross(bp, cp)), dot(n, cross(cp, ap)), dot(n, cross(ap, bp))}, 3};
-}
-
-template <class T>
-Conditions<T> edge_edge(const Query& q, const T& t) {
-  const V3<T> a0 = at(q.x[0], q.x[4], t), a1 = at(q.x[1], q.x[5], t), b0 = at(q.x[2], q.x[6], t),
-              b1 = at(q.x[3], q.x[7], t);
-  const V3<T> ea = a1 - a0, eb = b1 - b0, w = b0 - a0, m = cross(ea, eb);
-  const T mm = dot(m, m), s = dot(cross(w, eb), m), u = dot(cross(w, ea), m);
-  // a0 + (s/mm) ea = b0 + (u/mm) eb when coplanar: both parameters in [0, 1].
-  return {{s, mm - s, u, mm - u}, 4};
-}
-
-template <class T>
-Conditions<T> conditions_at(const Query& q, const T& t) {
-  return q.kind == QueryKind::VertexFace ? vertex_face(q, t) : edge_edge(q, t);
-}
+using namespace ccd_conditions;
 
 // What the conditions look like at one instant, estimated in plain floating point, relative to
 // the largest in size. Never a verdict: it only tells the filter where intervals would fail,
@@ -184,17 +153,6 @@ bool flat(const Piece& p, double err) {
 // The conditions g_i over a piece: its rounded ends pushed out by twice its slack.
 Conditions<Interval> conditions(const Query& q, const Piece& p) {
   return conditions_at(q, Interval{p.lo - 2 * p.slack, p.hi + 2 * p.slack});
-}
-
-// What the intervals make certain: some g_i < 0 (out: no contact there), every g_i > 0 (inside:
-// a contact, given coplanarity).
-struct Signs {
-  bool out = false, inside = true;
-};
-Signs certain_signs(const Conditions<Interval>& c) {
-  Signs r;
-  for (int i = 0; i < c.n; ++i) r.out |= c.g[i].negative(), r.inside &= c.g[i].positive();
-  return r;
 }
 
 // Interval evaluations of the conditions allowed per query. One costs some ten times the whole
@@ -713,6 +671,16 @@ FilteredToi within_delta(const Query& q, const Bernstein& f, double width) {
   return robust_delta_search(q, width, contact_by);
 }
 
+// Stage 3 (ccd_robust_integer.hpp): its No, and its Yes with the earliest contact enclosed when
+// `want_time` (else not enclosed: the exact fallback finds the time).
+FilteredToi integer_stage(const Query& q, bool want_time, RobustStage& stage) {
+  const IntegerToi r = robust_ccd_integer(q, want_time);
+  if (r.verdict == Filtered::Uncertain) return {};
+  stage = RobustStage::Integer;
+  if (r.verdict == Filtered::No) return {Filtered::No, 1, 1, false};
+  return r.exact ? FilteredToi{Filtered::Yes, r.t_lo, r.t_hi, true} : FilteredToi{Filtered::Yes};
+}
+
 // robust_ccd_toi_filter, telling `stage` which stage decided (else RobustStage::Exact).
 FilteredToi filter(const Query& q, double width, RobustStage& stage) {
   // Interval bounds never overflow below 2^100: the conditions have degree 4 in coordinates.
@@ -731,13 +699,19 @@ FilteredToi filter(const Query& q, double width, RobustStage& stage) {
     stage = RobustStage::Volume;
     return {Filtered::No, 1, 1, false};
   }
-  if (width <= 0) return {subdivide(q, f), 0, 1, false};
+  if (width <= 0) {
+    const Filtered verdict = subdivide(q, f);
+    return verdict != Filtered::Uncertain ? FilteredToi{verdict, 0, 1, false}
+                                          : integer_stage(q, false, stage);
+  }
   ToiTrack toi{width, 2, {}};
   const Filtered verdict = subdivide(q, f, &toi);
   if (verdict == Filtered::No) return {Filtered::No, 1, 1, false};
   toi.out.verdict = verdict;
-  if (verdict == Filtered::Uncertain) toi.out.t0 = std::min(toi.open, 1.0), toi.out.t1 = 1;
-  return toi.out;
+  if (verdict == Filtered::Yes) return toi.out;
+  toi.out.t0 = std::min(toi.open, 1.0), toi.out.t1 = 1;
+  const FilteredToi exact = integer_stage(q, true, stage);
+  return exact.verdict == Filtered::No || exact.enclosed ? exact : toi.out;
 }
 
 }  // namespace
