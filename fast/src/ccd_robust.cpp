@@ -699,10 +699,20 @@ FilteredToi filter(const Query& q, double width, RobustStage& stage) {
     stage = RobustStage::Volume;
     return {Filtered::No, 1, 1, false};
   }
+  // f about 0 throughout (no coefficient of certain sign: coplanar motion): the subdivision
+  // would give up, so the integer stage goes first.
+  const Piece whole{0, 1, 0, {f.b[0], f.b[1], f.b[2], f.b[3]}, 0};
+  const bool flat_f = flat(whole, f.err);
   if (width <= 0) {
+    const FilteredToi r = flat_f ? integer_stage(q, false, stage) : FilteredToi{};
+    if (r.verdict != Filtered::Uncertain) return r;
     const Filtered verdict = subdivide(q, f);
-    return verdict != Filtered::Uncertain ? FilteredToi{verdict, 0, 1, false}
-                                          : integer_stage(q, false, stage);
+    return verdict != Filtered::Uncertain || flat_f ? FilteredToi{verdict, 0, 1, false}
+                                                    : integer_stage(q, false, stage);
+  }
+  if (flat_f) {
+    const FilteredToi r = integer_stage(q, true, stage);
+    if (r.verdict == Filtered::No || r.enclosed) return r;
   }
   ToiTrack toi{width, 2, {}};
   const Filtered verdict = subdivide(q, f, &toi);
@@ -710,7 +720,7 @@ FilteredToi filter(const Query& q, double width, RobustStage& stage) {
   toi.out.verdict = verdict;
   if (verdict == Filtered::Yes) return toi.out;
   toi.out.t0 = std::min(toi.open, 1.0), toi.out.t1 = 1;
-  const FilteredToi exact = integer_stage(q, true, stage);
+  const FilteredToi exact = flat_f ? FilteredToi{} : integer_stage(q, true, stage);
   return exact.verdict == Filtered::No || exact.enclosed ? exact : toi.out;
 }
 

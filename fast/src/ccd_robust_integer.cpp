@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <initializer_list>
 #include <optional>
 
@@ -18,25 +19,34 @@ using small_poly::Poly;
 using small_poly::Root;
 
 // ---- The query on integers: every coordinate times one power of two 2^s, the smallest that
-// makes them all integers, each then below 2^kMaxIntegerBits in size (else false).
+// makes them all integers, each then below 2^kMaxIntegerBits in size (else false). Read from the
+// bits: x = m 2^e with m an integer of at most 53 bits.
 bool integer_coordinates(const Query& q, std::int64_t c[8][3]) {
-  int scale = -2000;
-  for (const Vec3& v : q.x)
-    for (const double x : {v.x, v.y, v.z}) {
-      if (x == 0) continue;
-      if (!std::isfinite(x)) return false;
-      int e;
-      const double f = std::frexp(x, &e);  // x = f 2^e = m 2^(e - 53), m an integer
-      const auto m = static_cast<std::int64_t>(std::ldexp(std::fabs(f), 53));
-      scale = std::max(scale, 53 - e - __builtin_ctzll(static_cast<std::uint64_t>(m)));
+  std::uint64_t m[24];
+  int e[24], low = 1 << 20;  // the least exponent of a set bit
+  for (int i = 0; i < 24; ++i) {
+    const Vec3& v = q.x[i / 3];
+    const double x = i % 3 == 0 ? v.x : (i % 3 == 1 ? v.y : v.z);
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    const int biased = int(bits >> 52) & 0x7ff;
+    if (biased == 0x7ff) return false;  // infinite or NaN
+    m[i] = (bits & ((std::uint64_t(1) << 52) - 1)) | (biased != 0 ? std::uint64_t(1) << 52 : 0);
+    e[i] = (biased != 0 ? biased : 1) - 1075;
+    if (m[i] != 0) low = std::min(low, e[i] + __builtin_ctzll(m[i]));
+  }
+  for (int i = 0; i < 24; ++i) {
+    std::int64_t value = 0;
+    if (m[i] != 0) {
+      const int tz = __builtin_ctzll(m[i]), shift = e[i] + tz - low;  // >= 0
+      const std::uint64_t odd = m[i] >> tz;
+      if (shift + 64 - __builtin_clzll(odd) > kMaxIntegerBits) return false;
+      value = std::int64_t(odd << shift);
     }
-  for (int i = 0; i < 8; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const double x = j == 0 ? q.x[i].x : (j == 1 ? q.x[i].y : q.x[i].z);
-      const double s = std::ldexp(x, scale);  // exact: an integer below 2^32, or refused
-      if (!(std::fabs(s) < std::ldexp(1.0, kMaxIntegerBits))) return false;
-      c[i][j] = static_cast<std::int64_t>(s);
-    }
+    const Vec3& v = q.x[i / 3];
+    const double x = i % 3 == 0 ? v.x : (i % 3 == 1 ? v.y : v.z);
+    c[i / 3][i % 3] = x < 0 ? -value : value;
+  }
   return true;
 }
 
@@ -163,6 +173,9 @@ class Search {
                Poly::linear(c[i][2], c[i + 4][2])};
       for (int j = 0; j < 3; ++j) c0_[i][j] = c[i][j], c1_[i][j] = c[i + 4][j];
     }
+    for (int i = 0; i < 8; ++i) {
+      for (int j = 0; j < 3; ++j) c_[i][j] = c[i][j];
+    }
   }
   IntegerToi run();
 
@@ -179,16 +192,22 @@ class Search {
   void roots_of(const Poly& f);
   bool isolate(const Piece& p);
   bool open_root(Piece p);
+  std::optional<bool> bracketed_root(const Piece& p);
+  double rough_root(double lo, double hi, int s_lo) const;
+  std::optional<bool> conditions_over(double lo, double hi);
   bool exact_root(const Fraction& t);
   void coplanar_throughout();
   std::optional<Root> point_edge(int p, int a, int b) const;
   std::optional<Root> point_point(int p, int a) const;
+  bool apart(int p, int a, int b) const;
   void candidate(const Root& r);
 
   const Query& q_;
   bool want_time_;
   PV x_[4];
+  Poly f_;  // the coplanarity cubic
   Int128 c0_[4][3], c1_[4][3];
+  std::int64_t c_[8][3];  // the coordinates: point i at t = 0, point i + 4 at t = 1
   bool found_ = false, undecided_ = false, exact_ = false;
   Fraction when_;  // with exact_, the earliest contact
   // Coplanar throughout: the contacts found at irrational times (one per vertex-edge pair).
@@ -198,12 +217,12 @@ class Search {
 
 IntegerToi Search::run() {
   const PV& p = x_[0];
-  const Poly f = q_.kind == QueryKind::VertexFace ? dot(x_[1] - p, cross(x_[2] - p, x_[3] - p))
-                                                  : dot(x_[1] - p, cross(x_[2] - p, x_[3] - x_[2]));
-  if (f.is_zero())
+  f_ = q_.kind == QueryKind::VertexFace ? dot(x_[1] - p, cross(x_[2] - p, x_[3] - p))
+                                        : dot(x_[1] - p, cross(x_[2] - p, x_[3] - x_[2]));
+  if (f_.is_zero())
     coplanar_throughout();
   else
-    roots_of(f);
+    roots_of(f_);
   IntegerToi r;
   r.verdict = found_ ? Filtered::Yes : (undecided_ ? Filtered::Uncertain : Filtered::No);
   if (found_ && exact_ && want_time_) r.exact = enclose(when_, r.t_lo, r.t_hi);
@@ -247,16 +266,70 @@ bool Search::isolate(const Piece& p) {
   return isolate(right);
 }
 
-// One simple root inside p: the conditions over the piece by intervals (as the subdivision's
-// contact_at_root), the piece halved toward the root in between, 8 times a round; a halving
-// that lands on the root makes it exact.
-bool Search::open_root(Piece p) {
+// The conditions over [lo, hi] by intervals (as the subdivision's contact_at_root), given one
+// root of f there: some certainly < 0, none (false); all > 0, a contact (true); else neither.
+std::optional<bool> Search::conditions_over(double lo, double hi) {
   using namespace ccd_conditions;
+  const Signs s = certain_signs(conditions_at(q_, Interval{lo, hi}));
+  if (s.out) return false;
+  if (s.inside) return found_ = true;  // somewhere in (lo, hi): not an exact time
+  return std::nullopt;
+}
+
+// f's root in (lo, hi), where its sign is s_lo just above lo, roughly: Newton steps in doubles
+// kept inside a bracket that is halved instead when a step leaves it. Never part of a verdict.
+double Search::rough_root(double lo, double hi, int s_lo) const {
+  double c[4];
+  for (int i = 0; i < 4; ++i) c[i] = f_.c[i].approx();
+  double u = lo + (hi - lo) / 2;
+  for (int i = 0; i < 10; ++i) {
+    const double v = ((c[3] * u + c[2]) * u + c[1]) * u + c[0];
+    const double slope = (3 * c[3] * u + 2 * c[2]) * u + c[1];
+    ((v > 0) == (s_lo > 0) ? lo : hi) = u;
+    const double next = u - v / slope;
+    u = next > lo && next < hi ? next : lo + (hi - lo) / 2;  // a NaN step halves too
+  }
+  return u;
+}
+
+// The root in p bracketed by two neighbouring multiples of 2^-kBracketBits inside p around the
+// rough root, by f's exact signs there (those just inside p at its ends), then settled over the
+// bracket by intervals: true or false where that decides, nullopt where it does not (or the
+// guess did not bracket, or a sign would overflow).
+std::optional<bool> Search::bracketed_root(const Piece& p) {
+  constexpr int kBracketBits = 24;
+  if (p.k > kBracketBits) return std::nullopt;
+  int s_lo = 0, s_hi = 0;
+  for (const Int128& c : p.b) s_hi = c.is_zero() ? s_hi : c.sign(), s_lo = s_lo != 0 ? s_lo : s_hi;
+  const double unit = 1 / double(std::int64_t(1) << p.k), scale = double(1 << kBracketBits);
+  const double u = rough_root(double(p.a) * unit, double(p.a + 1) * unit, s_lo);
+  const std::int64_t first = p.a << (kBracketBits - p.k),
+                     last = ((p.a + 1) << (kBracketBits - p.k)) - 1;
+  const std::int64_t a = std::clamp(std::int64_t(std::floor(u * scale)), first, last);
+  const Fraction t0{a, std::int64_t(1) << kBracketBits}, t1{a + 1, t0.q};
+  int s0 = s_lo, s1 = s_hi;
+  try {
+    if (a != first) s0 = small_poly::sign_at(f_, t0);
+    if (a != last) s1 = small_poly::sign_at(f_, t1);
+  } catch (const IntegerOverflow&) {
+    return std::nullopt;
+  }
+  if (s0 == 0) return exact_root(t0);
+  if (s1 == 0) return exact_root(t1);
+  if (s0 == s1) return std::nullopt;
+  if (std::optional<bool> r = conditions_over(double(a) / scale, double(a + 1) / scale)) return r;
+  undecided_ = true;  // a condition about 0 at the root: deeper would not do either
+  return false;
+}
+
+// One simple root inside p: bracketed (above), else halvings toward the root, the intervals
+// over the piece every 8; a halving that lands on the root makes it exact.
+bool Search::open_root(Piece p) {
+  if (const std::optional<bool> r = bracketed_root(p)) return *r;
   for (int round = 0; round < 4; ++round) {
-    const double lo = std::ldexp(double(p.a), -p.k), hi = std::ldexp(double(p.a + 1), -p.k);
-    const Signs s = certain_signs(conditions_at(q_, Interval{lo, hi}));
-    if (s.out) return false;
-    if (s.inside) return found_ = true;  // somewhere in (lo, hi): not an exact time
+    const double unit = 1 / double(std::int64_t(1) << p.k);  // exact: a power of two
+    if (const std::optional<bool> r = conditions_over(double(p.a) * unit, double(p.a + 1) * unit))
+      return *r;
     for (int i = 0; i < 8 && p.k < kMaxDepth; ++i) {
       Piece left, right;
       split(p, left, right);
@@ -296,10 +369,24 @@ std::optional<Root> Search::point_point(int p, int a) const {
   return first_common_root({&d.x, &d.y, &d.z}, [](const Root&) { return true; });
 }
 
+// Whether the boxes that p and the segment ab sweep over the step are apart on some axis: the
+// segment at any time lies in the box of its ends at both times, so p then never meets it.
+bool Search::apart(int p, int a, int b) const {
+  for (int j = 0; j < 3; ++j) {
+    const std::int64_t p_lo = std::min(c_[p][j], c_[p + 4][j]),
+                       p_hi = std::max(c_[p][j], c_[p + 4][j]);
+    const std::int64_t s_lo = std::min({c_[a][j], c_[a + 4][j], c_[b][j], c_[b + 4][j]});
+    const std::int64_t s_hi = std::max({c_[a][j], c_[a + 4][j], c_[b][j], c_[b + 4][j]});
+    if (p_hi < s_lo || s_hi < p_lo) return true;
+  }
+  return false;
+}
+
 // Point p on the moving segment ab (reference/'s Search::point_edge): where p - a and b - a are
 // not parallel throughout, at the common roots of their cross product w with p between a and b
 // ((p - a).(p - b) <= 0); else at the start, or where p meets an end.
 std::optional<Root> Search::point_edge(int p, int a, int b) const {
+  if (apart(p, a, b)) return std::nullopt;
   const PV pa = x_[p] - x_[a], w = cross(pa, x_[b] - x_[a]);
   const Poly h = dot(pa, x_[p] - x_[b]);
   if (!w.is_zero())

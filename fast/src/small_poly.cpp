@@ -8,28 +8,6 @@ int compare(const Fraction& a, const Fraction& b) {
   return (a.p * b.q - b.p * a.q).sign();
 }
 
-int Poly::degree() const {
-  for (int i = 3; i >= 0; --i)
-    if (!c[i].is_zero()) return i;
-  return -1;
-}
-
-Poly operator+(const Poly& a, const Poly& b) {
-  return {{a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3]}};
-}
-Poly operator-(const Poly& a, const Poly& b) {
-  return {{a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3]}};
-}
-Poly operator*(const Poly& a, const Poly& b) {
-  const int da = a.degree(), db = b.degree();
-  Poly r;
-  if (da < 0 || db < 0) return r;
-  if (da + db > 3) throw IntegerOverflow{};
-  for (int i = 0; i <= da; ++i)
-    for (int j = 0; j <= db; ++j) r.c[i + j] = r.c[i + j] + a.c[i] * b.c[j];
-  return r;
-}
-
 int sign_at(const Poly& f, const Fraction& t) {
   // Horner on the homogeneous form: ((c3 p + c2 q) p + c1 q^2) p + c0 q^3.
   Int128 v = f.c[3], qk = 1;
@@ -92,6 +70,9 @@ int roots_in_unit(const Poly& f, Root out[2]) {
   if (d == 1) keep(fraction(-f.c[0], f.c[1]));
   if (d != 2) return n;
   const Int128 c0 = f.c[0], c1 = f.c[1], c2 = f.c[2];
+  // Bernstein coefficients on [0, 1] (times 2) of one strict sign: no root there, the common case.
+  const int s0 = c0.sign(), s1 = (Int128(2) * c0 + c1).sign(), s2 = (c0 + c1 + c2).sign();
+  if (s0 != 0 && s0 == s1 && s1 == s2) return 0;
   const Int128 disc = c1 * c1 - Int128(4) * c0 * c2;
   if (disc.sign() < 0) return 0;
   const Int128 s = exact_sqrt(disc);

@@ -18,12 +18,33 @@ int compare(const Fraction& a, const Fraction& b);  // sign(a - b)
 struct Poly {
   Int128 c[4] = {0, 0, 0, 0};
   static Poly linear(Int128 at0, Int128 at1) { return {{at0, at1 - at0, 0, 0}}; }
-  int degree() const;  // -1 for 0
-  bool is_zero() const { return degree() < 0; }
+  int degree() const {  // -1 for 0
+    return !c[3].is_zero()   ? 3
+           : !c[2].is_zero() ? 2
+           : !c[1].is_zero() ? 1
+           : c[0].is_zero()  ? -1
+                             : 0;
+  }
+  bool is_zero() const {
+    return c[0].is_zero() && c[1].is_zero() && c[2].is_zero() && c[3].is_zero();
+  }
 };
-Poly operator+(const Poly& a, const Poly& b);
-Poly operator-(const Poly& a, const Poly& b);
-Poly operator*(const Poly& a, const Poly& b);
+// Inline: the integer stage's hot loop (cross and dot products of moving points).
+inline Poly operator+(const Poly& a, const Poly& b) {
+  return {{a.c[0] + b.c[0], a.c[1] + b.c[1], a.c[2] + b.c[2], a.c[3] + b.c[3]}};
+}
+inline Poly operator-(const Poly& a, const Poly& b) {
+  return {{a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2], a.c[3] - b.c[3]}};
+}
+inline Poly operator*(const Poly& a, const Poly& b) {
+  const int da = a.degree(), db = b.degree();
+  Poly r;
+  if (da < 0 || db < 0) return r;
+  if (da + db > 3) throw IntegerOverflow{};
+  for (int i = 0; i <= da; ++i)
+    for (int j = 0; j <= db; ++j) r.c[i + j] = r.c[i + j] + a.c[i] * b.c[j];
+  return r;
+}
 
 // The sign of f(p / q): of the homogeneous sum of c_i p^i q^(3 - i), q^3 > 0.
 int sign_at(const Poly& f, const Fraction& t);
