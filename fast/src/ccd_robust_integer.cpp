@@ -72,6 +72,46 @@ T dot(const V<T>& a, const V<T>& b) {
 using PV = V<Poly>;
 using IV = V<Int128>;
 
+// A moving coordinate c0 + c1 t of the query, or a difference of two: below 2^kMaxIntegerBits,
+// |c0| < 2^33 and |c1| < 2^34, so that a product of three and a sum of a few such products stay
+// far inside 128 bits and are formed unchecked (the stage's hot loop).
+static_assert(kMaxIntegerBits <= 32);
+struct Lin {
+  std::int64_t c0 = 0, c1 = 0;
+  bool is_zero() const { return c0 == 0 && c1 == 0; }
+  Lin operator-(const Lin& o) const { return {c0 - o.c0, c1 - o.c1}; }
+  Poly poly() const { return {{c0, c1, 0, 0}}; }
+};
+using LV = V<Lin>;
+
+// a b - c d, coefficients < 2^70.
+Poly products(const Lin& a, const Lin& b, const Lin& c, const Lin& d) {
+  using W = __int128;
+  return {{Int128::of(W(a.c0) * b.c0 - W(c.c0) * d.c0),
+           Int128::of(W(a.c0) * b.c1 + W(a.c1) * b.c0 - W(c.c0) * d.c1 - W(c.c1) * d.c0),
+           Int128::of(W(a.c1) * b.c1 - W(c.c1) * d.c1), 0}};
+}
+PV cross(const LV& a, const LV& b) {
+  return {products(a.y, b.z, a.z, b.y), products(a.z, b.x, a.x, b.z), products(a.x, b.y, a.y, b.x)};
+}
+Poly dot(const LV& a, const LV& b) {  // coefficients < 2^71
+  const Lin zero;
+  return products(a.x, b.x, zero, zero) + products(a.y, b.y, zero, zero) +
+         products(a.z, b.z, zero, zero);
+}
+// A moving vector times one of cross(), coefficients < 2^109.
+Poly dot(const LV& a, const PV& b) {
+  __int128 r[4] = {0, 0, 0, 0};
+  const Lin* l[3] = {&a.x, &a.y, &a.z};
+  const Poly* q[3] = {&b.x, &b.y, &b.z};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      r[j] += l[i]->c0 * q[i]->c[j].value();
+      r[j + 1] += l[i]->c1 * q[i]->c[j].value();
+    }
+  return {{Int128::of(r[0]), Int128::of(r[1]), Int128::of(r[2]), Int128::of(r[3])}};
+}
+
 // ---- Contact at an exact time, given coplanarity: reference/'s exact_ccd.cpp on integers.
 
 // Closed segment membership, degenerate segments included.
@@ -169,8 +209,8 @@ class Search {
   Search(const Query& q, const std::int64_t c[8][3], bool want_time)
       : q_(q), want_time_(want_time) {
     for (int i = 0; i < 4; ++i) {
-      x_[i] = {Poly::linear(c[i][0], c[i + 4][0]), Poly::linear(c[i][1], c[i + 4][1]),
-               Poly::linear(c[i][2], c[i + 4][2])};
+      x_[i] = {Lin{c[i][0], c[i + 4][0] - c[i][0]}, Lin{c[i][1], c[i + 4][1] - c[i][1]},
+               Lin{c[i][2], c[i + 4][2] - c[i][2]}};
       for (int j = 0; j < 3; ++j) c0_[i][j] = c[i][j], c1_[i][j] = c[i + 4][j];
     }
     for (int i = 0; i < 8; ++i) {
@@ -204,7 +244,7 @@ class Search {
 
   const Query& q_;
   bool want_time_;
-  PV x_[4];
+  LV x_[4];
   Poly f_;  // the coplanarity cubic
   Int128 c0_[4][3], c1_[4][3];
   std::int64_t c_[8][3];  // the coordinates: point i at t = 0, point i + 4 at t = 1
@@ -216,7 +256,7 @@ class Search {
 };
 
 IntegerToi Search::run() {
-  const PV& p = x_[0];
+  const LV& p = x_[0];
   f_ = q_.kind == QueryKind::VertexFace ? dot(x_[1] - p, cross(x_[2] - p, x_[3] - p))
                                         : dot(x_[1] - p, cross(x_[2] - p, x_[3] - x_[2]));
   if (f_.is_zero())
@@ -364,9 +404,10 @@ Root at_start() {
 }
 
 std::optional<Root> Search::point_point(int p, int a) const {
-  const PV d = x_[p] - x_[a];
+  const LV d = x_[p] - x_[a];
   if (d.is_zero()) return at_start();
-  return first_common_root({&d.x, &d.y, &d.z}, [](const Root&) { return true; });
+  const Poly x = d.x.poly(), y = d.y.poly(), z = d.z.poly();
+  return first_common_root({&x, &y, &z}, [](const Root&) { return true; });
 }
 
 // Whether the boxes that p and the segment ab sweep over the step are apart on some axis: the
@@ -387,7 +428,8 @@ bool Search::apart(int p, int a, int b) const {
 // ((p - a).(p - b) <= 0); else at the start, or where p meets an end.
 std::optional<Root> Search::point_edge(int p, int a, int b) const {
   if (apart(p, a, b)) return std::nullopt;
-  const PV pa = x_[p] - x_[a], w = cross(pa, x_[b] - x_[a]);
+  const LV pa = x_[p] - x_[a];
+  const PV w = cross(pa, x_[b] - x_[a]);
   const Poly h = dot(pa, x_[p] - x_[b]);
   if (!w.is_zero())
     return first_common_root({&w.x, &w.y, &w.z},

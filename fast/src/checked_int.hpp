@@ -33,6 +33,8 @@ class Int128 {
     return r;
   }
   friend Int128 operator*(Int128 a, Int128 b) {
+    // Two factors within 64 bits never overflow (the common case, and a cheaper product).
+    if (a.fits_64() && b.fits_64()) return from(__int128(std::int64_t(a.v_)) * std::int64_t(b.v_));
     Int128 r;
     if (__builtin_mul_overflow(a.v_, b.v_, &r.v_)) throw IntegerOverflow{};
     return r;
@@ -42,6 +44,11 @@ class Int128 {
   friend bool operator!=(Int128 a, Int128 b) { return a.v_ != b.v_; }
   friend bool operator<(Int128 a, Int128 b) { return a.v_ < b.v_; }
   friend bool operator<=(Int128 a, Int128 b) { return a.v_ <= b.v_; }
+
+  // From a machine value, and back: for sums of products bounded by their factors' sizes.
+  static Int128 of(__int128 v) { return from(v); }
+  __int128 value() const { return v_; }
+  bool fits_64() const { return v_ == __int128(std::int64_t(v_)); }
 
   // a / 2^k for a a multiple of 2^k (exact), and the number of trailing zero bits (128 for 0).
   Int128 shifted_right(int k) const { return from(v_ >> k); }
