@@ -208,22 +208,18 @@ class Search {
  public:
   Search(const Query& q, const std::int64_t c[8][3], bool want_time)
       : q_(q), want_time_(want_time) {
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < 4; ++i)
       x_[i] = {Lin{c[i][0], c[i + 4][0] - c[i][0]}, Lin{c[i][1], c[i + 4][1] - c[i][1]},
                Lin{c[i][2], c[i + 4][2] - c[i][2]}};
-      for (int j = 0; j < 3; ++j) c0_[i][j] = c[i][j], c1_[i][j] = c[i + 4][j];
-    }
-    for (int i = 0; i < 8; ++i) {
-      for (int j = 0; j < 3; ++j) c_[i][j] = c[i][j];
-    }
+    std::memcpy(c_, c, sizeof c_);
   }
   IntegerToi run();
 
  private:
   IV at(int i, const Fraction& t) const {  // point i at t, times t.q
     const Int128 r = t.q - t.p;
-    return {c0_[i][0] * r + c1_[i][0] * t.p, c0_[i][1] * r + c1_[i][1] * t.p,
-            c0_[i][2] * r + c1_[i][2] * t.p};
+    const auto lerp = [&](int j) { return Int128(c_[i][j]) * r + Int128(c_[i + 4][j]) * t.p; };
+    return {lerp(0), lerp(1), lerp(2)};
   }
   bool touch(const Fraction& t) const {  // at a coplanar time
     const IV p = at(0, t), a = at(1, t), b = at(2, t), c = at(3, t);
@@ -245,8 +241,7 @@ class Search {
   const Query& q_;
   bool want_time_;
   LV x_[4];
-  Poly f_;  // the coplanarity cubic
-  Int128 c0_[4][3], c1_[4][3];
+  Poly f_;                // the coplanarity cubic
   std::int64_t c_[8][3];  // the coordinates: point i at t = 0, point i + 4 at t = 1
   bool found_ = false, undecided_ = false, exact_ = false;
   Fraction when_;  // with exact_, the earliest contact

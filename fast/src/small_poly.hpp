@@ -17,7 +17,6 @@ int compare(const Fraction& a, const Fraction& b);  // sign(a - b)
 // c[0] + c[1] t + c[2] t^2 + c[3] t^3. A product beyond degree 3 throws IntegerOverflow.
 struct Poly {
   Int128 c[4] = {0, 0, 0, 0};
-  static Poly linear(Int128 at0, Int128 at1) { return {{at0, at1 - at0, 0, 0}}; }
   int degree() const {  // -1 for 0
     return !c[3].is_zero()   ? 3
            : !c[2].is_zero() ? 2
