@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   fdh::bench::register_narrow_phase();
   fdh::bench::register_ccd_sample();
   fdh::bench::register_ccd_toi();
+  fdh::bench::register_robust_stages();
   fdh::bench::register_ccd_delta();
   fdh::bench::register_frames();
   fdh::bench::register_audit();

@@ -17,6 +17,10 @@ void register_ccd_sample();
 // impact at w = 2^-30 and 2^-50 beside its verdict alone, ns per query and their ratios.
 void register_ccd_toi();
 
+// stages/<set>: which stage of `robust` decides each query of the sample and of the six hard
+// moving families, robust's time by stage, and exact's and float-cubic's beside it (issue 33).
+void register_robust_stages();
+
 // delta/sample/<set>, delta/sample/all: minimum separation at D = 1e-6 (issue 30): robust at
 // δ = 0, robust within δ, its TOI and the float baseline within δ, ns per query;
 // print_delta_ratios() prints the medians' ratios after the run.

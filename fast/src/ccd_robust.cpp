@@ -5,7 +5,9 @@
 #include <limits>
 #include <optional>
 
+#include "ccd_robust_conditions.hpp"
 #include "ccd_robust_delta.hpp"
+#include "ccd_robust_integer.hpp"
 #include "fdh/interval.hpp"
 #include "fdh/orient3d_exact.hpp"
 #include "fdh/orient3d_filter.hpp"
@@ -70,40 +72,7 @@ int bernstein_sign(const Bernstein& f) {
 // ---- Stage 2: the inside conditions by intervals, and root isolation by subdivision of f.
 
 using namespace motion;
-
-// The conditions g_i over a time interval. At a coplanar time, contact iff every g_i >= 0 (the
-// same polynomials as reference/'s exact_ccd.cpp); g_i > 0 for all i implies contact, since the
-// g_i all vanish when the triangle has zero area or the edges are parallel. (f itself is
-// bounded on pieces by its Bernstein coefficients, not here.)
-template <class T>
-struct Conditions {
-  T g[4];
-  int n = 0;
-};
-
-template <class T>
-Conditions<T> vertex_face(const Query& q, const T& t) {
-  const V3<T> p = at(q.x[0], q.x[4], t), a = at(q.x[1], q.x[5], t), b = at(q.x[2], q.x[6], t),
-              c = at(q.x[3], q.x[7], t);
-  const V3<T> ap = a - p, bp = b - p, cp = c - p, n = cross(b - a, c - a);
-  // |n|^2 times p's barycentric coordinates when coplanar.
-  return {{dot(n, cross(bp, cp)), dot(n, cross(cp, ap)), dot(n, cross(ap, bp))}, 3};
-}
-
-template <class T>
-Conditions<T> edge_edge(const Query& q, const T& t) {
-  const V3<T> a0 = at(q.x[0], q.x[4], t), a1 = at(q.x[1], q.x[5], t), b0 = at(q.x[2], q.x[6], t),
-              b1 = at(q.x[3], q.x[7], t);
-  const V3<T> ea = a1 - a0, eb = b1 - b0, w = b0 - a0, m = cross(ea, eb);
-  const T mm = dot(m, m), s = dot(cross(w, eb), m), u = dot(cross(w, ea), m);
-  // a0 + (s/mm) ea = b0 + (u/mm) eb when coplanar: both parameters in [0, 1].
-  return {{s, mm - s, u, mm - u}, 4};
-}
-
-template <class T>
-Conditions<T> conditions_at(const Query& q, const T& t) {
-  return q.kind == QueryKind::VertexFace ? vertex_face(q, t) : edge_edge(q, t);
-}
+using namespace ccd_conditions;
 
 // What the conditions look like at one instant, estimated in plain floating point, relative to
 // the largest in size. Never a verdict: it only tells the filter where intervals would fail,
@@ -184,17 +153,6 @@ bool flat(const Piece& p, double err) {
 // The conditions g_i over a piece: its rounded ends pushed out by twice its slack.
 Conditions<Interval> conditions(const Query& q, const Piece& p) {
   return conditions_at(q, Interval{p.lo - 2 * p.slack, p.hi + 2 * p.slack});
-}
-
-// What the intervals make certain: some g_i < 0 (out: no contact there), every g_i > 0 (inside:
-// a contact, given coplanarity).
-struct Signs {
-  bool out = false, inside = true;
-};
-Signs certain_signs(const Conditions<Interval>& c) {
-  Signs r;
-  for (int i = 0; i < c.n; ++i) r.out |= c.g[i].negative(), r.inside &= c.g[i].positive();
-  return r;
 }
 
 // Interval evaluations of the conditions allowed per query. One costs some ten times the whole
@@ -713,13 +671,18 @@ FilteredToi within_delta(const Query& q, const Bernstein& f, double width) {
   return robust_delta_search(q, width, contact_by);
 }
 
-}  // namespace
-
-Filtered robust_ccd_filter(const Query& q) {
-  return robust_ccd_toi_filter(q, 0).verdict;
+// Stage 3 (ccd_robust_integer.hpp): its No, and its Yes with the earliest contact enclosed when
+// `want_time` (else not enclosed: the exact fallback finds the time).
+FilteredToi integer_stage(const Query& q, bool want_time, RobustStage& stage) {
+  const IntegerToi r = robust_ccd_integer(q, want_time);
+  if (r.verdict == Filtered::Uncertain) return {};
+  stage = RobustStage::Integer;
+  if (r.verdict == Filtered::No) return {Filtered::No, 1, 1, false};
+  return r.exact ? FilteredToi{Filtered::Yes, r.t_lo, r.t_hi, true} : FilteredToi{Filtered::Yes};
 }
 
-FilteredToi robust_ccd_toi_filter(const Query& q, double width) {
+// robust_ccd_toi_filter, telling `stage` which stage decided (else RobustStage::Exact).
+FilteredToi filter(const Query& q, double width, RobustStage& stage) {
   // Interval bounds never overflow below 2^100: the conditions have degree 4 in coordinates.
   for (const Vec3& v : q.x)
     if (!(std::fabs(v.x) <= 0x1p100 && std::fabs(v.y) <= 0x1p100 && std::fabs(v.z) <= 0x1p100))
@@ -730,15 +693,52 @@ FilteredToi robust_ccd_toi_filter(const Query& q, double width) {
              w[2] = {x[3] - x[0], x[7] - x[4]};
   const Bernstein f = bernstein(u, v, w);
   if (!f.valid) return {};
+  stage = RobustStage::Subdivision;
   if (q.min_distance > 0) return within_delta(q, f, width);
-  if (bernstein_sign(f) != 0) return {Filtered::No, 1, 1, false};
-  if (width <= 0) return {subdivide(q, f), 0, 1, false};
+  if (bernstein_sign(f) != 0) {
+    stage = RobustStage::Volume;
+    return {Filtered::No, 1, 1, false};
+  }
+  // f about 0 throughout (no coefficient of certain sign: coplanar motion): the subdivision
+  // would give up, so the integer stage goes first.
+  const Piece whole{0, 1, 0, {f.b[0], f.b[1], f.b[2], f.b[3]}, 0};
+  const bool flat_f = flat(whole, f.err);
+  if (width <= 0) {
+    const FilteredToi r = flat_f ? integer_stage(q, false, stage) : FilteredToi{};
+    if (r.verdict != Filtered::Uncertain) return r;
+    const Filtered verdict = subdivide(q, f);
+    return verdict != Filtered::Uncertain || flat_f ? FilteredToi{verdict, 0, 1, false}
+                                                    : integer_stage(q, false, stage);
+  }
+  if (flat_f) {
+    const FilteredToi r = integer_stage(q, true, stage);
+    if (r.verdict == Filtered::No || r.enclosed) return r;
+  }
   ToiTrack toi{width, 2, {}};
   const Filtered verdict = subdivide(q, f, &toi);
   if (verdict == Filtered::No) return {Filtered::No, 1, 1, false};
   toi.out.verdict = verdict;
-  if (verdict == Filtered::Uncertain) toi.out.t0 = std::min(toi.open, 1.0), toi.out.t1 = 1;
-  return toi.out;
+  if (verdict == Filtered::Yes) return toi.out;
+  toi.out.t0 = std::min(toi.open, 1.0), toi.out.t1 = 1;
+  const FilteredToi exact = flat_f ? FilteredToi{} : integer_stage(q, true, stage);
+  return exact.verdict == Filtered::No || exact.enclosed ? exact : toi.out;
+}
+
+}  // namespace
+
+Filtered robust_ccd_filter(const Query& q) {
+  return robust_ccd_toi_filter(q, 0).verdict;
+}
+
+FilteredToi robust_ccd_toi_filter(const Query& q, double width) {
+  RobustStage stage;
+  return filter(q, width, stage);
+}
+
+RobustStage robust_ccd_stage(const Query& q) {
+  RobustStage stage = RobustStage::Exact;
+  const FilteredToi f = filter(q, 0, stage);
+  return f.verdict == Filtered::Uncertain ? RobustStage::Exact : stage;
 }
 
 }  // namespace fdh

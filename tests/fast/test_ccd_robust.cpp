@@ -38,15 +38,19 @@ TEST(RobustCcdFilter, SettlesCoplanarMotionThatStartsInside) {
   q.x = {Vec3{0.25, 0.25, 0}, a, b, c, Vec3{2, 2, 0}, a, b, c};
   ASSERT_TRUE(exact::ccd_hit(q));
   EXPECT_EQ(robust_ccd_filter(q), Filtered::Yes);
-  q.x[0] = {3, 3, 0};  // starting outside: the exact test decides
+  q.x[0] = {3, 3, 0};  // starting outside: the integer stage decides (small integers)
   EXPECT_FALSE(exact::ccd_hit(q));
-  EXPECT_EQ(robust_ccd_filter(q), Filtered::Uncertain);
+  EXPECT_EQ(robust_ccd_filter(q), Filtered::No);
+  EXPECT_EQ(robust_ccd_stage(q), RobustStage::Integer);
 }
 
-// On an edge at the end: a condition is zero there, so the exact test decides.
-TEST(RobustCcdFilter, LeavesATouchOnAnEdgeAtAnEndToTheExactTest) {
+// On an edge at the end: a condition is zero there, which no interval shows; on these small
+// dyadic coordinates the integer stage decides it (beyond them the exact test does:
+// test_ccd_robust_integer.cpp).
+TEST(RobustCcdFilter, SettlesATouchOnAnEdgeAtAnEndOnIntegers) {
   const Query on_edge = landing(0.5, 0, false);
-  EXPECT_EQ(robust_ccd_filter(on_edge), Filtered::Uncertain);
+  EXPECT_EQ(robust_ccd_filter(on_edge), Filtered::Yes);
+  EXPECT_EQ(robust_ccd_stage(on_edge), RobustStage::Integer);
   EXPECT_TRUE(robust_ccd(on_edge, &exact::ccd_hit));
 }
 
