@@ -32,7 +32,7 @@ std::string of_read(const fs::path& p) {
 std::map<std::string, std::string> of_tree(const fs::path& dir) {
   std::map<std::string, std::string> m;
   for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    const std::string rel = fs::relative(e.path(), dir).string();
+    const std::string rel = e.path().lexically_relative(dir).string();
     m[rel] = e.is_symlink()     ? "-> " + fs::read_symlink(e.path()).string()
              : e.is_directory() ? "/"
                                 : of_read(e.path());
