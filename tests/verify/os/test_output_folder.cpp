@@ -190,6 +190,25 @@ TEST(OutputFolder, AKilledRunsFolderIsRemovedByTheNextRun) {
   EXPECT_EQ(of_read(victim / "precious"), "kept\n");
 }
 
+// An old run's temporary of one of the job's own files is left behind; one of another file (the
+// user's) is carried as any file.
+TEST(OutputFolder, DeadRunsTemporariesOfOwnedFilesAreNotCarried) {
+  const fs::path root = fresh_temp_dir("output_folder_litter");
+  const fs::path out = of_old_output(root);
+  ChildProcess dead([] { return 0; });
+  const std::string pid = std::to_string(dead.pid());
+  dead.wait();
+  std::ofstream(out / ("a.txt.tmp." + pid + ".3")) << "cut";
+  std::ofstream(out / ("mine.txt.tmp." + pid + ".3")) << "the user's\n";
+  {
+    OutputFolder f(out.string(), kOwned);
+    std::ofstream(fs::path(f.path()) / "a.txt") << "new a\n";
+    f.commit();
+  }
+  EXPECT_FALSE(fs::exists(out / ("a.txt.tmp." + pid + ".3")));
+  EXPECT_EQ(of_read(out / ("mine.txt.tmp." + pid + ".3")), "the user's\n");
+}
+
 TEST(OutputFolder, RemoveTreeRemovesDeepFoldersAndNoLinksTarget) {
   const fs::path root = fresh_temp_dir("output_folder_tree");
   fs::path p = root / "t";

@@ -72,15 +72,26 @@ const char* kind_of(const struct stat& st) {
 void carry(const fs::path& from, const fs::path& to, const std::string& rel,
            const std::vector<std::string>& patterns, const std::string& dir);
 
+// A dead run's temporary of one of the job's own files (named after it, ours, its process gone):
+// left behind, as a run that writes the file removes it (fdh/os/temporaries.hpp).
+bool owned_litter(const fs::path& p, const std::string& rel,
+                  const std::vector<std::string>& patterns) {
+  std::string target;
+  struct stat st {};
+  return names_dead_runs_temporary(p.filename().string(), target) &&
+         owned(patterns, rel.empty() ? target : rel + "/" + target) &&
+         ::lstat(p.c_str(), &st) == 0 && st.st_uid == ::geteuid();
+}
+
 // What the old folder `from` holds and the job does not own, into `to`; an entry the run wrote
-// wins, and a dead run's temporary is left behind.
+// wins, and a dead run's temporary of an owned file is left behind.
 void carry_folder(const fs::path& from, const fs::path& to, const std::string& rel,
                   const std::vector<std::string>& patterns, const std::string& dir) {
   std::error_code ec;
   for (fs::directory_iterator it(from, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
     const std::string r = rel.empty() ? name : rel + "/" + name;
-    if (owned(patterns, r) || names_dead_runs_temporary(name)) continue;
+    if (owned(patterns, r) || owned_litter(it->path(), rel, patterns)) continue;
     carry(it->path(), to / name, r, patterns, dir);
   }
   if (ec)
@@ -178,6 +189,7 @@ void check_output_folder(const std::string& dir, const std::vector<std::string>&
 
 OutputFolder::OutputFolder(const std::string& dir, std::vector<std::string> owned)
     : owned_(std::move(owned)) {
+  if (dir.empty()) throw std::runtime_error("an output folder is empty");
   const fs::path target = target_of(dir);
   refuse_current_folder(dir, target);
   dir_ = target.string();

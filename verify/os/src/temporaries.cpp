@@ -274,8 +274,7 @@ void remove_dead_runs_temporaries(const std::string& target) {
   ::close(dir_fd);
 }
 
-bool names_dead_runs_temporary(const std::string& name) {
-  std::string target;
+bool names_dead_runs_temporary(const std::string& name, std::string& target) {
   Stale s;
   return parse_temporary(name, target, s) && s.pid != ::getpid() && !process_runs(s.pid);
 }

@@ -61,7 +61,8 @@ bool process_runs(pid_t pid);
 // process.
 void remove_dead_runs_temporaries(const std::string& target);
 
-// Whether `name` (a file name) is one of the temporaries above of a run that runs no more.
-bool names_dead_runs_temporary(const std::string& name);
+// Whether `name` (a file name) is one of the temporaries above of a run that runs no more; its
+// TARGET's name into `target`.
+bool names_dead_runs_temporary(const std::string& name, std::string& target);
 
 }  // namespace fdh::verify
