@@ -23,6 +23,7 @@ set(fdh_slow_tests
   Plugin.CertifyCatchesALateTimeAndSavesTheCase
   Plugin.CertifyCatchesAPlugInThatBreaksItsPromise
   Catalogue/SecondProbeFullDisk.IsExit2NamingItAndKeepsThePreviousCharts/report
+  Catalogue/OutputFaults.GivesItsStatusAndMessage/report_full_disk_keeps_the_old_report
   Kills.ReportKilledAnywhereAndInItsChartsLeavesWholeOutputs
   BvhProperties.TraversalContainsBruteForce
   KdopProperties.FloatFdhContainsExactFdh

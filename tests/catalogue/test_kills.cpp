@@ -1,6 +1,8 @@
 // SIGKILL at random points of `fdhcert certify --quick`, `fdhcert report --quick` (charts
 // included) and `fdhcert fuzz`, each a child process with its own --out: every output left is
-// whole or absent, temporaries are only where their writer's design puts them, and a fuzz run
+// whole or absent, temporaries are only where their writer's design puts them (certify's and
+// report's: only beside --out, as the private folder of a staged output, which the next run
+// removes: fdh/os/output_folder.hpp; never inside it), and a fuzz run
 // killed again and again and resumed with other --chunk and --threads ends with exactly the
 // cases of an uninterrupted run. Also: a user's files that merely look like temporaries
 // survive fuzz's clean-up, and two fuzz runs on one folder do not both run.
@@ -153,6 +155,8 @@ std::vector<std::string> kill_problems(const fs::path& out, std::vector<std::str
       if (text.empty() || !kill_ends_with(text, "\n")) problem("empty or cut");
     } else if (ext == ".png") {
       if (text.rfind(png_sig, 0) != 0 || !kill_ends_with(text, iend)) problem("a cut PNG");
+    } else if (ext == ".html") {
+      if (text.find("</html>") == std::string::npos) problem("a cut HTML page");
     } else if (ext == ".svg") {
       std::string t = text;
       while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back()))) t.pop_back();
@@ -196,6 +200,35 @@ void kill_expect_whole(const fs::path& out, const std::string& what,
   EXPECT_EQ(kill_snapshot(out), before) << what << ": files changed after the kill";
 }
 
+// The private folders of staged outputs beside `out` (OUT.tmp.<pid>.staged-XXXXXX), and what
+// else is there named as a temporary of `out`.
+std::vector<std::string> kill_beside(const fs::path& out, std::vector<std::string>* others) {
+  static const std::regex staged(R"(.+\.tmp\.[0-9]+\.staged-[A-Za-z0-9]{6})");
+  std::vector<std::string> found;
+  const std::string prefix = out.filename().string() + ".tmp.";
+  for (const auto& e : fs::directory_iterator(out.parent_path())) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    (std::regex_match(name, staged) && e.is_directory() ? found : *others).push_back(name);
+  }
+  return found;
+}
+
+// After the kills: an uninterrupted run of `args` into `out` ends well, its outputs whole and
+// inside `out` nothing but outputs, and it removes the staged folders the kills left beside.
+void kill_expect_cleaned_up(const std::vector<std::string>& args, const fs::path& out,
+                            const fs::path& log, const std::string& what) {
+  std::vector<std::string> others;
+  std::cout << what << ": " << kill_beside(out, &others).size()
+            << " staged folders left beside the output by the kills\n";
+  EXPECT_TRUE(others.empty()) << what << ": " << others.front();
+  ASSERT_EQ(kill_run(args, log), 0) << kill_slurp(log.string() + ".err");
+  std::vector<std::string> temporaries;
+  for (const std::string& p : kill_problems(out, &temporaries)) ADD_FAILURE() << what << ": " << p;
+  EXPECT_TRUE(temporaries.empty()) << what << ": " << temporaries.front();
+  EXPECT_TRUE(kill_beside(out, &others).empty()) << what << ": the next run did not clean up";
+}
+
 std::mt19937& kill_rng() {
   static std::mt19937 rng(std::random_device{}());
   return rng;
@@ -221,7 +254,7 @@ TEST(Kills, CertifyKilledAnywhereLeavesWholeOutputs) {
   };
   // Rounds 0-4 start in a fresh folder; 5-9 over a whole certificate, then over what each
   // kill left.
-  const fs::path over = kill_dir("kills_certify_over");
+  const fs::path over = kill_dir("kills_certify_over") / "out";
   const auto start = KillClock::now();
   ASSERT_EQ(kill_run(args(over), logs / "certify"), 0) << kill_slurp(logs / "certify.err");
   // Kills anywhere in a run as long as that one.
@@ -229,22 +262,26 @@ TEST(Kills, CertifyKilledAnywhereLeavesWholeOutputs) {
   std::vector<std::string> temporaries;
   int killed = 0;
   for (int round = 0; round < 10; ++round) {
-    const fs::path out = round < 5 ? kill_dir("kills_certify_" + std::to_string(round)) : over;
+    const fs::path out =
+        round < 5 ? kill_dir("kills_certify_" + std::to_string(round)) / "out" : over;
+    fs::create_directories(out);
     const pid_t pid = kill_spawn(args(out), logs / "certify");
     killed += kill_when(
         pid, [] { return true; }, kill_uniform(0, whole_s));
     kill_expect_whole(out, "certify round " + std::to_string(round), &temporaries);
-    if (round < 5 && !HasFailure()) fs::remove_all(out);
+    if (round < 5 && !HasFailure()) fs::remove_all(out.parent_path());
   }
   EXPECT_GT(killed, 0) << "every run ended before its kill";
-  for (const std::string& t : temporaries) std::cout << "certify left temporary " << t << "\n";
+  EXPECT_TRUE(temporaries.empty()) << "a temporary inside the output: " << temporaries.front();
+  kill_expect_cleaned_up(args(over), over, logs / "certify", "certify");
   if (!HasFailure())
-    for (const fs::path& d : {corpus, logs, over}) fs::remove_all(d);
+    for (const fs::path& d : {corpus, logs, over.parent_path()}) fs::remove_all(d);
 }
 
 TEST(Kills, ReportKilledAnywhereAndInItsChartsLeavesWholeOutputs) {
   const fs::path corpus = kill_small_corpus(), logs = kill_dir("kills_report_logs");
-  const fs::path out = kill_dir("kills_report");
+  const fs::path out = kill_dir("kills_report") / "out";
+  fs::create_directories(out);
   const std::vector<std::string> args = {"report",  "--quick",   "--per-family", "5",
                                          "--soups", "2",         "--corpus",     corpus.string(),
                                          "--out",   out.string()};
@@ -270,9 +307,10 @@ TEST(Kills, ReportKilledAnywhereAndInItsChartsLeavesWholeOutputs) {
     kill_expect_whole(out, "report, kill in the charts " + std::to_string(round), &temporaries);
   }
   EXPECT_GT(in_charts, 0) << "no kill hit the chart step";
-  for (const std::string& t : temporaries) std::cout << "report left temporary " << t << "\n";
+  EXPECT_TRUE(temporaries.empty()) << "a temporary inside the output: " << temporaries.front();
+  kill_expect_cleaned_up(args, out, logs / "report", "report");
   if (!HasFailure())
-    for (const fs::path& d : {corpus, logs, out}) fs::remove_all(d);
+    for (const fs::path& d : {corpus, logs, out.parent_path()}) fs::remove_all(d);
 }
 
 // The case files under `out` (relative names) and their contents; .fuzz/ left out.

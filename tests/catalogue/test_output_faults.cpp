@@ -17,6 +17,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -33,6 +34,11 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kOutFaultScene = FDH_SOURCE_DIR "/corpus/scenes/table.scene";
+// File-size limits (RLIMIT_FSIZE) of the rows on multi-file outputs: each lets the run's text
+// files through and stops its first picture (PNG), as a disk that fills up part way would.
+constexpr rlim_t kOutFaultAuditLimit = 4 << 10;     // audit.json 2 KiB, the picture 5 KiB
+constexpr rlim_t kOutFaultChartLimit = 16 << 10;    // table1.md 4 KiB, its chart 50 KiB
+constexpr rlim_t kOutFaultReportLimit = 128 << 10;  // CSVs 35 KiB, gnuplot scripts, a chart 140 KiB
 
 // How the child's standard output is set up.
 enum class OutFaultStdout { DevNull, DevFull, Closed };
@@ -132,6 +138,63 @@ OutFaultChild out_fault_cmd(const fs::path& dir, std::vector<std::string> args) 
   c.args = std::move(args);
   c.cwd = dir.string();
   return c;
+}
+
+// Every file and link under `dir` (recursively) by relative name, with its bytes: an output
+// folder's whole state.
+std::map<std::string, std::string> out_fault_snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> s;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const std::string rel = e.path().lexically_relative(dir).string();
+    s[rel] = e.is_symlink()        ? "-> " + fs::read_symlink(e.path()).string()
+             : e.is_regular_file() ? out_fault_read(e.path())
+                                   : "(folder)";
+  }
+  return s;
+}
+
+// What is left beside the output folder `dir` named after it as a temporary (DIR.tmp.*).
+std::vector<std::string> out_fault_beside(const fs::path& dir) {
+  std::vector<std::string> found;
+  const std::string prefix = dir.filename().string() + ".tmp.";
+  for (const auto& e : fs::directory_iterator(dir.parent_path()))
+    if (e.path().filename().string().rfind(prefix, 0) == 0) found.push_back(e.path().string());
+  return found;
+}
+
+// A first, whole run of `args` in `d` (its exit status `status`), whose output folder OUT is
+// copied to d/before: a second run that fails must leave OUT exactly so.
+void out_fault_first_run(const fs::path& d, const std::vector<std::string>& args, int status,
+                         const std::string& out) {
+  const OutFaultRun first = out_fault_run(out_fault_cmd(d, args));
+  ASSERT_EQ(first.status, status) << first.err;
+  std::ofstream(d / out / "notes.txt") << "the user's own\n";
+  fs::copy(d / out, d / "before", fs::copy_options::recursive | fs::copy_options::copy_symlinks);
+}
+
+// After a failed second run: OUT as the first run left it, byte for byte, and nothing beside.
+void out_fault_expect_kept(const fs::path& d, const std::string& out) {
+  EXPECT_EQ(out_fault_snapshot(d / out), out_fault_snapshot(d / "before"));
+  EXPECT_TRUE(out_fault_beside(d / out).empty()) << out_fault_beside(d / out).front();
+}
+
+// Frames of the audit rows: a 2x2 cloth square at height z over an obstacle triangle at z = -1;
+// from z = 0 to z = -2 the cloth falls through it.
+std::string out_fault_frame(const fs::path& d, const std::string& name, double z) {
+  std::ofstream(d / name) << "o cloth\nv 0 0 " << z << "\nv 1 0 " << z << "\nv 1 1 " << z
+                          << "\nv 0 1 " << z
+                          << "\nf 1 2 3\nf 1 3 4\no obstacles\nv -1 -1 -1\nv 3 -1 -1\n"
+                             "v -1 3 -1\nf 5 6 7\n";
+  return name;
+}
+
+// One of the shipped scenes, cut to `frames` frames, as d/scenes/NAME.
+void out_fault_short_scene(const fs::path& d, const std::string& name, int frames) {
+  fs::create_directories(d / "scenes");
+  std::string text = out_fault_read(kOutFaultScene);
+  const std::size_t at = text.find("\nframes ");
+  text.replace(at + 1, text.find('\n', at + 1) - at - 1, "frames " + std::to_string(frames));
+  std::ofstream(d / "scenes" / name) << text;
 }
 
 // The catalogue itself: one row per output fault. A table, so longer than a function should be;
@@ -293,6 +356,86 @@ std::vector<OutFaultRow> out_fault_catalogue() {
          EXPECT_FALSE(fs::exists(d / "t" / "table1.svg"));
          EXPECT_TRUE(out_fault_files_named(d / "t", ".tmp.").empty());
        }},
+      // Multi-file outputs are published whole (issue 34): a run that cannot write one of its
+      // files (a full disk: RLIMIT_FSIZE, as a child's limit) leaves the earlier output byte for
+      // byte, the user's own file in it too, and nothing beside it; into a new folder it leaves
+      // no folder at all.
+      {"audit_out_full_disk_keeps_the_old_audit",
+       [](const fs::path& d) {
+         const std::string f0 = out_fault_frame(d, "f0.obj", 0);
+         out_fault_first_run(d, {"audit", f0, out_fault_frame(d, "f1.obj", -2), "--out", "out"}, 1,
+                             "out");
+         OutFaultChild c = out_fault_cmd(
+             d, {"audit", f0, out_fault_frame(d, "g1.obj", -3), "--out", "out", "--keep", "1"});
+         c.max_file_size = kOutFaultAuditLimit;
+         return c;
+       },
+       2, "out/first-violation.png: cannot write file: File too large",
+       [](const fs::path& d) { out_fault_expect_kept(d, "out"); }},
+      {"audit_out_full_disk_into_a_new_folder_leaves_none",
+       [](const fs::path& d) {
+         OutFaultChild c =
+             out_fault_cmd(d, {"audit", out_fault_frame(d, "f0.obj", 0),
+                               out_fault_frame(d, "f1.obj", -3), "--out", "new", "--keep", "1"});
+         c.max_file_size = kOutFaultAuditLimit;
+         return c;
+       },
+       2, "new/first-violation.png: cannot write file: File too large",
+       [](const fs::path& d) {
+         EXPECT_FALSE(fs::exists(d / "new"));
+         EXPECT_TRUE(out_fault_beside(d / "new").empty());
+       }},
+      {"audit_out_over_an_old_one_replaces_its_own_files_only",
+       [](const fs::path& d) {
+         const std::string f0 = out_fault_frame(d, "f0.obj", 0);
+         out_fault_first_run(d, {"audit", f0, out_fault_frame(d, "f1.obj", -2), "--out", "out"}, 1,
+                             "out");
+         return out_fault_cmd(d, {"audit", f0, out_fault_frame(d, "g1.obj", 0.5), "--out", "out"});
+       },
+       0, "",
+       [](const fs::path& d) {
+         EXPECT_EQ(out_fault_read(d / "out" / "notes.txt"), "the user's own\n");
+         EXPECT_FALSE(fs::exists(d / "out" / "cases")) << "the old audit's cases were kept";
+         EXPECT_FALSE(fs::exists(d / "out" / "first-violation.png"));
+         const auto j = nlohmann::json::parse(out_fault_read(d / "out" / "audit.json"));
+         EXPECT_TRUE(j["first_violation"].is_null()) << j.dump();
+         EXPECT_TRUE(out_fault_beside(d / "out").empty());
+       }},
+      {"table1_full_disk_keeps_the_old_table",
+       [](const fs::path& d) {
+         const std::vector<std::string> args = {
+             "table1", "--scene", kOutFaultScene, "--frames", "1", "--out", "t"};
+         out_fault_first_run(d, args, 0, "t");
+         OutFaultChild c = out_fault_cmd(d, args);
+         c.max_file_size = kOutFaultChartLimit;
+         return c;
+       },
+       2, "t/table1.png", [](const fs::path& d) { out_fault_expect_kept(d, "t"); }},
+      {"report_full_disk_keeps_the_old_report",
+       [](const fs::path& d) {
+         fs::create_directories(d / "corpus");
+         fs::copy_file(fs::path(FDH_SOURCE_DIR) / "corpus/queries/hand-made.vf",
+                       d / "corpus" / "hand-made.vf");
+         const std::vector<std::string> args = {"report",   "--quick", "--per-family", "5",
+                                                "--soups",  "2",       "--peer-cases", "20",
+                                                "--corpus", "corpus",  "--out",        "r"};
+         out_fault_first_run(d, args, 0, "r");
+         OutFaultChild c = out_fault_cmd(d, args);
+         c.max_file_size = kOutFaultReportLimit;
+         return c;
+       },
+       2, "r/speed_accuracy.png", [](const fs::path& d) { out_fault_expect_kept(d, "r"); }},
+      // A run that fails part way (a bad second scene) leaves the first scene's old files.
+      {"scenes_failing_part_way_keeps_the_old_scenes",
+       [](const fs::path& d) {
+         out_fault_short_scene(d, "a.scene", 3);
+         const std::vector<std::string> args = {"scenes", "--scenes", "scenes", "--out", "s"};
+         out_fault_first_run(d, args, 0, "s");
+         out_fault_short_scene(d, "a.scene", 4);
+         std::ofstream(d / "scenes" / "b.scene") << "grid 25\nnot a scene line\n";
+         return out_fault_cmd(d, args);
+       },
+       2, "b.scene:2", [](const fs::path& d) { out_fault_expect_kept(d, "s"); }},
       // Option values: range-checked, overflow-free, messages short.
       {"shard_count_huge",
        [fuzz, with](const fs::path& d) {

@@ -13,6 +13,8 @@
 #include "fdh/io/query_io.hpp"
 #include "fdh/kdop.hpp"
 #include "fdh/os/atomic_file.hpp"
+#include "fdh/os/folders.hpp"
+#include "fdh/os/output_folder.hpp"
 #include "violation_picture.hpp"
 
 namespace fdh::verify {
@@ -60,18 +62,22 @@ std::string AuditResult::written_text(const std::string& dir) const {
   return text;
 }
 
+std::vector<std::string> audit_outputs() {
+  return {"audit.json", "audit.md", "first-violation.png", "cases"};
+}
+
 void AuditResult::write(const std::string& dir) const {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  // cases/ only when there are case files: a clean run leaves no empty folder.
-  fs::create_directories(report_.case_records().empty() ? fs::path(dir) : fs::path(dir) / "cases",
-                         ec);
-  if (ec) throw std::runtime_error(dir + ": cannot create folder: " + ec.message());
+  OutputFolder out(dir, audit_outputs());  // published whole: issue 34
+  out.publish([&](const std::string& into) { write_into(into); });
+}
+
+void AuditResult::write_into(const std::string& dir) const {
   write_file_atomically(dir + "/audit.json", json_text(report_.json(), "audit.json"));
   write_file_atomically(dir + "/audit.md", report_.markdown());
   if (!picture_.empty()) write_file_atomically(dir + "/first-violation.png", picture_);
   for (const KeptViolation& k : report_.kept()) {
     if (k.case_file.empty()) continue;
+    make_folder(dir + "/cases");
     const std::size_t f = std::size_t(k.violation.frame);
     std::ostringstream os;
     os << "# fdhcert audit: " << audit::to_string(k.violation.kind) << " in the step from "

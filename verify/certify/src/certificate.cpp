@@ -326,8 +326,12 @@ long Certificate::violations() const {
   return n;
 }
 
+std::vector<std::string> certify_outputs() {
+  return {"certificate.json", "certificate.md", "violation-*", "peers"};
+}
+
 void write_certificate(const Certificate& c) {
-  const fs::path dir(c.options.out_dir);
+  const fs::path dir(c.options.files_dir());
   write_file_atomically((dir / "certificate.json").string(), certificate_json(c));
   write_file_atomically((dir / "certificate.md").string(), certificate_markdown(c));
 }

@@ -97,7 +97,7 @@ class Certifier {
         timed_(stage_methods(time_promised_methods(), delta)),
         boxes_(delta ? std::vector<BoxMethod>() : all_box_methods()),
         metamorphic_(stage_methods(all_methods(), delta)) {
-    fs::create_directories(c.options.out_dir);
+    fs::create_directories(c.options.files_dir());
     for (const Method& m : methods_)
       for (const Decision d : kQueryDecisions)
         if (m.test[std::size_t(d)]) zero_.promises.push_back({m.name, d, m.promise});
@@ -149,8 +149,9 @@ class Certifier {
     total_.add(t);
     write_counts();
     if (!t.first || !c_.first_violation.empty()) return;
-    const fs::path file = fs::path(c_.options.out_dir) / t.first->file;
-    write_file_atomically(file.string(), t.first->text);
+    const fs::path file = fs::path(c_.options.out_dir) / t.first->file;  // as the user names it
+    write_file_atomically((fs::path(c_.options.files_dir()) / t.first->file).string(),
+                          t.first->text);
     c_.first_violation = t.first->what + ", saved to " + file.string();
   }
 

@@ -105,7 +105,8 @@ PeerOptions peer_options(const CertifyOptions& o) {
   p.quick = o.quick;
   p.seed = o.seed;
   p.cases = o.peer_cases;
-  p.save_dir = (fs::path(o.out_dir) / "peers").string();
+  p.save_dir = (fs::path(o.files_dir()) / "peers").string();
+  p.saved_name = (fs::path(o.out_dir) / "peers").string();
   p.replay_dir = (fs::path(o.corpus_dir) / "peers").string();
   return p;
 }

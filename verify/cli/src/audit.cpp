@@ -10,6 +10,7 @@
 #include "fdh/io/json_text.hpp"
 #include "fdh/io/mesh_sequence.hpp"
 #include "fdh/os/atomic_file.hpp"
+#include "fdh/os/output_folder.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -49,7 +50,8 @@ certificate as one JSON object, docs/formats.md "audit output"). --out DIR
 writes DIR/audit.json, DIR/audit.md, DIR/first-violation.png (a close-up of
 the first violation, its primitives' triangles in blue, the whole frame in an
 inset) and DIR/cases/*.vf, one replayable case per kept step violation
-(`fdhcert classify` / `replay`, truth 1). See docs/audit.md.
+(`fdhcert classify` / `replay`, truth 1), all published at once: a run that
+fails leaves DIR as it was. See docs/audit.md.
 Exit status: 0 clean; 1 a violation; 2 bad input (FILE:LINE: what; nothing is
 written): a frame whose faces differ from the first's, a non-manifold cloth, a
 degenerate face, a coordinate that is not a finite number, a line that is not
@@ -68,7 +70,7 @@ struct AuditCommand {
 };
 
 int run_audit_command(AuditCommand& o, const Io& io) {
-  if (!o.out.empty()) check_output_dir(o.out, {"audit.json", "audit.md", "first-violation.png"});
+  if (!o.out.empty()) check_output_folder(o.out, {"audit.json", "audit.md", "first-violation.png"});
   const ThreadLimit threads(o.job.threads);
   const MeshSequence seq(o.frames, o.cloth, o.obstacles);
   for (const std::string& note : seq.notes()) io.err << "fdhcert: note: " << note << "\n";

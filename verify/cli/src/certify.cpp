@@ -5,6 +5,7 @@
 
 #include "fdh/certify/corpus_folder.hpp"
 #include "fdh/os/atomic_file.hpp"
+#include "fdh/os/output_folder.hpp"
 #include "min_distance_option.hpp"
 #include "suite_commands.hpp"
 
@@ -108,16 +109,18 @@ const char* verdict(const Certificate& c) {
 
 int run_certify(const CertifyCommand& cmd, const Io& io) {
   CertifyOptions opt = cmd.options;
-  check_output_dir(opt.out_dir, {"certificate.json", "certificate.md"});
+  check_output_folder(opt.out_dir, {"certificate.json", "certificate.md"});
   opt.corpus_dir = corpus_or_default(opt.corpus_dir);
   opt.plugins = certified_plugins();
   const ThreadLimit threads(cmd.threads, io.err);
   ProgressLine progress(io.err, progress_wanted(io, cmd.progress));
   opt.progress = progress.sink("certify: ");
+  OutputFolder out(opt.out_dir, certify_outputs());  // published whole: issue 34
+  opt.write_dir = out.path();
   const Certificate c = certify(opt);  // its inputs read first: bad input prints nothing
   progress.clear();
   io.out << "corpus: " << opt.corpus_dir << "\n";
-  write_certificate(c);
+  out.publish([&](const std::string&) { write_certificate(c); });
   const std::filesystem::path dir(opt.out_dir);
   io.out << verdict(c) << ": " << c.checks() << " checks, " << c.violations() << " violations ("
          << c.corpus_queries << " corpus, " << c.fuzzed_queries << " fuzzed, " << c.scene_queries

@@ -7,6 +7,7 @@
 
 #include "fdh/certify/corpus_folder.hpp"
 #include "fdh/os/atomic_file.hpp"
+#include "fdh/os/output_folder.hpp"
 #include "fdh/report/report_document.hpp"
 #include "fdh/report/report_summary.hpp"
 #include "suite_commands.hpp"
@@ -74,12 +75,14 @@ void print_outcome(const ReportCommand& cmd, const Report& report, const Io& io)
 
 int run_report(const ReportCommand& cmd, const Io& io) {
   CertifyOptions opt = cmd.options;
-  check_output_dir(opt.out_dir, report_outputs());
+  check_output_folder(opt.out_dir, report_outputs());
   opt.corpus_dir = corpus_or_default(opt.corpus_dir);
   opt.plugins = certified_plugins();
   const ThreadLimit threads(cmd.threads, io.err);
   ProgressLine progress(io.err, progress_wanted(io, cmd.progress));
   opt.progress = progress.sink("report: certify: ");
+  OutputFolder out(opt.out_dir, report_owned());  // published whole: issue 34
+  opt.write_dir = out.path();
   std::string step;  // the step now running: each is announced on standard output as it starts
   const Report report = make_report(opt, [&](const Progress& p) {
     if (p.stage != step) {
@@ -91,7 +94,7 @@ int run_report(const ReportCommand& cmd, const Io& io) {
   });
   progress.clear();
   if (!cmd.summary) io.out << "report: charts ..." << std::endl;
-  write_report(report);
+  out.publish([&](const std::string&) { write_report(report); });
   print_outcome(cmd, report, io);
   const Certificate& c = report.certificate;
   if (c.certified()) return 0;

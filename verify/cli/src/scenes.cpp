@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fdh/os/atomic_file.hpp"
+#include "fdh/os/output_folder.hpp"
 #include "fdh/scene/scene_report.hpp"
 #include "suite_commands.hpp"
 
@@ -32,7 +33,7 @@ struct ScenesOptions {
 };
 
 int run_scenes(const ScenesOptions& o, const Io& io) {
-  check_output_dir(o.out_dir);  // and each scene's outputs, in run_scene_folder, before any run
+  check_output_folder(o.out_dir);  // and each scene's outputs, in run_scene_folder, before any run
   ProgressLine progress(io.err, progress_wanted(io, o.progress));
   SceneFolderOptions opt;
   opt.movies = o.movies;

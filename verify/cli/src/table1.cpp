@@ -9,6 +9,7 @@
 #include "fdh/io/scene_file.hpp"
 #include "fdh/io/scene_schema.hpp"
 #include "fdh/os/atomic_file.hpp"
+#include "fdh/os/output_folder.hpp"
 #include "fdh/table1/table1.hpp"
 #include "suite_commands.hpp"
 
@@ -47,7 +48,7 @@ struct Table1Options {
 };
 
 int run_table1(const Table1Options& o, const Io& io) {
-  if (!o.out_dir.empty()) check_output_dir(o.out_dir, table1_outputs());
+  if (!o.out_dir.empty()) check_output_folder(o.out_dir, table1_outputs());
   const cloth::Scene scene = read_scene(o.scene);
   ProgressLine progress(io.err, progress_wanted(io, o.progress));
   const Table1 t = measure_table1(scene, o.scene, o.frames, progress.sink());

@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -21,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // The record: fixed slots, so that a signal handler can walk it (no allocation, no lock). A
-// slot is 0 free, 1 being filled, 2 a file, 3 a folder.
+// slot is 0 free, 1 being filled, 2 a file, 3 a folder, 4 a folder removed whole (a tree).
 constexpr int kSlots = 256;
 constexpr std::size_t kPathMax = 4096;
 struct Slot {
@@ -30,13 +31,13 @@ struct Slot {
 };
 Slot g_slots[kSlots];
 
-int record(const std::string& path, bool folder) {
+int record(const std::string& path, int kind) {
   if (path.size() >= kPathMax) return -1;
   for (int i = 0; i < kSlots; ++i) {
     int expected = 0;
     if (!g_slots[i].state.compare_exchange_strong(expected, 1)) continue;
     std::memcpy(g_slots[i].path, path.c_str(), path.size() + 1);
-    g_slots[i].state.store(folder ? 3 : 2, std::memory_order_release);
+    g_slots[i].state.store(kind, std::memory_order_release);
     return i;
   }
   return -1;
@@ -54,11 +55,52 @@ void on_signal(int sig) {
   errno = saved;
 }
 
+constexpr int kTreeDepth = 64;
+
+bool dot_or_dot_dot(const char* n) {
+  return n[0] == '.' && (n[1] == 0 || (n[1] == '.' && n[2] == 0));
+}
+
+// Removes everything in the open folder `fd`: files and links by unlinkat, folders by
+// remove_tree_at. Passes over the listing until one removes nothing (removing while listing may
+// skip entries). getdents64 into a buffer on the stack: async-signal-safe.
+void empty_folder(int fd, int depth) noexcept;
+
+// Removes folder `name` of `parent_fd` and all it holds; true if it is gone.
+bool remove_tree_at(int parent_fd, const char* name, int depth) noexcept {
+  const int fd = ::openat(parent_fd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) return false;
+  if (depth < kTreeDepth) empty_folder(fd, depth);
+  ::close(fd);
+  return ::unlinkat(parent_fd, name, AT_REMOVEDIR) == 0;
+}
+
+void empty_folder(int fd, int depth) noexcept {
+  alignas(8) char buf[2048];
+  for (bool removed = true; removed;) {
+    removed = false;
+    if (::lseek(fd, 0, SEEK_SET) != 0) return;
+    for (long n; (n = ::syscall(SYS_getdents64, fd, buf, sizeof buf)) > 0;)
+      for (long at = 0; at < n;) {
+        // glibc's dirent64 has the kernel's layout (linux_dirent64, getdents64(2)).
+        const auto* e = reinterpret_cast<const struct dirent64*>(buf + at);
+        at += e->d_reclen;
+        if (dot_or_dot_dot(e->d_name)) continue;
+        if (e->d_type != DT_DIR && ::unlinkat(fd, e->d_name, 0) == 0)
+          removed = true;
+        else if ((e->d_type == DT_DIR || errno == EISDIR) &&
+                 remove_tree_at(fd, e->d_name, depth + 1))
+          removed = true;
+      }
+  }
+}
+
 // A dead run's temporary, found in a folder's listing.
 struct Stale {
   std::string name;
   pid_t pid;
-  bool folder;  // named as mkdtemp names a folder
+  bool folder;        // named as mkdtemp names a folder
+  bool tree = false;  // a staged output's folder (staged-XXXXXX)
 };
 
 bool all_of(const std::string& s, int (*pred)(int)) {
@@ -76,12 +118,15 @@ bool parse_temporary(const std::string& name, std::string& target, Stale& s) {
   if (tmp == std::string::npos || tmp == 0) return false;
   const std::string pid = rest.substr(tmp + 5);
   if (!all_of(pid, ::isdigit) || pid.size() > 9) return false;
+  const bool staged =
+      x.size() == 13 && x.rfind("staged-", 0) == 0 && all_of(x.substr(7), ::isalnum);
   if (all_of(x, ::isdigit))
     s.folder = false;
-  else if (x.size() == 6 && all_of(x, ::isalnum))
+  else if ((x.size() == 6 && all_of(x, ::isalnum)) || staged)
     s.folder = true;
   else
     return false;
+  s.tree = staged;
   target = rest.substr(0, tmp);
   s.name = name;
   s.pid = pid_t(std::stol(pid));
@@ -127,7 +172,13 @@ std::multimap<std::string, Stale> list_stale(const std::string& dir) {
 }  // namespace
 
 RecordedTemporary::RecordedTemporary(const std::string& path, bool folder)
-    : slot_(record(path, folder)) {}
+    : slot_(record(path, folder ? 3 : 2)) {}
+
+RecordedTemporary RecordedTemporary::tree(const std::string& path) {
+  RecordedTemporary t;
+  t.slot_ = record(path, 4);
+  return t;
+}
 
 RecordedTemporary::~RecordedTemporary() {
   forget(slot_);
@@ -146,11 +197,23 @@ RecordedTemporary& RecordedTemporary::operator=(RecordedTemporary&& other) noexc
   return *this;
 }
 
+void remove_tree(const char* path) noexcept {
+  struct stat st {};
+  if (::lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) return;
+  remove_tree_at(AT_FDCWD, path, 0);
+}
+
 void remove_recorded_temporaries() noexcept {
-  for (const int kind : {2, 3})
-    for (Slot& s : g_slots)
-      if (s.state.load(std::memory_order_acquire) == kind)
-        kind == 2 ? ::unlink(s.path) : ::rmdir(s.path);
+  for (const int kind : {2, 3, 4})
+    for (Slot& s : g_slots) {
+      if (s.state.load(std::memory_order_acquire) != kind) continue;
+      if (kind == 2)
+        ::unlink(s.path);
+      else if (kind == 3)
+        ::rmdir(s.path);
+      else
+        remove_tree(s.path);
+    }
 }
 
 void forget_recorded_temporaries() noexcept {
@@ -203,10 +266,17 @@ void remove_dead_runs_temporaries(const std::string& target) {
       continue;
     if (!s.folder && (S_ISREG(st.st_mode) || S_ISLNK(st.st_mode)))
       ::unlinkat(dir_fd, s.name.c_str(), 0);
+    else if (s.tree && S_ISDIR(st.st_mode))
+      remove_tree_at(dir_fd, s.name.c_str(), 0);
     else if (s.folder && S_ISDIR(st.st_mode))
       remove_stale_folder(dir_fd, s.name);
   }
   ::close(dir_fd);
+}
+
+bool names_dead_runs_temporary(const std::string& name, std::string& target) {
+  Stale s;
+  return parse_temporary(name, target, s) && s.pid != ::getpid() && !process_runs(s.pid);
 }
 
 }  // namespace fdh::verify

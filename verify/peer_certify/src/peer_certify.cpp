@@ -131,17 +131,20 @@ class PeerRun {
   // The saved file's path, or "" when cases are not saved.
   std::string save(const Entry& e, PeerProperty& p, const PeerCase& c, const std::string& origin) {
     if (r_.options.save_dir.empty()) return "";
-    const fs::path dir = fs::path(r_.options.save_dir) / c.library;
-    const std::string path = (dir / peer_case_file_name(c)).string();
+    const PeerOptions& o = r_.options;
+    const fs::path dir = fs::path(o.save_dir) / c.library;
+    const std::string path = (fs::path(o.saved_name.empty() ? o.save_dir : o.saved_name) /
+                              c.library / peer_case_file_name(c))
+                                 .string();
     if (std::find(p.shrunk.begin(), p.shrunk.end(), path) != p.shrunk.end()) return path;
     fs::create_directories(dir);
     const std::string what = is_overlap(c)
                                  ? "calls two sets disjoint whose exact FDHs overlap"
                                  : "builds a box that misses the exact FDH of its points in a slab";
-    write_file_atomically(
-        path, peer_case_text(c, {c.library + " " + e.row.version + " " + c.method + " (" +
-                                     e.row.summary + ") " + what + ".",
-                                 "Shrunk from a " + origin + "."}));
+    write_file_atomically((dir / peer_case_file_name(c)).string(),
+                          peer_case_text(c, {c.library + " " + e.row.version + " " + c.method +
+                                                 " (" + e.row.summary + ") " + what + ".",
+                                             "Shrunk from a " + origin + "."}));
     p.shrunk.push_back(path);
     return path;
   }

@@ -286,8 +286,14 @@ std::vector<std::string> report_outputs() {
           "index.html"};
 }
 
+std::vector<std::string> report_owned() {
+  std::vector<std::string> owned = report_outputs();
+  for (std::string& o : certify_outputs()) owned.push_back(std::move(o));
+  return owned;
+}
+
 void write_report(const Report& report) {
-  const fs::path dir(report.certificate.options.out_dir);
+  const fs::path dir(report.certificate.options.files_dir());
   const Measurements& m = report.measurements;
   check_output_dir(dir.string(), report_outputs());
   fs::create_directories(dir / "data");

@@ -87,11 +87,18 @@ std::string report_html(const Report& report, const std::string& dir) {
         "<figure>\n{}<figcaption>{} (<a href=\"{}\">SVG</a>)</figcaption></figure>\n", svg,
         html_escape(alt), html_escape(src));
   };
+  // A link to a file of this output, named by the output's folder (out_dir), is looked for
+  // where the file is being written (`dir`: a staged output's private folder); any other where
+  // it is.
+  const fs::path named(report.certificate.options.out_dir);
   hooks.link = [&](const std::string& text) -> std::string {
     if (text.empty() || text.find('/') == std::string::npos) return "";
     std::error_code ec;
-    if (!fs::is_regular_file(text, ec)) return "";
-    return fs::relative(fs::absolute(text), fs::absolute(root), ec).generic_string();
+    const fs::path rel = fs::relative(fs::absolute(text), fs::absolute(named), ec);
+    if (ec || rel.empty()) return "";
+    const bool inside = *rel.begin() != "..";
+    if (!fs::is_regular_file(inside ? root / rel : fs::path(text), ec)) return "";
+    return rel.generic_string();
   };
   return fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"

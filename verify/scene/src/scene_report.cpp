@@ -15,6 +15,7 @@
 #include "fdh/io/scene_file.hpp"
 #include "fdh/io/scene_output.hpp"
 #include "fdh/os/atomic_file.hpp"
+#include "fdh/os/output_folder.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -119,6 +120,41 @@ std::vector<std::string> scene_files(const std::string& dir) {
   return files;
 }
 
+namespace {
+
+// One scene of run_scene_folder: run, then written into `into` (the files named as in `out_dir`).
+SceneFolderRun run_one_scene(const std::string& file, const std::string& out_dir,
+                             const std::string& into, const SceneFolderOptions& opt) {
+  SceneFolderRun r;
+  r.file = file;
+  r.scene = read_scene(r.file);
+  std::optional<SceneMovie> movie;
+  if (opt.movies) movie.emplace(r.scene, r.scene.frames);
+  r.options.on_frame = [&](const cloth::Simulation& sim, int f) {
+    if (movie) movie->frame(sim, f);
+    report(opt.progress, {"scenes: " + r.scene.name, f, r.scene.frames, "frames"});
+  };
+  r.run = run_scene(r.scene, r.options);
+  r.options.on_frame = nullptr;
+  const std::string stem = fs::path(file).stem().string();
+  const auto named = [&](const std::string& tail) {
+    return (fs::path(out_dir) / (stem + tail)).string();
+  };
+  const auto written = [&](const std::string& tail) {
+    return (fs::path(into) / (stem + tail)).string();
+  };
+  if (movie) movie->write(written("-movie.png")), r.movie = named("-movie.png");
+  r.png = named(".png");
+  r.json = named(".json");
+  write_scene_png(written(".png"), r.scene, r.run);
+  write_file_atomically(written(".json"),
+                        json_text(scene_run_json(r.scene, r.options, r.run), r.json));
+  if (opt.done) opt.done(r);
+  return r;
+}
+
+}  // namespace
+
 std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
                                              const std::string& out_dir,
                                              const SceneFolderOptions& opt) {
@@ -130,30 +166,12 @@ std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
     outputs.insert(outputs.end(), {stem + ".png", stem + ".json"});
     if (opt.movies) outputs.push_back(stem + "-movie.png");
   }
-  check_output_dir(out_dir, outputs);  // before any scene runs
-  fs::create_directories(out_dir);
+  check_output_folder(out_dir, outputs);  // before any scene runs
+  OutputFolder out(out_dir, outputs);     // published whole: issue 34
   std::vector<SceneFolderRun> runs;
-  for (const std::string& file : files) {
-    SceneFolderRun r;
-    r.file = file;
-    r.scene = read_scene(r.file);
-    std::optional<SceneMovie> movie;
-    if (opt.movies) movie.emplace(r.scene, r.scene.frames);
-    r.options.on_frame = [&](const cloth::Simulation& sim, int f) {
-      if (movie) movie->frame(sim, f);
-      report(opt.progress, {"scenes: " + r.scene.name, f, r.scene.frames, "frames"});
-    };
-    r.run = run_scene(r.scene, r.options);
-    r.options.on_frame = nullptr;
-    const fs::path stem = fs::path(out_dir) / fs::path(file).stem();
-    if (movie) movie->write(r.movie = stem.string() + "-movie.png");
-    r.png = stem.string() + ".png";
-    r.json = stem.string() + ".json";
-    write_scene_png(r.png, r.scene, r.run);
-    write_file_atomically(r.json, json_text(scene_run_json(r.scene, r.options, r.run), r.json));
-    if (opt.done) opt.done(r);
-    runs.push_back(std::move(r));
-  }
+  out.publish([&](const std::string& into) {
+    for (const std::string& file : files) runs.push_back(run_one_scene(file, out_dir, into, opt));
+  });
   return runs;
 }
 

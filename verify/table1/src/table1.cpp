@@ -9,6 +9,7 @@
 
 #include "fdh/io/charts.hpp"
 #include "fdh/os/atomic_file.hpp"
+#include "fdh/os/output_folder.hpp"
 #include "fdh/scene/scene_report.hpp"
 
 namespace fdh::verify {
@@ -208,17 +209,19 @@ std::vector<std::string> table1_outputs() {
 }
 
 void write_table1(const Table1& t, const std::string& dir) {
-  const fs::path d(dir);
-  check_output_dir(dir, table1_outputs());
-  fs::create_directories(d / "data");
-  const std::string data = (d / "data" / "table1.csv").string();
-  write_file_atomically(data, table1_csv(t));
-  write_file_atomically(
-      (d / "table1.md").string(),
-      fmt::format("# Table 1, measured\n\nWritten by `fdhcert table1 --out {}`.\n\n"
-                  "![ms per frame against particles](table1.svg)\n\n```\n{}```\n",
-                  dir, table1_text(t)));
-  draw_chart({(d / "table1").string(), 900, 600, chart_commands("data/table1.csv")});
+  check_output_folder(dir, table1_outputs());
+  OutputFolder out(dir, table1_outputs());  // published whole: issue 34
+  out.publish([&](const std::string& into) {
+    const fs::path d(into);
+    fs::create_directories(d / "data");
+    write_file_atomically((d / "data" / "table1.csv").string(), table1_csv(t));
+    write_file_atomically(
+        (d / "table1.md").string(),
+        fmt::format("# Table 1, measured\n\nWritten by `fdhcert table1 --out {}`.\n\n"
+                    "![ms per frame against particles](table1.svg)\n\n```\n{}```\n",
+                    dir, table1_text(t)));
+    draw_chart({(d / "table1").string(), 900, 600, chart_commands("data/table1.csv")});
+  });
 }
 
 }  // namespace fdh::verify

@@ -59,6 +59,9 @@ class ObjFrames : public FrameSource {
   audit::Topology topology_;
 };
 
+// What `audit --out DIR` writes into DIR: its files and its folder of cases.
+std::vector<std::string> audit_outputs();
+
 class AuditResult {
  public:
   const AuditReport& report() const { return report_; }
@@ -66,13 +69,16 @@ class AuditResult {
   std::string text() const;                // the summary line and a line per frame
   int exit_status() const { return report_.exit_status(); }
   // DIR/audit.json, DIR/audit.md, DIR/first-violation.png (with a violation) and
-  // DIR/cases/*.vf, each whole; creates DIR. Needs AuditOptions::files.
+  // DIR/cases/*.vf (with kept violations), published whole: all of them or, on failure, DIR as
+  // it was (fdh/os/output_folder.hpp; audit_outputs() are the audit's, replaced, the rest of
+  // DIR is kept). Creates DIR. Needs AuditOptions::files.
   void write(const std::string& dir) const;
   // The lines that name what write(dir) wrote: the certificate, and the case files if any.
   std::string written_text(const std::string& dir) const;
 
  private:
   friend AuditResult run_audit(FrameSource&, const AuditOptions&, const ProgressSink&);
+  void write_into(const std::string& dir) const;  // the files, into an existing folder
   explicit AuditResult(AuditReport report) : report_(std::move(report)) {}
   struct FirstFrame {
     std::vector<Vec3> cloth, obstacle;

@@ -31,6 +31,10 @@ struct CertifyOptions {
   bool quick = false;
   std::string corpus_dir = "corpus";
   std::string out_dir = "certificate";
+  // Where the run writes out_dir's files: the private folder of out_dir's OutputFolder, which
+  // publishes them whole at the end (fdh/os/output_folder.hpp); empty: out_dir itself.
+  std::string write_dir;
+  const std::string& files_dir() const { return write_dir.empty() ? out_dir : write_dir; }
   std::uint64_t seed = 1;
   long per_family = -1;  // fuzzed queries per family; -1: 200 quick, 3000 full
   long soups = -1;       // soup pairs for the tree; -1: 30 quick, 300 full
@@ -150,8 +154,13 @@ struct Certificate {
   long violations() const;  // every violation counted above (the same)
 };
 
-// Writes the first violating case (if any) into options.out_dir. Reads the extra files and the
-// scenes before any check, so that bad input is refused before the work starts. Throws
+// What certify writes into its folder: the certificate, the first violating case
+// (violation-*) and the peers' shrunk cases (peers/): replaced whole by a run
+// (fdh/os/output_folder.hpp).
+std::vector<std::string> certify_outputs();
+
+// Writes the first violating case (if any) into options.files_dir(). Reads the extra files and
+// the scenes before any check, so that bad input is refused before the work starts. Throws
 // InputError for bad inputs, std::runtime_error for I/O failures.
 Certificate certify(const CertifyOptions& options);
 
@@ -162,7 +171,7 @@ std::string certificate_json(const Certificate& c);
 std::string cut_words(const BudgetCut& cut);
 std::string certificate_markdown(const Certificate& c);
 
-// certificate.json and certificate.md, each written whole, into c.options.out_dir.
+// certificate.json and certificate.md, each written whole, into c.options.files_dir().
 void write_certificate(const Certificate& c);
 
 }  // namespace fdh::verify

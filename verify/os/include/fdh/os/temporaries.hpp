@@ -2,7 +2,8 @@
 // error removes them; and the clean-up of the temporaries of a run that died (SIGKILL, power
 // loss) by a later run that writes the same output. A temporary is named after its output:
 // TARGET.tmp.<pid>.<n> for a file (fdh/os/atomic_file.hpp), TARGET.tmp.<pid>.XXXXXX for a
-// private folder (mkdtemp; the charts', fdh/io/charts.hpp).
+// private folder (mkdtemp; the charts', fdh/io/charts.hpp), TARGET.tmp.<pid>.staged-XXXXXX for
+// a multi-file output's private folder, removed with all it holds (fdh/os/output_folder.hpp).
 #pragma once
 
 #include <sys/types.h>
@@ -19,6 +20,8 @@ class RecordedTemporary {
  public:
   RecordedTemporary() = default;
   explicit RecordedTemporary(const std::string& path, bool folder = false);
+  // A folder removed with everything in it (a staged output: fdh/os/output_folder.hpp).
+  static RecordedTemporary tree(const std::string& path);
   ~RecordedTemporary();
   RecordedTemporary(RecordedTemporary&& other) noexcept;
   RecordedTemporary& operator=(RecordedTemporary&& other) noexcept;
@@ -28,6 +31,11 @@ class RecordedTemporary {
  private:
   int slot_ = -1;
 };
+
+// Removes the folder `path` and everything in it, links not followed (a link is removed, never
+// its target); nothing at `path`, or a file there, is left alone. At most 64 folders deep.
+// Async-signal-safe: a signal handler calls it for a recorded tree.
+void remove_tree(const char* path) noexcept;
 
 // Removes every recorded temporary: files first, then folders. Async-signal-safe.
 void remove_recorded_temporaries() noexcept;
@@ -48,7 +56,13 @@ bool process_runs(pid_t pid);
 // Removes what dead runs left beside TARGET: entries of its folder named TARGET.tmp.<pid>.<x>,
 // owned by this user, whose <pid> runs no more, where <x> is digits (a regular file or a link,
 // removed) or six letters and digits (a folder: the files in it, then the folder, kept if
-// anything else is inside). Nothing else is touched. Each folder is listed once per process.
+// anything else is inside) or `staged-` and six letters and digits (a staged output's folder,
+// removed with everything in it). Nothing else is touched. Each folder is listed once per
+// process.
 void remove_dead_runs_temporaries(const std::string& target);
+
+// Whether `name` (a file name) is one of the temporaries above of a run that runs no more; its
+// TARGET's name into `target`.
+bool names_dead_runs_temporary(const std::string& name, std::string& target);
 
 }  // namespace fdh::verify

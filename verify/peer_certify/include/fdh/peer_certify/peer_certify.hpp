@@ -23,6 +23,8 @@ struct PeerOptions {
   long cases = -1;         // point sets, and pairs, per property; -1: 300 quick, 20000 full
   int keep = -1;           // shrunk cases kept per method and property; -1: 1 quick, 3 full
   std::string save_dir;    // shrunk cases go to <save_dir>/<library>/; empty: not saved
+  std::string saved_name;  // how the results name save_dir (a staged output's final folder,
+                           // fdh/os/output_folder.hpp); empty: save_dir
   std::string replay_dir;  // stored cases replayed from here (corpus/peers); empty: none
   ProgressSink progress;   // hears the cases checked per property
 };

@@ -38,13 +38,16 @@ struct Report {
 // is options.progress).
 Report make_report(const CertifyOptions& options, const ProgressSink& progress = {});
 
-// Into report.certificate.options.out_dir: certificate.json and .md, data/*.csv, the charts
+// Into report.certificate.options.files_dir(): certificate.json and .md, data/*.csv, the charts
 // (speed_accuracy, stability, toi_speed, toi_stability, kdop_k as .png and .svg) and report.md.
 // Throws std::runtime_error when a file cannot be written or gnuplot fails.
 void write_report(const Report& report);
 
 // The files write_report writes, relative to its folder: for check_output_dir before the run.
 std::vector<std::string> report_outputs();
+// What a report run owns in its folder (fdh/os/output_folder.hpp): report_outputs() and
+// certify's cases; the rest of the folder (table1's files, the user's) is kept.
+std::vector<std::string> report_owned();
 
 std::string report_markdown(const Report& report);
 

@@ -11,8 +11,9 @@
 
 namespace fdh::verify {
 
-// The page for `report`, written into `dir` (whose *.svg charts it inlines). Throws
-// std::runtime_error if a chart cannot be read.
+// The page for `report`, written into `dir` (whose *.svg charts it inlines: the report's
+// options.files_dir()); links are relative to options.out_dir, where the page is published.
+// Throws std::runtime_error if a chart cannot be read.
 std::string report_html(const Report& report, const std::string& dir);
 
 }  // namespace fdh::verify

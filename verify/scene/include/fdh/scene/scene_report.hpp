@@ -9,10 +9,10 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "fdh/cloth/scene.hpp"
+#include "fdh/io/json_text.hpp"
 #include "fdh/io/movie.hpp"
 #include "fdh/mesh.hpp"
 #include "fdh/os/progress.hpp"
-#include "fdh/io/json_text.hpp"
 #include "fdh/scene/scene_run.hpp"
 
 namespace fdh::verify {
@@ -59,8 +59,10 @@ struct SceneFolderOptions {
 };
 
 // Every *.scene in `scene_dir` (sorted by name), run with simulate's defaults; writes
-// OUT/<name>.png and OUT/<name>.json (the JSON of simulate --json) for each. Throws InputError
-// for a bad scene, std::runtime_error for I/O failures.
+// OUT/<name>.png and OUT/<name>.json (the JSON of simulate --json) for each, published whole
+// when the last scene is done (fdh/os/output_folder.hpp: all of them or, on failure, OUT as it
+// was; OUT's other files are kept). Throws InputError for a bad scene, std::runtime_error for I/O
+// failures.
 std::vector<SceneFolderRun> run_scene_folder(const std::string& scene_dir,
                                              const std::string& out_dir,
                                              const SceneFolderOptions& opt = {});

@@ -56,8 +56,9 @@ nlohmann::ordered_json table1_json(const Table1& t);
 // series,k,grid,particles,ms_per_frame,fp,fn,inside,crossing; the paper's rows included.
 std::string table1_csv(const Table1& t);
 
-// DIR/table1.md, DIR/data/table1.csv and the chart DIR/table1.png and .svg. Throws
-// std::runtime_error when a file cannot be written or gnuplot fails.
+// DIR/table1.md, DIR/data/table1.csv and the chart DIR/table1.png and .svg, published whole
+// (fdh/os/output_folder.hpp: all four or, on failure, DIR as it was; the rest of DIR is kept).
+// Throws std::runtime_error when a file cannot be written or gnuplot fails.
 void write_table1(const Table1& t, const std::string& dir);
 
 // The files write_table1 writes, relative to its folder: for check_output_dir before the run.
