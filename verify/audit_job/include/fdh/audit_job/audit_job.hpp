@@ -25,6 +25,9 @@ struct AuditOptions {
   // The run will write its files (Result::write): case files are named and the first
   // violation's frame is kept for the picture.
   bool files = false;
+  // A part of the run (`--part I/N`): the I-th of N contiguous ranges of steps
+  // (AuditPart::of_sequence); 0: the whole run.
+  int part = 0, parts = 1;
   // Throws std::invalid_argument naming the option (the one check of CLI and Python values).
   void validate() const;
   audit::Options engine() const;
@@ -81,6 +84,10 @@ class AuditResult {
   std::optional<FirstFrame> first_;
   std::vector<std::string> names_;  // each frame's, for the case files
 };
+
+// The lines that name what a certificate's write(dir) wrote: the certificate, and the case files
+// if any.
+std::string written_lines(const AuditReport& report, const std::string& dir);
 
 // Every frame of `source` through the engine. Throws std::invalid_argument for bad options, and
 // for frames the engine refuses InputError naming the frame's file (from files) or
