@@ -72,10 +72,11 @@ MergedAudit merge_audit_parts(const std::vector<std::string>& dirs) {
     for (const auto& [from, to] : renamed) m.copies_.emplace_back(parts[i].dir + "/" + from, to);
     if (pictured < 0 && !m.report_->clean()) pictured = int(i);
   }
-  if (m.report_->part())
-    throw InputError(parts.back().file, 0,
-                     fmt::format("the last part given is {}/{}: every part 1/N to N/N is needed",
-                                 m.report_->part()->index, m.report_->part()->of));
+  try {
+    m.report_->end_parts();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(parts.back().file, 0, e.what());
+  }
   if (pictured >= 0)
     m.copies_.emplace_back(parts[std::size_t(pictured)].dir + "/first-violation.png",
                            "first-violation.png");

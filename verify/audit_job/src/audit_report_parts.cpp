@@ -157,8 +157,16 @@ std::vector<std::pair<std::string, std::string>> AuditReport::append(const Audit
   wall_seconds_ += later.wall_seconds_, cpu_seconds_ += later.cpu_seconds_;
   peak_bytes_ = std::max(peak_bytes_, later.peak_bytes_);
   part_->index = later.part_->index, part_->last_frame = later.part_->last_frame;
-  if (part_->first_frame == 0 && part_->index == part_->of) part_.reset();  // the whole run
   return renamed;
+}
+
+void AuditReport::end_parts() {
+  if (!part_ || part_->first_frame != 0 || part_->index != part_->of)
+    throw std::invalid_argument(
+        part_ ? fmt::format("the last part given is {}/{}: every part 1/N to N/N is needed",
+                            part_->index, part_->of)
+              : std::string("only parts (audit --part) are joined"));
+  part_.reset();  // the whole run's
 }
 
 }  // namespace fdh::verify

@@ -84,8 +84,12 @@ class AuditReport {
 
   // The report of the next part joined after this one's (the parts in order): frames, counts,
   // kept violations (up to `keep`; their case files renumbered: the pairs (later's name, the
-  // new name) are returned) and costs. The result is a whole run's report when this is part 1.
+  // new name) are returned) and costs. Throws std::invalid_argument for a part that does not
+  // follow this one in the same run.
   std::vector<std::pair<std::string, std::string>> append(const AuditReport& later);
+  // Parts 1/N to N/N joined: the report is now the whole run's. Throws std::invalid_argument
+  // when the last part joined is not N/N.
+  void end_parts();
   // A report as its json() wrote it (a part's audit.json, for the merge); throws InputError
   // naming `file` for what json() does not write.
   static AuditReport from_json(const nlohmann::ordered_json& j, const std::string& file);
