@@ -47,6 +47,17 @@ class Bvh {
   // x1 empty: a static tree over x0. Otherwise swept over x0 and x1 (same size).
   Bvh(std::vector<Tri> tris, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1 = {},
       int leaf_size = 1)
+      : Bvh(std::move(tris), x0, x1, leaf_size, [](int n, const auto& f) {
+          for (int i = 0; i < n; ++i) f(i);
+        }) {}
+
+  // The same tree, its subtrees below depth 6 built by spread(n, f), which calls f(i) for every
+  // i in [0, n), at the same time or not (fast/ starts no thread: the caller's loop, e.g.
+  // fdh/parallel/chunks.hpp's for_each_index). Nodes are numbered by the subtrees' sizes alone
+  // (a subtree of m primitives has node_count(m) nodes), so the tree is the one built in order.
+  template <class Spread>
+  Bvh(std::vector<Tri> tris, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
+      int leaf_size, const Spread& spread)
       : tris_(std::move(tris)), leaf_size_(std::max(1, leaf_size)) {
     const int n = int(tris_.size());
     // Each primitive's centre (the sum of its corners: the centroid up to a factor) once; the
@@ -60,8 +71,18 @@ class Bvh {
       items[i] = {0.0, i};
     }
     prims_.resize(n);
-    nodes_.reserve(2 * std::size_t(n));
-    if (n > 0) build(0, n, items, x0, x1);
+    if (n > 0) {
+      nodes_.resize(std::size_t(node_count(n)));
+      std::vector<Range> below;
+      std::vector<int> top;
+      build_top(0, 0, n, 0, items, below, top);
+      spread(int(below.size()),
+             [&](int r) { build(below[r].id, below[r].first, below[r].last, items, x0, x1); });
+      for (auto i = top.rbegin(); i != top.rend(); ++i) {  // children before parents
+        Node& node = nodes_[*i];
+        merge_into(node.box, nodes_[node.left].box, nodes_[node.right].box);
+      }
+    }
     centres_ = {};
   }
 
@@ -134,16 +155,43 @@ class Bvh {
     int prim;
   };
 
-  // The node over items[first, last) and, below it, its subtree; returns its index. A leaf's
-  // box comes from its primitives' corners, an internal node's from its children's boxes
-  // merged: one merge per node.
-  int build(int first, int last, std::vector<Item>& items, const std::vector<Vec3>& x0,
-            const std::vector<Vec3>& x1) {
-    const int id = int(nodes_.size());
-    nodes_.emplace_back();
+  // The nodes of a subtree over n primitives: one, or one and its two halves'.
+  int node_count(int n) const {
+    if (n <= leaf_size_) return 1;
+    if (leaf_size_ == 1) return 2 * n - 1;
+    return 1 + node_count(n / 2) + node_count(n - n / 2);
+  }
+
+  // A subtree left for spread(): its root's index and its primitives' range in items.
+  struct Range {
+    int id, first, last;
+  };
+
+  // The nodes above depth 6 over items[first, last), split and numbered (their boxes are merged
+  // once the subtrees below are built): `top` in preorder, the subtrees at depth 6 in `below`.
+  void build_top(int id, int first, int last, int depth, std::vector<Item>& items,
+                 std::vector<Range>& below, std::vector<int>& top) {
+    if (depth == 6 || last - first <= leaf_size_) {
+      below.push_back({id, first, last});
+      return;
+    }
+    const int mid = first + (last - first) / 2;
+    if (last - first > 2) median_split(first, mid, last, items);  // two: already one a side
+    top.push_back(id);
+    nodes_[id].left = id + 1;
+    nodes_[id].right = id + 1 + node_count(mid - first);
+    build_top(nodes_[id].left, first, mid, depth + 1, items, below, top);
+    build_top(nodes_[id].right, mid, last, depth + 1, items, below, top);
+  }
+
+  // Node `id` over items[first, last) and, below it, its subtree (nodes id to id +
+  // node_count(last - first) - 1, in preorder). A leaf's box comes from its primitives' corners,
+  // an internal node's from its children's boxes merged: one merge per node.
+  void build(int id, int first, int last, std::vector<Item>& items, const std::vector<Vec3>& x0,
+             const std::vector<Vec3>& x1) {
+    Node& node = nodes_[id];
     if (last - first <= leaf_size_) {
       for (int i = first; i < last; ++i) prims_[i] = items[i].prim;
-      Node& node = nodes_[id];
       const Tri& t = tris_[items[first].prim];
       if (last - first == 1 && t[0] == t[1] && t[1] == t[2]) {  // one point: its own widening
         const Vec3 &p0 = x0[t[0]], &p1 = x1.empty() ? p0 : x1[t[0]];
@@ -154,17 +202,15 @@ class Bvh {
       }
       node.first = first;
       node.count = last - first;
-      return id;
+      return;
     }
     const int mid = first + (last - first) / 2;
     if (last - first > 2) median_split(first, mid, last, items);  // two: already one a side
-    const int left = build(first, mid, items, x0, x1);
-    const int right = build(mid, last, items, x0, x1);
-    Node& node = nodes_[id];
-    node.left = left;
-    node.right = right;
-    merge_into(node.box, nodes_[left].box, nodes_[right].box);
-    return id;
+    node.left = id + 1;
+    node.right = id + 1 + node_count(mid - first);
+    build(node.left, first, mid, items, x0, x1);
+    build(node.right, mid, last, items, x0, x1);
+    merge_into(node.box, nodes_[node.left].box, nodes_[node.right].box);
   }
 
   // Orders items[first, last) so that [first, mid) holds the ones whose centres come first

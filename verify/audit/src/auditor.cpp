@@ -63,7 +63,8 @@ struct Auditor::Impl {
   std::unique_ptr<Trees> trees;
   std::unique_ptr<InsideCount> inside;              // the cloth's particles in the closed obstacles
   std::vector<Vec3> cloth_before, obstacle_before;  // the previous frame
-  int frames = 0;
+  int given = 0;                                    // frames given so far
+  int first_frame = 0;                   // the number of the first (a part's, start_part)
   std::optional<tbb::task_arena> arena;  // with Options::threads > 0
 
   FrameReport frame(const std::vector<Vec3>& x, const std::vector<Vec3>& y);
@@ -112,17 +113,34 @@ FrameReport Auditor::add_frame(const std::vector<Vec3>& cloth, const std::vector
   return impl_->frame(cloth, obstacle);
 }
 
+void Auditor::start_part(int first_frame, const std::vector<Vec3>& cloth0,
+                         const std::vector<Vec3>& obstacle0) {
+  check_positions(cloth0, impl_->topology.cloth_vertices, "cloth");
+  check_positions(obstacle0, impl_->topology.obstacle_vertices, "obstacle");
+  if (impl_->given > 0 || first_frame < 0)
+    throw std::invalid_argument("start_part: before the first frame, from a frame >= 0");
+  Impl& m = *impl_;
+  m.first_frame = first_frame;
+  const auto build = [&] {
+    m.trees = make_trees(m.options.k, m.cloth, m.obstacle, cloth0, obstacle0);
+  };
+  if (m.arena)
+    m.arena->execute(build);
+  else
+    build();
+}
+
 // The frame's static check and, from the second frame on, the step into it: one pass of the
 // trees, whose parts are merged in order.
 FrameReport Auditor::Impl::frame(const std::vector<Vec3>& x, const std::vector<Vec3>& y) {
   const auto start = std::chrono::steady_clock::now();
   FrameReport r;
-  r.frame = frames;
-  r.has_step = frames > 0 && options.steps;
+  r.frame = first_frame + given;
+  r.has_step = given > 0 && options.steps;
   Pass pass;
   pass.ccd = r.has_step;
   pass.self = options.self;
-  pass.frame = frames;
+  pass.frame = r.frame;
   pass.c0 = r.has_step ? &cloth_before : &x;
   pass.c1 = &x;
   pass.o0 = r.has_step ? &obstacle_before : &y;
@@ -144,7 +162,7 @@ FrameReport Auditor::Impl::frame(const std::vector<Vec3>& x, const std::vector<V
   r.violations = std::move(all.kept);
   cloth_before = x;
   obstacle_before = y;
-  ++frames;
+  ++given;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

@@ -68,6 +68,18 @@ std::vector<Vec3> tie_broken(const std::vector<Tri>& tris, const std::vector<Vec
 // Chunks of work: about this many, whatever the thread count (results depend on sizes alone).
 constexpr std::size_t kChunks = 2048;
 
+// The FDH tree over tris at x, its subtrees built on every core (the same tree as one core's),
+// unless it is small (parallel::kParallelNodes).
+template <int K>
+Bvh<K> tree(const std::vector<Tri>& tris, const std::vector<Vec3>& x) {
+  parallel::Chunking how;
+  how.parallel = 2 * tris.size() >= parallel::kParallelNodes;
+  return Bvh<K>(tris, tie_broken(tris, x), {}, 1, [&](int n, const auto& f) {
+    parallel::for_each_index(
+        std::size_t(n), 1, [&](std::size_t i) { f(int(i)); }, how);
+  });
+}
+
 }  // namespace
 
 template <int K>
@@ -77,8 +89,8 @@ class TreesK : public Trees {
          const std::vector<Vec3>& y)
       : cloth_(cloth),
         obstacle_(obstacle),
-        ctree_(cloth.tris, tie_broken(cloth.tris, x)),
-        otree_(obstacle.tris, tie_broken(obstacle.tris, y)) {
+        ctree_(tree<K>(cloth.tris, x)),
+        otree_(tree<K>(obstacle.tris, y)) {
     const auto& nodes = ctree_.nodes();
     std::vector<NodeShape> shape(nodes.size());
     ends_.resize(nodes.size());

@@ -27,6 +27,8 @@ void AuditOptions::validate() const {
   if (keep < 1) throw std::invalid_argument(fmt::format("keep must be 1 or more, not {}", keep));
   if (up < -1 || up > 2)
     throw std::invalid_argument(fmt::format("up must be 0, 1 or 2 (x, y, z), not {}", up));
+  if (part < 0 || parts < 1 || part > parts)
+    throw std::invalid_argument(fmt::format("part {}/{}: takes I/N with 1 <= I <= N", part, parts));
 }
 
 audit::Options AuditOptions::engine() const {
@@ -53,17 +55,22 @@ std::string AuditResult::text() const {
   return report_.text();
 }
 
-std::string AuditResult::written_text(const std::string& dir) const {
+std::string written_lines(const AuditReport& report, const std::string& dir) {
   std::string text =
       fmt::format("certificate    {0}/audit.json, {0}/audit.md{1}\n", dir,
-                  report_.clean() ? "" : fmt::format(", {}/first-violation.png", dir));
-  if (!report_.case_records().empty())
-    text += fmt::format("case files     {}/cases/*.vf ({})\n", dir, report_.case_records().size());
+                  report.clean() ? "" : fmt::format(", {}/first-violation.png", dir));
+  long cases = 0;
+  for (const KeptViolation& k : report.kept()) cases += !k.case_file.empty();
+  if (cases) text += fmt::format("case files     {}/cases/*.vf ({})\n", dir, cases);
   return text;
 }
 
 std::vector<std::string> audit_outputs() {
   return {"audit.json", "audit.md", "first-violation.png", "cases"};
+}
+
+std::string AuditResult::written_text(const std::string& dir) const {
+  return written_lines(report_, dir);
 }
 
 void AuditResult::write(const std::string& dir) const {
@@ -111,9 +118,34 @@ std::string detail_of(const audit::FrameReport& r) {
 
 }  // namespace
 
+namespace {
+
+// A part's range, and its trees built over frame 0 as the whole run's (Auditor::start_part, its
+// seconds in `seconds`); the whole run without --part.
+AuditPart start(FrameSource& source, const AuditOptions& o, audit::Auditor& auditor,
+                double& seconds, std::vector<Vec3>& frame0) {
+  const int n = source.frames();
+  AuditPart part = AuditPart::of_sequence(std::max(1, o.part), o.parts, n);
+  part.first_file = source.name(0), part.last_file = source.name(n - 1);
+  if (part.first_frame > 0) {
+    MeshFrame m = source.read(0);
+    if (o.files && o.up < 0) frame0 = m.cloth;  // the whole run's picture, in any part
+    const auto begin = std::chrono::steady_clock::now();
+    try {
+      auditor.start_part(part.first_frame, m.cloth, m.obstacle);
+      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    } catch (const std::invalid_argument& e) {
+      refuse(m.file, 0, e);
+    }
+  }
+  return part;
+}
+
+}  // namespace
+
 AuditResult run_audit(FrameSource& source, const AuditOptions& o, const ProgressSink& progress) {
   o.validate();
-  const auto start = std::chrono::steady_clock::now();
+  const auto start_time = std::chrono::steady_clock::now();
   const audit::Topology& t = source.topology();
   std::optional<audit::Auditor> auditor;
   try {
@@ -122,9 +154,13 @@ AuditResult run_audit(FrameSource& source, const AuditOptions& o, const Progress
     refuse(source.name(0), -1, e);
   }
   AuditResult result(AuditReport(t, o.engine(), o.keep, o.files));
-  Placed prev;
+  double trees_seconds = 0;
   std::vector<Vec3> frame0;  // frame 0's cloth: the picture's up axis from the data
-  for (int i = 0; i < source.frames(); ++i) {
+  const AuditPart part = start(source, o, *auditor, trees_seconds, frame0);
+  if (o.part > 0) result.report_.set_part(part);
+  result.names_.resize(std::size_t(source.frames()));
+  Placed prev;
+  for (int i = part.first_frame; i <= part.last_frame; ++i) {
     MeshFrame m = source.read(i);
     if (i == 0 && o.files && o.up < 0) frame0 = m.cloth;
     audit::FrameReport r;
@@ -133,18 +169,24 @@ AuditResult run_audit(FrameSource& source, const AuditOptions& o, const Progress
     } catch (const std::invalid_argument& e) {
       refuse(m.file, i, e);
     }
-    result.names_.push_back(source.name(i));
+    result.names_[std::size_t(i)] = source.name(i);
     Placed now{std::move(m.cloth_vertices), std::move(m.cloth_tris), std::move(m.obstacle_vertices),
                std::move(m.obstacle_tris)};
     const FramePlaces before = prev.places(), here = now.places();
-    const bool first =
-        source.placed() ? result.report_.add(r, &before, &here) : result.report_.add(r);
+    bool first = false;
+    if (i == part.first_frame && i > 0) {  // the previous part's last frame, counted there
+      r.seconds += trees_seconds;
+      result.report_.add_shared(r);
+    } else {
+      first = source.placed() ? result.report_.add(r, &before, &here) : result.report_.add(r);
+    }
     if (first && o.files) {
       const int up = o.up >= 0 ? o.up : up_axis_of(frame0, m.cloth, m.obstacle);
       result.first_ = AuditResult::FirstFrame{std::move(m.cloth), std::move(m.obstacle), up};
     }
     prev = std::move(now);
-    report(progress, {"audit", i + 1, source.frames(), "frames", detail_of(r)});
+    report(progress, {"audit", i - part.first_frame + 1, part.last_frame - part.first_frame + 1,
+                      "frames", detail_of(r)});
   }
   if (result.first_ && !result.report_.kept().empty()) {  // drawn here: its memory counts too
     result.picture_ =
@@ -153,7 +195,7 @@ AuditResult run_audit(FrameSource& source, const AuditOptions& o, const Progress
     result.first_.reset();
   }
   result.report_.finish(
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count());
   return result;
 }
 

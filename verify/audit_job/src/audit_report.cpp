@@ -74,7 +74,7 @@ std::string describe(const audit::Violation& v) {
 }
 
 // "2 self-intersection; in the step from 3: 1 self-vertex-face": a frame's nonzero counts.
-std::string frame_counts(const AuditCounts& c, std::size_t frame) {
+std::string frame_counts(const AuditCounts& c, int frame) {
   std::string in_frame, in_step;
   for (const ViolationKind k : kKinds) {
     std::string& s = audit::is_step(k) ? in_step : in_frame;
@@ -90,7 +90,36 @@ std::string frame_counts(const AuditCounts& c, std::size_t frame) {
 
 AuditReport::AuditReport(const audit::Topology& topology, const audit::Options& options, int keep,
                          bool case_files)
-    : topology_(topology), options_(options), keep_(std::max(1, keep)), case_files_(case_files) {}
+    : topology_(topology),
+      sizes_{topology.cloth_vertices, topology.obstacle_vertices, topology.cloth.size(),
+             topology.obstacle.size()},
+      options_(options),
+      keep_(std::max(1, keep)),
+      case_files_(case_files) {}
+
+AuditPart AuditPart::of_sequence(int index, int of, int frames) {
+  const long steps = std::max(0, frames - 1);
+  if (index < 1 || index > of || (of > 1 && of > steps))
+    throw std::invalid_argument(fmt::format(
+        "part {}/{}: the parts are 1/N to N/N, each of at least one step, and the sequence has {} "
+        "steps",
+        index, of, steps));
+  AuditPart p;
+  p.index = index, p.of = of, p.sequence_frames = frames;
+  p.first_frame = int((index - 1) * steps / of);
+  p.last_frame = of == 1 ? frames - 1 : int(index * steps / of);
+  return p;
+}
+
+void AuditReport::set_part(const AuditPart& part) {
+  part_ = part;
+  part_->keep = keep_;
+}
+
+int AuditReport::steps() const {
+  const int counted = frames();
+  return std::max(0, frame_number(0) == 0 ? counted - 1 : counted);
+}
 
 bool AuditReport::add(const audit::FrameReport& r, const FramePlaces* step_start,
                       const FramePlaces* frame) {
@@ -98,10 +127,15 @@ bool AuditReport::add(const audit::FrameReport& r, const FramePlaces* step_start
   const AuditCounts c = counts_of(r);
   per_frame_.push_back(c);
   total_.add(c);
-  audit_seconds_ += r.seconds;
+  (per_frame_.size() == 1 && frame_number(0) == 0 ? first_seconds_ : step_seconds_) += r.seconds;
   for (const audit::Violation& v : r.violations) {
     if (int(kept_.size()) >= keep_) break;
-    KeptViolation k{v, r.frame, {}, {}};
+    KeptViolation k{v, r.frame, {}, {}, {}};
+    if (!audit::is_step(v.kind)) {
+      const bool self = v.kind == ViolationKind::SelfIntersection;
+      k.corners = {topology_.cloth[std::size_t(v.triangles[0])],
+                   (self ? topology_.cloth : topology_.obstacle)[std::size_t(v.triangles[1])]};
+    }
     const FramePlaces* p = audit::is_step(v.kind) ? step_start : frame;
     if (p) k.places = places_of(v, *p);
     if (case_files_ && audit::is_step(v.kind))
@@ -115,7 +149,10 @@ bool AuditReport::add(const audit::FrameReport& r, const FramePlaces* step_start
 void AuditReport::finish(double wall_seconds) {
   wall_seconds_ = wall_seconds;
   rusage u{};
-  if (::getrusage(RUSAGE_SELF, &u) == 0) peak_bytes_ = long(u.ru_maxrss) * 1024;  // KiB on Linux
+  if (::getrusage(RUSAGE_SELF, &u) != 0) return;
+  peak_bytes_ = long(u.ru_maxrss) * 1024;  // KiB on Linux
+  cpu_seconds_ = double(u.ru_utime.tv_sec) + double(u.ru_stime.tv_sec) +
+                 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
 QueryRecord case_record(const KeptViolation& k) {
@@ -146,10 +183,14 @@ std::string counted(long n, const char* what) {
 }  // namespace
 
 std::string AuditReport::summary_line() const {
-  const int steps = std::max(0, frames() - 1);
-  const std::string run = counted(frames(), "frame") + ", " + counted(steps, "step");
-  if (clean()) return fmt::format("clean: {}, 0 violations (exact)", run);
-  return fmt::format("VIOLATION: {}, {}; first: {}", run, counted(total_.total(), "violation"),
+  // A part's: "part 2/3 of 101 frames: frames 33 to 66, 33 steps" (it counts frames 34 to 66).
+  const std::string what =
+      part_ ? fmt::format("part {}/{} of {}: frames {} to {}, {}", part_->index, part_->of,
+                          counted(part_->sequence_frames, "frame"), part_->first_frame,
+                          part_->last_frame, counted(steps(), "step"))
+            : counted(frames(), "frame") + ", " + counted(steps(), "step");
+  if (clean()) return fmt::format("clean: {}, 0 violations (exact)", what);
+  return fmt::format("VIOLATION: {}, {}; first: {}", what, counted(total_.total(), "violation"),
                      describe(kept_.front().violation));
 }
 
@@ -164,7 +205,7 @@ std::string AuditReport::text(int max_frames) const {
       continue;
     }
     ++shown;
-    out += fmt::format("  frame {}: {}\n", f, frame_counts(c, f));
+    out += fmt::format("  frame {}: {}\n", frame_number(f), frame_counts(c, frame_number(f)));
   }
   if (more) out += fmt::format("  ... and {} more frames with violations\n", more);
   if (total_.inside > 0)
@@ -183,7 +224,7 @@ Json counts_json(const AuditCounts& c, bool with_step) {
   return j;
 }
 
-Json violation_json(const KeptViolation& k, const audit::Topology& t) {
+Json violation_json(const KeptViolation& k) {
   const audit::Violation& v = k.violation;
   Json j = {{"kind", audit::to_string(v.kind)}, {"step", audit::is_step(v.kind)}};
   if (audit::is_step(v.kind)) {
@@ -191,12 +232,9 @@ Json violation_json(const KeptViolation& k, const audit::Topology& t) {
     j["vertices"] = v.vertices;
     j["triangle"] = v.triangle >= 0 ? Json(v.triangle) : Json(nullptr);
   } else {
-    const bool self = v.kind == ViolationKind::SelfIntersection;
-    const std::vector<Tri>& other = self ? t.cloth : t.obstacle;
     j["frame"] = v.frame;
     j["triangles"] = v.triangles;
-    j["triangle_vertices"] = {t.cloth[std::size_t(v.triangles[0])],
-                              other[std::size_t(v.triangles[1])]};
+    j["triangle_vertices"] = k.corners;
   }
   j["toi"] = toi_json(v);
   if (!k.places.empty()) j["places"] = k.places;
@@ -207,49 +245,65 @@ Json violation_json(const KeptViolation& k, const audit::Topology& t) {
 }  // namespace
 
 nlohmann::ordered_json AuditReport::json() const {
-  const int steps = std::max(0, frames() - 1);
-  Json j = {
-      {"clean", clean()},
-      {"summary", summary_line()},
-      {"frames", frames()},
-      {"steps", steps},
-      {"cloth", {{"vertices", topology_.cloth_vertices}, {"triangles", topology_.cloth.size()}}},
-      {"obstacles",
-       {{"vertices", topology_.obstacle_vertices}, {"triangles", topology_.obstacle.size()}}},
-      {"k", options_.k},
-      {"violations", total_.total()},
-      {"totals", counts_json(total_, true)},
-      {"candidates", {{"static", total_.static_candidates}, {"ccd", total_.step.candidates}}},
-      {"inside", total_.inside}};
-  j["first_violation"] = kept_.empty() ? Json(nullptr) : violation_json(kept_.front(), topology_);
+  Json j = {{"clean", clean()},
+            {"summary", summary_line()},
+            {"frames", frames()},
+            {"steps", steps()},
+            {"cloth", {{"vertices", sizes_.cloth_vertices}, {"triangles", sizes_.cloth_triangles}}},
+            {"obstacles",
+             {{"vertices", sizes_.obstacle_vertices}, {"triangles", sizes_.obstacle_triangles}}},
+            {"k", options_.k},
+            {"violations", total_.total()},
+            {"totals", counts_json(total_, true)},
+            {"candidates", {{"static", total_.static_candidates}, {"ccd", total_.step.candidates}}},
+            {"inside", total_.inside}};
+  j["first_violation"] = kept_.empty() ? Json(nullptr) : violation_json(kept_.front());
   Json frames_j = Json::array();
   for (std::size_t f = 0; f < per_frame_.size(); ++f) {
-    Json one = {{"frame", f}};
-    one.update(counts_json(per_frame_[f], f > 0));
+    Json one = {{"frame", frame_number(f)}};
+    one.update(counts_json(per_frame_[f], frame_number(f) > 0));
     frames_j.push_back(std::move(one));
   }
   j["per_frame"] = std::move(frames_j);
   Json kept = Json::array();
-  for (const KeptViolation& k : kept_) kept.push_back(violation_json(k, topology_));
+  for (const KeptViolation& k : kept_) kept.push_back(violation_json(k));
   j["kept"] = std::move(kept);
-  const double vertex_steps = double(steps) * topology_.cloth_vertices;
-  j["cost"] = {{"audit_seconds", six_digits(audit_seconds_)},
-               {"wall_seconds", six_digits(wall_seconds_)},
-               {"ns_per_vertex_step",
-                vertex_steps > 0 ? Json(six_digits(audit_seconds_ * 1e9 / vertex_steps)) : Json()},
-               {"peak_memory_bytes", peak_bytes_},
-               {"threads", options_.threads}};
+  if (part_)
+    j["part"] = {{"index", part_->index},
+                 {"of", part_->of},
+                 {"first_frame", part_->first_frame},
+                 {"last_frame", part_->last_frame},
+                 {"sequence_frames", part_->sequence_frames},
+                 {"first_file", part_->first_file},
+                 {"last_file", part_->last_file},
+                 {"keep", part_->keep}};
+  j["cost"] = cost_json();
   return j;
 }
 
+// The first frame's cost (the trees and the boundary loops, built once, and its checks) apart
+// from the steps': the cost per vertex per step is the steps' alone.
+nlohmann::ordered_json AuditReport::cost_json() const {
+  const double vertex_steps = double(steps()) * sizes_.cloth_vertices;
+  return {{"audit_seconds", six_digits(first_seconds_ + step_seconds_)},
+          {"first_frame_seconds", six_digits(first_seconds_)},
+          {"step_seconds", six_digits(step_seconds_)},
+          {"wall_seconds", six_digits(wall_seconds_)},
+          {"cpu_seconds", six_digits(cpu_seconds_)},
+          {"ns_per_vertex_step",
+           vertex_steps > 0 ? Json(six_digits(step_seconds_ * 1e9 / vertex_steps)) : Json()},
+          {"peak_memory_bytes", peak_bytes_},
+          {"threads", options_.threads}};
+}
+
 std::string AuditReport::markdown() const {
-  const int steps = std::max(0, frames() - 1);
+  const int steps = this->steps();
   std::string md = "# Audit\n\n**" + summary_line() + "**\n\n";
   md += fmt::format(
       "Cloth: {} vertices, {} triangles; obstacles: {} vertices, {} triangles; {}, {}; FDH k = "
       "{}.\n\n",
-      topology_.cloth_vertices, topology_.cloth.size(), topology_.obstacle_vertices,
-      topology_.obstacle.size(), counted(frames(), "frame"), counted(steps, "step"), options_.k);
+      sizes_.cloth_vertices, sizes_.cloth_triangles, sizes_.obstacle_vertices,
+      sizes_.obstacle_triangles, counted(frames(), "frame"), counted(steps, "step"), options_.k);
   md += "| kind | count |\n|---|---|\n";
   for (const ViolationKind k : kKinds)
     md += fmt::format("| {} | {} |\n", audit::to_string(k), count_of(total_, k));
@@ -269,12 +323,14 @@ std::string AuditReport::markdown() const {
         "\n## Frames with violations\n\n| frame | in the frame; in the step into it |\n|---|---|\n";
     for (std::size_t f = 0; f < per_frame_.size(); ++f) {
       if (per_frame_[f].total() == 0) continue;
-      md += fmt::format("| {} | {} |\n", f, frame_counts(per_frame_[f], f));
+      md += fmt::format("| {} | {} |\n", frame_number(f),
+                        frame_counts(per_frame_[f], frame_number(f)));
     }
   }
   md += fmt::format(
-      "\nCost: {:.3f} s of audit ({:.3f} s in all, reading included), peak memory {} MiB.\n",
-      audit_seconds_, wall_seconds_, peak_bytes_ >> 20);
+      "\nCost: {:.3f} s of audit, {:.3f} s of it the first frame ({:.3f} s in all, reading "
+      "included), peak memory {} MiB.\n",
+      first_seconds_ + step_seconds_, first_seconds_, wall_seconds_, peak_bytes_ >> 20);
   return md;
 }
 

@@ -4,9 +4,12 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <tuple>
 
 #include "commands.hpp"
 #include "fdh/audit_job/audit_job.hpp"
+#include "fdh/audit_job/audit_parts.hpp"
 #include "fdh/io/json_text.hpp"
 #include "fdh/io/mesh_sequence.hpp"
 #include "fdh/os/atomic_file.hpp"
@@ -52,6 +55,10 @@ the first violation, its primitives' triangles in blue, the whole frame in an
 inset) and DIR/cases/*.vf, one replayable case per kept step violation
 (`fdhcert classify` / `replay`, truth 1), all published at once: a run that
 fails leaves DIR as it was. See docs/audit.md.
+--part I/N audits the I-th of N contiguous ranges of the steps (neighbouring
+parts share one frame) into --out DIR; `fdhcert audit --merge DIR... --out DIR`
+joins the parts' folders into the whole run's certificate (the same JSON but
+for the costs). See docs/cluster.md for a Slurm array job.
 Exit status: 0 clean; 1 a violation; 2 bad input (FILE:LINE: what; nothing is
 written): a frame whose faces differ from the first's, a non-manifold cloth, a
 degenerate face, a coordinate that is not a finite number, a line that is not
@@ -62,41 +69,67 @@ bounds of docs/limits.md.)";
 
 // The command line: the frame source's arguments, the outputs, and the job's options.
 struct AuditCommand {
-  std::vector<std::string> frames, obstacles;
-  std::string cloth, out;
+  std::vector<std::string> frames, obstacles, merge;
+  std::string cloth, out, part;
   bool json = false;
   ProgressWhen progress = ProgressWhen::Auto;
   AuditOptions job;
 };
 
+const std::vector<std::string> kWritten = {"audit.json", "audit.md", "first-violation.png"};
+
+int run_merge_command(const AuditCommand& o, const Io& io) {
+  if (!o.frames.empty() || !o.part.empty())
+    throw UsageError("audit: --merge takes the parts' folders, not FRAMES or --part");
+  if (o.out.empty()) throw UsageError("audit: --merge needs --out DIR (the whole certificate)");
+  check_output_folder(o.out, kWritten);
+  const MergedAudit merged = merge_audit_parts(o.merge);
+  merged.write(o.out);
+  if (o.json)
+    print_json(io.out, merged.to_json());
+  else
+    io.out << merged.text() << written_lines(merged.report(), o.out);
+  return merged.exit_status();
+}
+
 int run_audit_command(AuditCommand& o, const Io& io) {
-  if (!o.out.empty()) check_output_folder(o.out, {"audit.json", "audit.md", "first-violation.png"});
+  if (!o.merge.empty()) return run_merge_command(o, io);
+  if (o.frames.empty()) throw UsageError("audit: FRAMES is required (or --merge DIR...)");
+  if (!o.part.empty() && o.out.empty())
+    throw UsageError("audit: --part needs --out DIR (the part's certificate, for --merge)");
+  if (!o.out.empty()) check_output_folder(o.out, kWritten);
   const ThreadLimit threads(o.job.threads);
   const MeshSequence seq(o.frames, o.cloth, o.obstacles);
   for (const std::string& note : seq.notes()) io.err << "fdhcert: note: " << note << "\n";
   ObjFrames source(seq);
   o.job.files = !o.out.empty();
+  if (!o.part.empty()) std::tie(o.job.part, o.job.parts) = i_of_n(o.part);
   ProgressLine progress(io.err, progress_wanted(io, o.progress));
-  const AuditResult result = run_audit(source, o.job, progress.sink());
+  std::optional<AuditResult> result;
+  try {
+    result.emplace(run_audit(source, o.job, progress.sink()));
+  } catch (const std::invalid_argument& e) {  // a --part past the sequence's steps
+    throw UsageError("audit: --" + std::string(e.what()));
+  }
   progress.clear();
   // After the run: a later frame's quads count too (the most in any one frame).
   if (const long n = seq.polygons(); n > 0)
     io.err << fmt::format(
         "fdhcert: note: {} face{} of more than three vertices {} split into triangles (fan)\n", n,
         n == 1 ? "" : "s", n == 1 ? "was" : "were");
-  if (!o.out.empty()) result.write(o.out);
+  if (!o.out.empty()) result->write(o.out);
   if (o.json)
-    print_json(io.out, result.to_json());
+    print_json(io.out, result->to_json());
   else
-    io.out << result.text() << (o.out.empty() ? "" : result.written_text(o.out));
-  return result.exit_status();
+    io.out << result->text() << (o.out.empty() ? "" : result->written_text(o.out));
+  return result->exit_status();
 }
 
 void add_audit_options(CLI::App& cmd, AuditCommand& o) {
   cmd.add_option("FRAMES", o.frames,
                  "OBJ or PLY files, one per frame, or folders of them; or\n"
-                 "MESH CACHE (a .pc2 or .mdd point cache)")
-      ->required();
+                 "MESH CACHE (a .pc2 or .mdd point cache); required\n"
+                 "unless --merge");
   cmd.add_option("--obstacle", o.obstacles,
                  "an obstacle OBJ or PLY that stands still, or a folder of one\n"
                  "per frame (as many as FRAMES); repeatable")
@@ -116,6 +149,17 @@ void add_audit_options(CLI::App& cmd, AuditCommand& o) {
       ->type_name("AXIS")
       ->transform(
           CLI::CheckedTransformer(std::map<std::string, int>{{"x", 0}, {"y", 1}, {"z", 2}}));
+  cmd.add_option("--part", o.part,
+                 "audit only the I-th of N contiguous ranges of the steps\n"
+                 "(neighbouring parts share a frame), into --out DIR")
+      ->type_name("I/N")
+      ->check(i_of_n_validator(1000000));
+  cmd.add_option("--merge", o.merge,
+                 "join the folders of parts 1/N to N/N (--part) into the\n"
+                 "whole run's certificate in --out DIR, instead of auditing\n"
+                 "FRAMES")
+      ->type_name("DIR...")
+      ->expected(1, -1);
   cmd.add_flag("--json", o.json, "print the certificate as one JSON object");
   cmd.add_option("--k", o.job.k, "the FDH's k: 6, 14, 18 (default) or 26")
       ->type_name("K")

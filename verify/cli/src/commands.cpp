@@ -108,6 +108,27 @@ CLI::Validator kdop_k_validator(bool allow_none) {
       "");
 }
 
+CLI::Validator i_of_n_validator(long max) {
+  return CLI::Validator(
+      [max](std::string& s) -> std::string {
+        const std::size_t slash = s.find('/');
+        const auto digits = [](const std::string& d) {  // at most 7: no overflow
+          return !d.empty() && d.size() <= 7 && d.find_first_not_of("0123456789") == d.npos;
+        };
+        if (slash != s.npos && digits(s.substr(0, slash)) && digits(s.substr(slash + 1))) {
+          const long i = std::stol(s.substr(0, slash)), n = std::stol(s.substr(slash + 1));
+          if (i >= 1 && i <= n && n <= max) return {};
+        }
+        return "takes I/N with 1 <= I <= N <= " + std::to_string(max) + ", not " + quoted_input(s);
+      },
+      "");
+}
+
+std::pair<int, int> i_of_n(const std::string& s) {
+  const std::size_t slash = s.find('/');
+  return {std::stoi(s.substr(0, slash)), std::stoi(s.substr(slash + 1))};
+}
+
 CLI::Option* add_seed_option(CLI::App& cmd, std::uint64_t& seed, const std::string& help) {
   return cmd.add_option("--seed", seed, help)
       ->type_name("S")

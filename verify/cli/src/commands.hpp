@@ -24,6 +24,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "fdh/check/registry.hpp"
@@ -65,6 +66,9 @@ CLI::Validator one_of(std::vector<std::string> choices);
 CLI::Validator known_method();
 // A k-DOP's k: 6, 14, 18 or 26 (and 0 for "none" when allow_none).
 CLI::Validator kdop_k_validator(bool allow_none);
+// I/N with 1 <= I <= N <= max (fuzz --shard, audit --part), and the pair it gives once checked.
+CLI::Validator i_of_n_validator(long max);
+std::pair<int, int> i_of_n(const std::string& s);
 // A subcommand with its one-line description and its long footer.
 inline CLI::App* add_command(CLI::App& app, const char* name, const char* about,
                              const char* footer) {

@@ -90,24 +90,6 @@ std::string wrapped(const std::vector<std::string>& words, std::size_t width) {
   return out + line;
 }
 
-// --shard I/N with 1 <= I <= N <= kMaxFuzzShards (digits only, so no overflow: at most 7).
-CLI::Validator shard_validator() {
-  return CLI::Validator(
-      [](std::string& s) -> std::string {
-        const std::size_t slash = s.find('/');
-        const auto digits = [](const std::string& d) {
-          return !d.empty() && d.size() <= 7 && d.find_first_not_of("0123456789") == d.npos;
-        };
-        if (slash != s.npos && digits(s.substr(0, slash)) && digits(s.substr(slash + 1))) {
-          const long i = std::stol(s.substr(0, slash)), n = std::stol(s.substr(slash + 1));
-          if (i >= 1 && i <= n && n <= kMaxFuzzShards) return {};
-        }
-        return "takes I/N with 1 <= I <= N <= " + std::to_string(kMaxFuzzShards) + ", not " +
-               quoted_input(s);
-      },
-      "");
-}
-
 // The raw findings by direction, every class of the mode named (0 included): "971 FP (false
 // alarms), 1029 FN (misses)", or with --toi "1 missed, 2 late, 0 broken, 3 early". Cases of a
 // run resumed from before classes were named are added as "N unclassed".
@@ -172,9 +154,9 @@ int run_fuzz_command(FuzzCommandOptions& o, const Io& io) {
   FuzzOptions& opt = o.run;
   check_output_dir(opt.out_dir);
   if (!o.shard.empty()) {
-    const std::size_t slash = o.shard.find('/');
-    opt.shard = std::stoi(o.shard.substr(0, slash)) - 1;  // checked by shard_validator
-    opt.shards = std::stoi(o.shard.substr(slash + 1));
+    const auto [shard, shards] = i_of_n(o.shard);  // checked by i_of_n_validator
+    opt.shard = shard - 1;
+    opt.shards = shards;
   }
   ProgressLine progress(
       io.err, progress_wanted(io, o.json && o.progress == ProgressWhen::Auto ? ProgressWhen::Never
@@ -219,7 +201,7 @@ Command add_fuzz(CLI::App& app) {
                   "together are exactly the unsharded run; merge them by\n"
                   "copying their DIRs into one (file names are content hashes)")
       ->type_name("I/N")
-      ->check(shard_validator());
+      ->check(i_of_n_validator(kMaxFuzzShards));
   cmd->add_option("--threads", opt.threads, "worker processes (default: every core)")
       ->type_name("T")
       ->check(CLI::Range(1, 1024));

@@ -129,6 +129,13 @@ class Auditor {
   // on a wrong count or a coordinate that is not finite.
   FrameReport add_frame(const std::vector<Vec3>& cloth, const std::vector<Vec3>& obstacle);
 
+  // A part of a longer sequence (`fdhcert audit --part`), before the first add_frame: frames are
+  // numbered from `first_frame`, and the trees are built over the sequence's frame 0 (`cloth0`,
+  // `obstacle0`) as the whole run builds them, so that the part counts the whole run's
+  // candidates. Throws std::invalid_argument as add_frame does, or after a frame.
+  void start_part(int first_frame, const std::vector<Vec3>& cloth0,
+                  const std::vector<Vec3>& obstacle0);
+
   const Topology& topology() const;
 
  private:

@@ -26,6 +26,9 @@ struct AuditOptions {
   // violation's frame is kept for the picture.
   bool files = false;
   int up = -1;  // the picture's up axis: 0, 1, 2 (x, y, z); -1: from the data
+  // A part of the run (`--part I/N`): the I-th of N contiguous ranges of steps
+  // (AuditPart::of_sequence); 0: the whole run.
+  int part = 0, parts = 1;
   // Throws std::invalid_argument naming the option (the one check of CLI and Python values).
   void validate() const;
   audit::Options engine() const;
@@ -89,6 +92,10 @@ class AuditResult {
   std::string picture_;  // first-violation.png's bytes, drawn before the peak memory is taken
   std::vector<std::string> names_;  // each frame's, for the case files
 };
+
+// The lines that name what a certificate's write(dir) wrote: the certificate, and the case files
+// if any.
+std::string written_lines(const AuditReport& report, const std::string& dir);
 
 // Every frame of `source` through the engine. Throws std::invalid_argument for bad options, and
 // for frames the engine refuses InputError naming the frame's file (from files) or

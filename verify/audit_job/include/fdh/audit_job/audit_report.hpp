@@ -7,7 +7,9 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fdh/audit/auditor.hpp"
@@ -32,6 +34,23 @@ struct KeptViolation {
   int report_frame = 0;             // the frame report that carried it (a step's end frame)
   std::vector<std::string> places;  // FILE:LINE of its primitives; empty from arrays
   std::string case_file;            // relative to the --out folder; "" when none is written
+  std::array<Tri, 2> corners{};     // a frame kind's two triangles' vertices
+};
+
+// A part of a sequence (`fdhcert audit --part I/N`): the I-th of N contiguous ranges of steps,
+// [(I-1)S/N, I S/N) of the sequence's S = frames - 1; frames first_frame to last_frame, shared
+// with the neighbours. The part certifies its steps and the frames they end in, and part 1 also
+// frame 0: the parts' certificates add up to the whole run's (fdh/audit_job/audit_parts.hpp).
+struct AuditPart {
+  int index = 1, of = 1;
+  int first_frame = 0, last_frame = 0;
+  int sequence_frames = 0;
+  std::string first_file, last_file;  // the sequence's, to tell parts of one run apart
+  int keep = 16;
+  // Part I of N of a sequence of `frames` (1 <= I <= N <= frames - 1, or N = 1); throws
+  // std::invalid_argument otherwise.
+  static AuditPart of_sequence(int index, int of, int frames);
+  int counted_from() const { return first_frame == 0 ? 0 : first_frame + 1; }
 };
 
 using audit::AuditCounts;  // what the certificate counts, per frame and in total
@@ -55,6 +74,26 @@ class AuditReport {
   bool add(const audit::FrameReport& r, const FramePlaces* step_start = nullptr,
            const FramePlaces* frame = nullptr);
 
+  // A part's report (before any frame): frames numbered from part.counted_from(), and its
+  // range in the JSON.
+  void set_part(const AuditPart& part);
+  const std::optional<AuditPart>& part() const { return part_; }
+  // The part's first frame (its neighbour's last): only its cost is counted, as the part's
+  // first frame's.
+  void add_shared(const audit::FrameReport& r) { first_seconds_ += r.seconds; }
+
+  // The report of the next part joined after this one's (the parts in order): frames, counts,
+  // kept violations (up to `keep`; their case files renumbered: the pairs (later's name, the
+  // new name) are returned) and costs. Throws std::invalid_argument for a part that does not
+  // follow this one in the same run.
+  std::vector<std::pair<std::string, std::string>> append(const AuditReport& later);
+  // Parts 1/N to N/N joined: the report is now the whole run's. Throws std::invalid_argument
+  // when the last part joined is not N/N.
+  void end_parts();
+  // A report as its json() wrote it (a part's audit.json, for the merge); throws InputError
+  // naming `file` for what json() does not write.
+  static AuditReport from_json(const nlohmann::ordered_json& j, const std::string& file);
+
   // The run is over: `wall_seconds` from the start (reading included) and the process's peak
   // memory (getrusage's ru_maxrss), for the cost block.
   void finish(double wall_seconds);
@@ -62,6 +101,7 @@ class AuditReport {
   bool clean() const { return total_.total() == 0; }
   int exit_status() const { return clean() ? 0 : 1; }
   int frames() const { return int(per_frame_.size()); }
+  int steps() const;
   const AuditCounts& totals() const { return total_; }
   const std::vector<KeptViolation>& kept() const { return kept_; }
 
@@ -78,14 +118,25 @@ class AuditReport {
   std::string markdown() const;         // audit.md
 
  private:
-  audit::Topology topology_;
+  struct Sizes {  // the topology's
+    int cloth_vertices = 0, obstacle_vertices = 0;
+    std::size_t cloth_triangles = 0, obstacle_triangles = 0;
+  };
+  AuditReport() = default;
+  nlohmann::ordered_json cost_json() const;
+  int frame_number(std::size_t i) const { return (part_ ? part_->counted_from() : 0) + int(i); }
+
+  audit::Topology topology_;  // for the corners of what add() keeps; empty from_json
+  Sizes sizes_;
   audit::Options options_;
-  int keep_;
-  bool case_files_;
+  int keep_ = 1;
+  bool case_files_ = false;
   std::vector<AuditCounts> per_frame_;
   AuditCounts total_;
   std::vector<KeptViolation> kept_;
-  double audit_seconds_ = 0, wall_seconds_ = 0;
+  std::optional<AuditPart> part_;
+  // Costs: the first frame (the trees, the boundary loops, its checks) apart from the steps'.
+  double first_seconds_ = 0, step_seconds_ = 0, wall_seconds_ = 0, cpu_seconds_ = 0;
   long peak_bytes_ = 0;
 };
 
