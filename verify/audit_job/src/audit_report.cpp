@@ -23,10 +23,19 @@ constexpr ViolationKind kKinds[] = {
     ViolationKind::ClothVertexObstacle,  ViolationKind::ObstacleVertexCloth,
     ViolationKind::ClothEdgeObstacleEdge};
 
+// The kinds a run counts: the proximity kinds only with a minimum distance (so that an audit
+// without one writes what it wrote before they existed).
+std::vector<ViolationKind> kinds_of(const audit::Options& o) {
+  std::vector<ViolationKind> out(std::begin(kKinds), std::end(kKinds));
+  if (o.min_distance > 0)
+    for (const ViolationKind k : kKinds) out.push_back(audit::proximity_kind(k));
+  return out;
+}
+
 // Which of a step violation's four query vertices are the cloth's (the rest are the
 // obstacles'), in fdh::Query's order (vertex-face: v f0 f1 f2; edge-edge: a0 a1 b0 b1).
 std::array<bool, 4> cloth_vertices_of(ViolationKind k) {
-  switch (k) {
+  switch (audit::contact_kind(k)) {
     case ViolationKind::ClothVertexObstacle:
       return {true, false, false, false};
     case ViolationKind::ObstacleVertexCloth:
@@ -42,7 +51,7 @@ std::array<bool, 4> cloth_vertices_of(ViolationKind k) {
 std::vector<std::string> places_of(const audit::Violation& v, const FramePlaces& p) {
   std::vector<std::string> out;
   if (!audit::is_step(v.kind)) {
-    const bool self = v.kind == ViolationKind::SelfIntersection;
+    const bool self = audit::contact_kind(v.kind) == ViolationKind::SelfIntersection;
     if (!p.cloth_tris || !(self ? p.cloth_tris : p.obstacle_tris)) return out;
     out.push_back(p.cloth_tris->at(v.triangles[0]));
     out.push_back((self ? p.cloth_tris : p.obstacle_tris)->at(v.triangles[1]));
@@ -73,9 +82,10 @@ std::string describe(const audit::Violation& v) {
 }
 
 // "2 self-intersection; in the step from 3: 1 self-vertex-face": a frame's nonzero counts.
-std::string frame_counts(const AuditCounts& c, std::size_t frame) {
+std::string frame_counts(const AuditCounts& c, std::size_t frame,
+                         const std::vector<ViolationKind>& kinds) {
   std::string in_frame, in_step;
-  for (const ViolationKind k : kKinds) {
+  for (const ViolationKind k : kinds) {
     std::string& s = audit::is_step(k) ? in_step : in_frame;
     if (const long n = count_of(c, k))
       s += fmt::format("{}{} {}", s.empty() ? "" : ", ", n, audit::to_string(k));
@@ -98,6 +108,9 @@ bool AuditReport::add(const audit::FrameReport& r, const FramePlaces* step_start
   per_frame_.push_back(c);
   total_.add(c);
   audit_seconds_ += r.seconds;
+  // The nearest pair of the run: the least lower bound, the earliest frame on ties.
+  if (r.nearest.frame >= 0 && (nearest_.frame < 0 || r.nearest.lo < nearest_.lo))
+    nearest_ = r.nearest;
   for (const audit::Violation& v : r.violations) {
     if (int(kept_.size()) >= keep_) break;
     KeptViolation k{v, r.frame, {}, {}};
@@ -137,10 +150,11 @@ std::vector<QueryRecord> AuditReport::case_records() const {
 
 std::string AuditReport::summary_line() const {
   const int steps = std::max(0, frames() - 1);
+  const std::string near = options_.min_distance > 0 ? "; " + nearest_words(*this) : "";
   if (clean())
-    return fmt::format("clean: {} frames, {} steps, 0 violations (exact)", frames(), steps);
-  return fmt::format("VIOLATION: {} frames, {} steps, {} violations; first: {}", frames(), steps,
-                     total_.total(), describe(kept_.front().violation));
+    return fmt::format("clean: {} frames, {} steps, 0 violations (exact){}", frames(), steps, near);
+  return fmt::format("VIOLATION: {} frames, {} steps, {} violations; first: {}{}", frames(), steps,
+                     total_.total(), describe(kept_.front().violation), near);
 }
 
 std::string AuditReport::text(int max_frames) const {
@@ -154,7 +168,7 @@ std::string AuditReport::text(int max_frames) const {
       continue;
     }
     ++shown;
-    out += fmt::format("  frame {}: {}\n", f, frame_counts(c, f));
+    out += fmt::format("  frame {}: {}\n", f, frame_counts(c, f, kinds_of(options_)));
   }
   if (more) out += fmt::format("  ... and {} more frames with violations\n", more);
   if (total_.inside > 0)
@@ -166,9 +180,9 @@ std::string AuditReport::text(int max_frames) const {
 
 namespace {
 
-Json counts_json(const AuditCounts& c, bool with_step) {
+Json counts_json(const AuditCounts& c, bool with_step, const std::vector<ViolationKind>& kinds) {
   Json j;
-  for (const ViolationKind k : kKinds)
+  for (const ViolationKind k : kinds)
     if (with_step || !audit::is_step(k)) j[audit::to_string(k)] = count_of(c, k);
   return j;
 }
@@ -181,7 +195,7 @@ Json violation_json(const KeptViolation& k, const audit::Topology& t) {
     j["vertices"] = v.vertices;
     j["triangle"] = v.triangle >= 0 ? Json(v.triangle) : Json(nullptr);
   } else {
-    const bool self = v.kind == ViolationKind::SelfIntersection;
+    const bool self = audit::contact_kind(v.kind) == ViolationKind::SelfIntersection;
     const std::vector<Tri>& other = self ? t.cloth : t.obstacle;
     j["frame"] = v.frame;
     j["triangles"] = v.triangles;
@@ -208,14 +222,15 @@ nlohmann::ordered_json AuditReport::json() const {
        {{"vertices", topology_.obstacle_vertices}, {"triangles", topology_.obstacle.size()}}},
       {"k", options_.k},
       {"violations", total_.total()},
-      {"totals", counts_json(total_, true)},
+      {"totals", counts_json(total_, true, kinds_of(options_))},
       {"candidates", {{"static", total_.static_candidates}, {"ccd", total_.step.candidates}}},
       {"inside", total_.inside}};
+  if (options_.min_distance > 0) j["proximity"] = proximity_json(*this);
   j["first_violation"] = kept_.empty() ? Json(nullptr) : violation_json(kept_.front(), topology_);
   Json frames_j = Json::array();
   for (std::size_t f = 0; f < per_frame_.size(); ++f) {
     Json one = {{"frame", f}};
-    one.update(counts_json(per_frame_[f], f > 0));
+    one.update(counts_json(per_frame_[f], f > 0, kinds_of(options_)));
     frames_j.push_back(std::move(one));
   }
   j["per_frame"] = std::move(frames_j);
@@ -241,8 +256,9 @@ std::string AuditReport::markdown() const {
       topology_.cloth_vertices, topology_.cloth.size(), topology_.obstacle_vertices,
       topology_.obstacle.size(), frames(), steps, options_.k);
   md += "| kind | count |\n|---|---|\n";
-  for (const ViolationKind k : kKinds)
+  for (const ViolationKind k : kinds_of(options_))
     md += fmt::format("| {} | {} |\n", audit::to_string(k), count_of(total_, k));
+  if (options_.min_distance > 0) md += "\n" + proximity_markdown(*this) + "\n";
   if (!kept_.empty()) {
     // With case files the run writes the picture beside this file (`audit --out`).
     if (case_files_) md += "\n![the first violation, its triangles in blue](first-violation.png)\n";
@@ -258,7 +274,7 @@ std::string AuditReport::markdown() const {
         "\n## Frames with violations\n\n| frame | in the frame; in the step into it |\n|---|---|\n";
     for (std::size_t f = 0; f < per_frame_.size(); ++f) {
       if (per_frame_[f].total() == 0) continue;
-      md += fmt::format("| {} | {} |\n", f, frame_counts(per_frame_[f], f));
+      md += fmt::format("| {} | {} |\n", f, frame_counts(per_frame_[f], f, kinds_of(options_)));
     }
   }
   md += fmt::format(

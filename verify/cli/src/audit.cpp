@@ -1,6 +1,7 @@
 // fdhcert audit: any simulator's output, a sequence of triangle-mesh frames, certified exactly.
 #include <fmt/format.h>
 
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -9,6 +10,7 @@
 #include "fdh/io/json_text.hpp"
 #include "fdh/io/mesh_sequence.hpp"
 #include "fdh/os/atomic_file.hpp"
+#include "min_distance_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -33,10 +35,17 @@ Decided exactly (robust's filters with their exact fallbacks):
                   against cloth triangles, cloth edges against obstacle edges.
 For each violation: the frame or the step, the primitives (indices into the
 cloth's and the obstacles' vertices and triangles, and FILE:LINE of each), and
-a certified enclosure of the time of impact within the step. Also counted,
-beside the verdict: cloth vertices strictly inside a closed obstacle (each
-connected piece of the obstacles that is a closed manifold mesh; open pieces
-have no inside).)";
+a certified enclosure of the time of impact within the step.
+With --min-distance D > 0, also every pair of the kinds above that comes
+within distance D without meeting (distance <= D counts): the proximity
+kinds, each with its certified earliest time within D, and the nearest pair
+of triangles seen with its exact distance. Pairs near by construction are
+left out of them (never out of the intersection kinds): cloth pairs within
+--near-rings rings of each other, and pairs already within D in the first
+frame (--near-first-frame).
+Also counted, beside the verdict: cloth vertices strictly inside a closed
+obstacle (each connected piece of the obstacles that is a closed manifold
+mesh; open pieces have no inside).)";
 
 const char* const kAuditFooter =
     R"(Prints a summary line and a line per frame with violations (--json: the
@@ -103,6 +112,22 @@ void add_audit_options(CLI::App& cmd, AuditCommand& o) {
                     "violations kept in the certificate, earliest first, each\n"
                     "with its case file (default 16)",
                     "N", 1, 100000);
+  add_min_distance_option(cmd, o.job.min_distance,
+                          "the minimum distance D: pairs within distance D (<= D)\n"
+                          "without meeting are proximity violations (default 0:\n"
+                          "contact only)");
+  add_number_option(cmd, "--near-rings", o.job.near_rings,
+                    "with --min-distance: leave out of the proximity\n"
+                    "kinds cloth pairs whose vertices are within N edges\n"
+                    "of each other (default 2; 0: only those sharing a\n"
+                    "vertex)",
+                    "N", 0, 100);
+  cmd.add_option("--near-first-frame", o.job.near_first_frame,
+                 "with --min-distance: leave out pairs already within\n"
+                 "D in the first frame: on (default) or off")
+      ->type_name("on|off")
+      ->transform(
+          CLI::CheckedTransformer(std::map<std::string, bool>{{"on", true}, {"off", false}}));
   add_threads_option(cmd, o.job.threads, "the audit");
   add_quiet_flag(cmd, o.progress);
 }

@@ -40,6 +40,15 @@ using audit::AuditCounts;  // what the certificate counts, per frame and in tota
 // exact truth 1, and `file` its case file.
 QueryRecord case_record(const KeptViolation& k);
 
+class AuditReport;
+
+// With a minimum distance D (audit::Options::min_distance > 0; proximity_report.cpp): the
+// summary's words on the nearest pair ("nearest 0.015625 ..."), and the certificate's block on D,
+// the near rule and what it left out, and the nearest pair.
+std::string nearest_words(const AuditReport& r);
+nlohmann::ordered_json proximity_json(const AuditReport& r);
+std::string proximity_markdown(const AuditReport& r);
+
 class AuditReport {
  public:
   // `keep`: the violations kept in the certificate, earliest first (at least 1);
@@ -64,6 +73,9 @@ class AuditReport {
   int frames() const { return int(per_frame_.size()); }
   const AuditCounts& totals() const { return total_; }
   const std::vector<KeptViolation>& kept() const { return kept_; }
+  const audit::Options& options() const { return options_; }
+  // With a minimum distance: the nearest pair of triangles the run looked at (frame -1: none).
+  const audit::Nearest& nearest() const { return nearest_; }
 
   // The replayable case files of the kept step violations: the query with its exact truth (1),
   // `file` set to its name under the --out folder (case_record of each with a case file).
@@ -85,6 +97,7 @@ class AuditReport {
   std::vector<AuditCounts> per_frame_;
   AuditCounts total_;
   std::vector<KeptViolation> kept_;
+  audit::Nearest nearest_;
   double audit_seconds_ = 0, wall_seconds_ = 0;
   long peak_bytes_ = 0;
 };
