@@ -10,8 +10,8 @@
 #include "fdh/audit/counts.hpp"
 #include "fdh/exact/distance.hpp"
 
-namespace fdh::audit {
-namespace {
+// A named namespace, not an anonymous one: the tests are built as one unity file.
+namespace fdh::audit::min_distance_tests {
 
 using testing::grid;
 using testing::join;
@@ -159,9 +159,9 @@ TEST(AuditMinDistance, AFineSheetDoesNotFloodAtBlendersDistance) {
   const AuditCounts c = run(cloth_only(m), frames, {}, 0.015, &reports);
   EXPECT_EQ(c.total(), 0);
   EXPECT_GT(c.excluded.rings, 0);
-  // The nearest pair looked at lies beyond D (the sheet's own neighbours are left out).
-  ASSERT_GE(reports[2].nearest.frame, 0);
-  EXPECT_GT(reports[2].nearest.lo, 0.015);
+  // Every pair within reach of D is a neighbour the rings leave out: no nearest pair, or one
+  // beyond D.
+  EXPECT_TRUE(reports[2].nearest.frame < 0 || reports[2].nearest.lo > 0.015);
 
   // Without the rule, a 30 x 30 corner of the same sheet alone floods at rest.
   const Mesh corner = grid(30, 2.0 / 199, {-1, -1, 1});
@@ -205,5 +205,4 @@ TEST(AuditMinDistance, RefusesABadDistance) {
   EXPECT_THROW(Auditor(cloth_only(grid(3, 1, {0, 0, 0})), o), std::invalid_argument);
 }
 
-}  // namespace
-}  // namespace fdh::audit
+}  // namespace fdh::audit::min_distance_tests
