@@ -167,10 +167,10 @@ def test_min_distance_agrees_with_the_program(tmp_path, d, status):
         assert "proximity" not in module
         assert "self-proximity" not in module["totals"]
     elif status == 1:
-        assert module["proximity"]["nearest"]["squared"] == "1/4096"
+        assert module["proximity"]["nearest"]["self"]["squared"] == "1/4096"
         assert module["totals"]["self-proximity"] > 0
         assert module["first_violation"]["kind"].endswith("-proximity")
     else:
         # The sheets' boxes are 1/64 apart, more than D: no pair within reach.
-        assert module["proximity"]["nearest"] is None
+        assert module["proximity"]["nearest"] == {"self": None, "obstacle": None}
         assert module["totals"]["self-proximity"] == 0

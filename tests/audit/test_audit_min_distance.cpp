@@ -85,9 +85,10 @@ TEST(AuditMinDistance, TwoSheetsAt1Over64AreAViolationAtDEqualToIt) {
       EXPECT_EQ(v.toi.t_hi, 1.0);
     }
   // The nearest pair: exactly 1/64 apart.
-  EXPECT_EQ(reports[1].nearest.squared, "1/4096");
-  EXPECT_LE(reports[1].nearest.lo, 0.015625);
-  EXPECT_GE(reports[1].nearest.hi, 0.015625);
+  EXPECT_EQ(reports[1].nearest[0].squared, "1/4096");
+  EXPECT_LE(reports[1].nearest[0].lo, 0.015625);
+  EXPECT_GE(reports[1].nearest[0].hi, 0.015625);
+  EXPECT_EQ(reports[1].nearest[1].frame, -1);  // no obstacle
 }
 
 TEST(AuditMinDistance, TwoSheetsAt1Over64AreCleanJustBelowIt) {
@@ -96,7 +97,7 @@ TEST(AuditMinDistance, TwoSheetsAt1Over64AreCleanJustBelowIt) {
   const AuditCounts c = run(cloth_only(s.mesh), s.frames, {}, 0.0156249, &reports);
   EXPECT_EQ(c.total(), 0);
   // The sheets' boxes are 1/64 apart, more than D: the broad phase looks at no pair.
-  EXPECT_EQ(reports[2].nearest.frame, -1);
+  EXPECT_EQ(reports[2].nearest[0].frame, -1);
 }
 
 // A sheet (the cloth) at z = 0 and an obstacle: a triangle standing on its tip, the tip rising
@@ -161,7 +162,7 @@ TEST(AuditMinDistance, AFineSheetDoesNotFloodAtBlendersDistance) {
   EXPECT_GT(c.excluded.rings, 0);
   // Every pair within reach of D is a neighbour the rings leave out: no nearest pair, or one
   // beyond D.
-  EXPECT_TRUE(reports[2].nearest.frame < 0 || reports[2].nearest.lo > 0.015);
+  EXPECT_TRUE(reports[2].nearest[0].frame < 0 || reports[2].nearest[0].lo > 0.015);
 
   // Without the rule, a 30 x 30 corner of the same sheet alone floods at rest.
   const Mesh corner = grid(30, 2.0 / 199, {-1, -1, 1});

@@ -70,7 +70,8 @@ TEST(AuditMinDistanceCommand, TheCertificateCarriesD) {
   const Json j = Json::parse(r.out);
   EXPECT_EQ(j["proximity"]["min_distance"], 0.015625);
   EXPECT_EQ(j["proximity"]["near_rule"]["rings"], 2);
-  EXPECT_EQ(j["proximity"]["nearest"]["squared"], "1/4096");
+  EXPECT_EQ(j["proximity"]["nearest"]["self"]["squared"], "1/4096");
+  EXPECT_EQ(j["proximity"]["nearest"]["obstacle"], nullptr);
   EXPECT_GT(j["totals"]["self-proximity"].get<long>(), 0);
   EXPECT_EQ(j["totals"]["self-intersection"], 0);
   EXPECT_TRUE(fs::exists(out / "first-violation.png"));

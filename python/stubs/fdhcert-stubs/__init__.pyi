@@ -133,19 +133,22 @@ class _AuditExcluded(TypedDict):
     first_frame: int
     first_frame_pairs: int
 
-class _AuditNearest(TypedDict):
+class _AuditNearestPair(TypedDict):
     frame: int
-    kind: str  # "self-proximity" or "obstacle-proximity"
     triangles: List[int]
     squared: str  # the exact squared distance, "p/q"
     distance_lo: float
     distance_hi: float
 
+class _AuditNearest(TypedDict):
+    self: Optional[_AuditNearestPair]  # the cloth against itself
+    obstacle: Optional[_AuditNearestPair]  # the cloth against the obstacles
+
 class _AuditProximity(TypedDict):
     min_distance: float
     near_rule: _AuditNearRule
     excluded: _AuditExcluded
-    nearest: Optional[_AuditNearest]
+    nearest: _AuditNearest
 
 class _AuditBase(TypedDict):
     clean: bool

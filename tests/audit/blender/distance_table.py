@@ -7,7 +7,8 @@ FOLDER holds one OBJ per frame (tests/audit/blender/bake_cloth.py writes them); 
 at each D (default Blender's 0.015 m and half of it, 0.0075 m) with the default rule on pairs near
 by construction. A frame keeps the self distance when neither it nor the step into it has a
 self- kind (intersection or proximity: cloth against cloth); the object distance likewise with
-the obstacle kinds. The nearest pair is the certificate's (its exact squared distance's bounds).
+the obstacle kinds. The nearest pairs are the certificate's (the lower bound of each exact
+distance), among the pairs within reach of D that the rule keeps.
 Prints the table; exit status 0, or 2 when an audit fails to run.
 """
 
@@ -42,13 +43,19 @@ def row(folder, d, c):
     obj_n = sum(n for k, n in t.items() if k.startswith(OBJECT))
     has_obstacle = c["obstacles"]["triangles"] > 0
     near = c["proximity"]["nearest"]
-    nearest = (f"{near['distance_lo']:.4g} m ({near['kind']}, frame {near['frame']})" if near
-               else "none within reach of D")
     ex = c["proximity"]["excluded"]
     return (f"| {folder} | {d:g} | {kept(per_frame, SELF)} of {frames} ({self_n} violations) | "
-            + (f"{kept(per_frame, OBJECT)} of {frames} ({obj_n} violations)" if has_obstacle
-               else "(no obstacle)")
-            + f" | {nearest} | {ex['rings']} + {ex['first_frame']} |")
+            + f"{nearest(near['self'])} | "
+            + (f"{kept(per_frame, OBJECT)} of {frames} ({obj_n} violations) | "
+               f"{nearest(near['obstacle'])}" if has_obstacle else "(no obstacle) | ")
+            + f" | {ex['rings']} + {ex['first_frame']} |")
+
+
+def nearest(n):
+    """The nearest pair's distance (its lower bound, exact to the digits shown) and frame."""
+    if n is None:
+        return "none within reach of D"
+    return f"{n['distance_lo']:.4g} m (frame {n['frame']})"
 
 
 def main():
@@ -57,9 +64,10 @@ def main():
     p.add_argument("folders", nargs="+")
     p.add_argument("--distance", type=float, action="append")
     a = p.parse_args()
-    print("| frames | D (m) | frames keeping the self distance | frames keeping the object "
-          "distance | nearest pair seen | tests left out (rings + first frame) |")
-    print("|---|---|---|---|---|---|")
+    print("| frames | D (m) | frames keeping the self distance | nearest cloth pair | frames "
+          "keeping the object distance | nearest cloth-obstacle pair | tests left out (rings + "
+          "first frame) |")
+    print("|---|---|---|---|---|---|---|")
     for folder in a.folders:
         for d in a.distance or (0.015, 0.0075):
             print(row(folder, d, audit(a.fdhcert, folder, d)), flush=True)

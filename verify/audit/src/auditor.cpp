@@ -204,7 +204,8 @@ FrameReport Auditor::Impl::frame(const std::vector<Vec3>& x, const std::vector<V
     near.set_first_frame(std::move(all.recorded));
     r.excluded.first_frame_pairs = near.first_frame_pairs();
   }
-  if (pass.d > 0) r.nearest = nearest_of(all.nearest, frames, topology, x, y);
+  if (pass.d > 0)
+    for (int i = 0; i < 2; ++i) r.nearest[i] = nearest_of(all.nearest[i], frames, topology, x, y);
   r.step = all.step;
   r.inside = inside->count(x, cloth.owned_vertices, y);
   r.violations = std::move(all.kept);

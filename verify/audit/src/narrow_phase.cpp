@@ -207,8 +207,8 @@ void frame_within(const Triangle3& a, const Triangle3& b, ViolationKind kind, in
   } else if (excluded(name, pass, part)) {
     return;
   }
-  part.nearest = std::min(
-      part.nearest, NearestCandidate{distance_estimate(a, b), int(proximity_kind(kind)), ta, tb});
+  NearestCandidate& n = part.nearest[kind != ViolationKind::SelfIntersection];
+  n = std::min(n, NearestCandidate{distance_estimate(a, b), int(proximity_kind(kind)), ta, tb});
   if (pass.record || !within(a, b, pass.d)) return;
   ++(kind == ViolationKind::SelfIntersection ? part.self_proximity : part.obstacle_proximity);
   keep_frame(a, b, -1, proximity_kind(kind), ta, tb, pass, part);
@@ -225,8 +225,10 @@ void frame_pair(const Triangle3& a, const Triangle3& b, ViolationKind kind, int 
     return;
   }
   if (pass.d > 0 && pass.record && !name.rings) part.recorded.push_back(name.key);
-  if (pass.d > 0 && !pass.record && !excluded(name, pass, part, true))
-    part.nearest = std::min(part.nearest, NearestCandidate{0, int(proximity_kind(kind)), ta, tb});
+  if (pass.d > 0 && !pass.record && !excluded(name, pass, part, true)) {
+    NearestCandidate& n = part.nearest[kind != ViolationKind::SelfIntersection];
+    n = std::min(n, NearestCandidate{0, int(proximity_kind(kind)), ta, tb});
+  }
   ++count;
   keep_frame(a, b, e, kind, ta, tb, pass, part);
 }
@@ -317,7 +319,7 @@ void Part::merge(Part& other, int keep) {
   self_proximity += other.self_proximity, obstacle_proximity += other.obstacle_proximity;
   excluded.add(other.excluded);
   recorded.insert(recorded.end(), other.recorded.begin(), other.recorded.end());
-  nearest = std::min(nearest, other.nearest);
+  for (int i = 0; i < 2; ++i) nearest[i] = std::min(nearest[i], other.nearest[i]);
   for (Violation& v : other.kept) add(v, keep);
 }
 

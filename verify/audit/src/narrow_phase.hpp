@@ -47,7 +47,7 @@ struct Part {
   long self_proximity = 0, obstacle_proximity = 0;
   NearExcluded excluded;
   std::vector<std::uint64_t> recorded;  // Pass::record: the pairs within D (NearPairs::key)
-  NearestCandidate nearest;             // the nearest triangle pair looked at
+  NearestCandidate nearest[2];          // the nearest triangle pairs looked at: self, obstacle
   std::vector<Violation> kept;
   void add(Violation v, int keep);
   void merge(Part& other, int keep);

@@ -108,9 +108,11 @@ bool AuditReport::add(const audit::FrameReport& r, const FramePlaces* step_start
   per_frame_.push_back(c);
   total_.add(c);
   audit_seconds_ += r.seconds;
-  // The nearest pair of the run: the least lower bound, the earliest frame on ties.
-  if (r.nearest.frame >= 0 && (nearest_.frame < 0 || r.nearest.lo < nearest_.lo))
-    nearest_ = r.nearest;
+  // The nearest pairs of the run: the least lower bound, the earliest frame on ties.
+  for (int i = 0; i < 2; ++i) {
+    const audit::Nearest& n = r.nearest[std::size_t(i)];
+    if (n.frame >= 0 && (nearest_[i].frame < 0 || n.lo < nearest_[i].lo)) nearest_[i] = n;
+  }
   for (const audit::Violation& v : r.violations) {
     if (int(kept_.size()) >= keep_) break;
     KeptViolation k{v, r.frame, {}, {}};

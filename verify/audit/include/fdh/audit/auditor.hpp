@@ -109,7 +109,7 @@ struct StepCounts {  // contacts during one step
   }
 };
 
-// The nearest pair of triangles seen in a frame (Options::min_distance > 0): among the pairs
+// A nearest pair of triangles seen in a frame (Options::min_distance > 0): among the pairs
 // the proximity test looked at (their boxes within D, not excluded by the near rule), the one
 // nearest by a floating-point estimate, with its distance exactly (fdh/exact/distance.hpp).
 struct Nearest {
@@ -142,7 +142,9 @@ struct FrameReport {
   long self_proximity = 0, obstacle_proximity = 0;          // within D in the frame
   long static_candidates = 0;                               // triangle pairs tested
   NearExcluded excluded;  // proximity tests left out by the near rule (frame and step)
-  Nearest nearest;        // with min_distance > 0
+  // With min_distance > 0: the nearest pair of the cloth against itself ([0]) and against the
+  // obstacles ([1]).
+  std::array<Nearest, 2> nearest;
   // Cloth vertices (those in a triangle) strictly inside a closed obstacle at the frame: each
   // connected piece of the obstacles that is a closed manifold mesh, exactly (ray parity,
   // fdh/exact/inside.hpp; on the surface is not inside); open pieces have no inside. A cloth

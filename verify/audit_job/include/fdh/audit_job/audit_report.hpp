@@ -74,8 +74,10 @@ class AuditReport {
   const AuditCounts& totals() const { return total_; }
   const std::vector<KeptViolation>& kept() const { return kept_; }
   const audit::Options& options() const { return options_; }
-  // With a minimum distance: the nearest pair of triangles the run looked at (frame -1: none).
-  const audit::Nearest& nearest() const { return nearest_; }
+  const audit::Topology& topology() const { return topology_; }
+  // With a minimum distance: the nearest pair of triangles the run looked at, of the cloth
+  // against itself (0) and against the obstacles (1); frame -1: none.
+  const audit::Nearest& nearest(int i) const { return nearest_[std::size_t(i)]; }
 
   // The replayable case files of the kept step violations: the query with its exact truth (1),
   // `file` set to its name under the --out folder (case_record of each with a case file).
@@ -97,7 +99,7 @@ class AuditReport {
   std::vector<AuditCounts> per_frame_;
   AuditCounts total_;
   std::vector<KeptViolation> kept_;
-  audit::Nearest nearest_;
+  std::array<audit::Nearest, 2> nearest_;
   double audit_seconds_ = 0, wall_seconds_ = 0;
   long peak_bytes_ = 0;
 };
