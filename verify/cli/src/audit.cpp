@@ -51,9 +51,10 @@ const char* const kAuditFooter =
     R"(Prints a summary line and a line per frame with violations (--json: the
 certificate as one JSON object, docs/formats.md "audit output"). --out DIR
 writes DIR/audit.json, DIR/audit.md, DIR/first-violation.png (the frame of the
-first violation, its primitives' triangles in blue) and DIR/cases/*.vf, one
-replayable case per kept step violation (`fdhcert classify` / `replay`, truth
-1). See docs/audit.md.
+first violation, its primitives' triangles in blue, yellow for proximity) and
+DIR/cases/*.vf, one replayable case per kept step violation (`fdhcert
+classify` / `replay`, truth 1; a proximity's at `min-distance D`). See
+docs/audit.md.
 Exit status: 0 clean; 1 a violation; 2 bad input (FILE:LINE: what; nothing is
 written): a frame whose faces differ from the first's, a non-manifold cloth, a
 degenerate face, a coordinate that is not a finite number, a file past the
