@@ -260,10 +260,13 @@ std::string AuditReport::markdown() const {
   md += "| kind | count |\n|---|---|\n";
   for (const ViolationKind k : kinds_of(options_))
     md += fmt::format("| {} | {} |\n", audit::to_string(k), count_of(total_, k));
-  if (options_.min_distance > 0) md += "\n" + proximity_markdown(*this) + "\n";
+  if (options_.min_distance > 0) md += "\n" + proximity_markdown(*this);
   if (!kept_.empty()) {
     // With case files the run writes the picture beside this file (`audit --out`).
-    if (case_files_) md += "\n![the first violation, its triangles in blue](first-violation.png)\n";
+    const bool near = audit::is_proximity(kept_.front().violation.kind);
+    if (case_files_)
+      md += fmt::format("\n![the first violation, its triangles in {}](first-violation.png)\n",
+                        near ? "yellow" : "blue");
     md += fmt::format("\n## The first {} violations, earliest first\n\n", kept_.size());
     md += "| # | what | where | case file |\n|---|---|---|---|\n";
     for (std::size_t i = 0; i < kept_.size(); ++i) {
