@@ -8,6 +8,9 @@
 //   vertex-face and edge-edge CCD, `robust` with its exact fallback), cloth against itself and
 //   against the obstacles (cloth vertices against obstacle triangles, obstacle vertices against
 //   cloth triangles, cloth edges against obstacle edges).
+// With a minimum distance D (Options::min_distance, `audit --min-distance`), also every such
+// pair that comes within distance D without meeting (the proximity kinds), but for the pairs
+// near by construction (Options::near_rings, near_first_frame; near_pairs.hpp).
 // Frames are given one at a time (two in memory), so a long sequence streams. The first frame
 // also builds the trees (verify/audit/src/trees.hpp), which later frames refit.
 // Touching counts as meeting, everywhere: this engine is the one place that decides it (a
