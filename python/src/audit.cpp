@@ -93,7 +93,8 @@ class ArrayFrames : public verify::FrameSource {
 
 py::object audit(const py::object& frames_in, const py::object& faces,
                  const py::object& obstacles_in, const py::object& obstacle_faces, int k,
-                 int threads, int keep) {
+                 int threads, int keep, double min_distance, int near_rings,
+                 bool near_first_frame) {
   // Coordinates refused where float64 would change them (arguments.cpp).
   const Points frames = points_of(frames_in, "frames");
   std::optional<Points> obstacles;
@@ -112,6 +113,8 @@ py::object audit(const py::object& frames_in, const py::object& faces,
   }
   verify::AuditOptions opt;
   opt.k = k, opt.threads = threads, opt.keep = keep;
+  opt.min_distance = min_distance, opt.near_rings = near_rings;
+  opt.near_first_frame = near_first_frame;
   ArrayFrames source(frames, obstacles, std::move(t));
   std::optional<verify::AuditResult> result;
   {
@@ -124,15 +127,20 @@ py::object audit(const py::object& frames_in, const py::object& faces,
 }  // namespace
 
 void add_audit(py::module_& m) {
-  m.def("audit", &audit, py::arg("frames"), py::arg("faces"), py::arg("obstacles") = py::none(),
-        py::arg("obstacle_faces") = py::none(), py::arg("k") = 18, py::arg("threads") = 0,
-        py::arg("keep") = 16,
-        "Certifies a sequence of frames as `fdhcert audit --json` does and returns the same "
-        "dict: frames F×N×3 (float64), faces M×3 (indices into a frame's N vertices), "
-        "obstacles P×3 (fixed) or F×P×3 (one per frame) with obstacle_faces Q×3. Decides "
-        "exactly whether two cloth triangles sharing no vertex intersect or a cloth triangle "
-        "meets an obstacle's in a frame, and whether a vertex passes through a triangle or an "
-        "edge through an edge during a step (every vertex moving linearly). docs/audit.md.");
+  m.def(
+      "audit", &audit, py::arg("frames"), py::arg("faces"), py::arg("obstacles") = py::none(),
+      py::arg("obstacle_faces") = py::none(), py::arg("k") = 18, py::arg("threads") = 0,
+      py::arg("keep") = 16, py::arg("min_distance") = 0.0, py::arg("near_rings") = 2,
+      py::arg("near_first_frame") = true,
+      "Certifies a sequence of frames as `fdhcert audit --json` does and returns the same "
+      "dict: frames F×N×3 (float64), faces M×3 (indices into a frame's N vertices), "
+      "obstacles P×3 (fixed) or F×P×3 (one per frame) with obstacle_faces Q×3. Decides "
+      "exactly whether two cloth triangles sharing no vertex intersect or a cloth triangle "
+      "meets an obstacle's in a frame, and whether a vertex passes through a triangle or an "
+      "edge through an edge during a step (every vertex moving linearly). With min_distance D > 0, "
+      "also the pairs within distance D without meeting (the proximity kinds; near_rings and "
+      "near_first_frame: the rule on pairs near by construction, as --near-rings and "
+      "--near-first-frame). docs/audit.md.");
 }
 
 }  // namespace fdh::python

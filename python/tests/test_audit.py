@@ -137,3 +137,40 @@ def test_refuses_what_it_would_change():
     with pytest.raises(ValueError, match="integer"):
         fdhcert.audit(frames, faces.astype(np.float64) + 0.5)
     assert fdhcert.audit(frames.astype(np.float32), faces)["frames"] == 2
+
+
+def two_sheets(n=6):
+    """Two n×n sheets, the second 0.5 above the first in frame 0 and exactly 1/64 above it in
+    frames 1 and 2 (issue 31)."""
+    verts, faces = grid(n)
+    both = np.concatenate([verts, verts + [0, 0, 0.5]])
+    near = both.copy()
+    near[n * n:, 2] = 2.0**-6
+    return np.array([both, near, near]), np.concatenate([faces, faces + n * n])
+
+
+@pytest.mark.parametrize("d, status", [(None, 0), (0.015625, 1), (0.0156249, 0)])
+def test_min_distance_agrees_with_the_program(tmp_path, d, status):
+    frames, faces = two_sheets()
+    (tmp_path / "frames").mkdir()
+    for f in range(3):
+        write_obj(tmp_path / "frames" / f"f{f}.obj", frames[f], faces)
+    args = [FDHCERT, "audit", str(tmp_path / "frames"), "--json"]
+    if d is not None:
+        args += ["--min-distance", repr(d)]
+    r = subprocess.run(args, capture_output=True, text=True)
+    assert r.returncode == status, r.stderr
+    module = fdhcert.audit(frames, faces, min_distance=d or 0.0)
+    assert comparable(module) == comparable(json.loads(r.stdout))
+    assert module["clean"] == (status == 0)
+    if d is None:
+        assert "proximity" not in module
+        assert "self-proximity" not in module["totals"]
+    elif status == 1:
+        assert module["proximity"]["nearest"]["self"]["squared"] == "1/4096"
+        assert module["totals"]["self-proximity"] > 0
+        assert module["first_violation"]["kind"].endswith("-proximity")
+    else:
+        # The sheets' boxes are 1/64 apart, more than D: no pair within reach.
+        assert module["proximity"]["nearest"] == {"self": None, "obstacle": None}
+        assert module["totals"]["self-proximity"] == 0

@@ -5,6 +5,10 @@
 #include <CGAL/squared_distance_3.h>
 
 #include <array>
+#include <cmath>
+#include <sstream>
+
+#include "fdh/exact/triangle_triangle.hpp"
 
 namespace fdh::exact {
 namespace {
@@ -42,7 +46,51 @@ FT point_triangle(const Point& p, const Point& a, const Point& b, const Point& c
   return d;
 }
 
+Point point_of(const Vec3& v) {
+  return {v.x, v.y, v.z};
+}
+
+// The squared distance of two closed triangles that do not meet: every vertex against the
+// other triangle, every edge against every edge of the other.
+FT apart_squared(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b) {
+  std::array<Point, 3> p, q;
+  for (int i = 0; i < 3; ++i) p[i] = point_of(a[i]), q[i] = point_of(b[i]);
+  FT d = point_triangle(p[0], q[0], q[1], q[2]);
+  const auto least = [&d](const FT& e) {
+    if (e < d) d = e;
+  };
+  for (int i = 0; i < 3; ++i) {
+    if (i > 0) least(point_triangle(p[i], q[0], q[1], q[2]));
+    least(point_triangle(q[i], p[0], p[1], p[2]));
+    for (int j = 0; j < 3; ++j) least(segment_segment(p[i], p[(i + 1) % 3], q[j], q[(j + 1) % 3]));
+  }
+  return d;
+}
+
+FT squared_distance_of(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b) {
+  return triangles_intersect(a, b) ? FT(0) : apart_squared(a, b);
+}
+
 }  // namespace
+
+TriangleDistance triangle_distance(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b) {
+  const FT d2 = squared_distance_of(a, b);
+  TriangleDistance out;
+  std::ostringstream os;
+  os << d2;
+  out.squared = os.str();
+  // The square roots of an enclosure of d2, each pushed one double outward (sqrt rounds to
+  // nearest).
+  const std::pair<double, double> i = CGAL::to_interval(d2);
+  out.lo = i.first > 0 ? std::nextafter(std::sqrt(i.first), 0.0) : 0.0;
+  out.hi = i.second > 0 ? std::nextafter(std::sqrt(i.second), HUGE_VAL) : 0.0;
+  return out;
+}
+
+bool triangles_within(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b, double d) {
+  const FT delta(d);
+  return squared_distance_of(a, b) <= delta * delta;
+}
 
 int compare_distance_at(const Query& q, double t) {
   const FT time(t), delta(q.min_distance);

@@ -124,7 +124,33 @@ class _AuditCost(TypedDict):
     peak_memory_bytes: int
     threads: int
 
-class _Audit(TypedDict):
+class _AuditNearRule(TypedDict):
+    rings: int
+    first_frame: bool
+
+class _AuditExcluded(TypedDict):
+    rings: int
+    first_frame: int
+    first_frame_pairs: int
+
+class _AuditNearestPair(TypedDict):
+    frame: int
+    triangles: List[int]
+    squared: str  # the exact squared distance, "p/q"
+    distance_lo: float
+    distance_hi: float
+
+class _AuditNearest(TypedDict):
+    self: Optional[_AuditNearestPair]  # the cloth against itself
+    obstacle: Optional[_AuditNearestPair]  # the cloth against the obstacles
+
+class _AuditProximity(TypedDict):
+    min_distance: float
+    near_rule: _AuditNearRule
+    excluded: _AuditExcluded
+    nearest: _AuditNearest
+
+class _AuditBase(TypedDict):
     clean: bool
     summary: str
     frames: int
@@ -139,6 +165,9 @@ class _Audit(TypedDict):
     per_frame: List[Dict[str, int]]  # "frame" and the counts per kind
     kept: List[_AuditViolation]
     cost: _AuditCost
+
+class _Audit(_AuditBase, total=False):
+    proximity: _AuditProximity  # with min_distance > 0 only
 
 def methods() -> List[str]: ...
 def min_distance_methods() -> List[str]: ...
@@ -197,4 +226,7 @@ def audit(
     k: int = 18,
     threads: int = 0,
     keep: int = 16,
+    min_distance: float = 0.0,
+    near_rings: int = 2,
+    near_first_frame: bool = True,
 ) -> _Audit: ...

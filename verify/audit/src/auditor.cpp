@@ -11,6 +11,8 @@
 
 #include "inside_count.hpp"
 #include "mesh_parts.hpp"
+#include "near_pairs.hpp"
+#include "nearest.hpp"
 #include "trees.hpp"
 
 namespace fdh::audit {
@@ -31,12 +33,42 @@ const char* to_string(ViolationKind k) {
       return "obstacle-vertex-cloth";
     case ViolationKind::ClothEdgeObstacleEdge:
       return "cloth-edge-obstacle-edge";
+    case ViolationKind::SelfProximity:
+      return "self-proximity";
+    case ViolationKind::ObstacleProximity:
+      return "obstacle-proximity";
+    case ViolationKind::SelfVertexFaceProximity:
+      return "self-vertex-face-proximity";
+    case ViolationKind::SelfEdgeEdgeProximity:
+      return "self-edge-edge-proximity";
+    case ViolationKind::ClothVertexObstacleProximity:
+      return "cloth-vertex-obstacle-proximity";
+    case ViolationKind::ObstacleVertexClothProximity:
+      return "obstacle-vertex-cloth-proximity";
+    case ViolationKind::ClothEdgeObstacleEdgeProximity:
+      return "cloth-edge-obstacle-edge-proximity";
   }
   return "?";
 }
 
+bool is_proximity(ViolationKind k) {
+  return k >= ViolationKind::SelfProximity;
+}
+
+// The proximity kinds follow the contact kinds in the same order.
+ViolationKind contact_kind(ViolationKind k) {
+  if (!is_proximity(k)) return k;
+  return ViolationKind(int(k) - int(ViolationKind::SelfProximity));
+}
+
+ViolationKind proximity_kind(ViolationKind k) {
+  if (is_proximity(k)) return k;
+  return ViolationKind(int(k) + int(ViolationKind::SelfProximity));
+}
+
 bool is_step(ViolationKind k) {
-  return k != ViolationKind::SelfIntersection && k != ViolationKind::ObstacleIntersection;
+  const ViolationKind c = contact_kind(k);
+  return c != ViolationKind::SelfIntersection && c != ViolationKind::ObstacleIntersection;
 }
 
 long StepCounts::*counter_of(ViolationKind k) {
@@ -51,6 +83,16 @@ long StepCounts::*counter_of(ViolationKind k) {
       return &StepCounts::obstacle_vertex_cloth;
     case ViolationKind::ClothEdgeObstacleEdge:
       return &StepCounts::cloth_edge_obstacle_edge;
+    case ViolationKind::SelfVertexFaceProximity:
+      return &StepCounts::self_vertex_face_near;
+    case ViolationKind::SelfEdgeEdgeProximity:
+      return &StepCounts::self_edge_edge_near;
+    case ViolationKind::ClothVertexObstacleProximity:
+      return &StepCounts::cloth_vertex_obstacle_near;
+    case ViolationKind::ObstacleVertexClothProximity:
+      return &StepCounts::obstacle_vertex_cloth_near;
+    case ViolationKind::ClothEdgeObstacleEdgeProximity:
+      return &StepCounts::cloth_edge_obstacle_edge_near;
     default:
       return nullptr;
   }
@@ -62,6 +104,7 @@ struct Auditor::Impl {
   MeshParts cloth, obstacle;
   std::unique_ptr<Trees> trees;
   std::unique_ptr<InsideCount> inside;              // the cloth's particles in the closed obstacles
+  NearPairs near;                                   // with Options::min_distance > 0
   std::vector<Vec3> cloth_before, obstacle_before;  // the previous frame
   int given = 0;                                    // frames given so far
   int first_frame = 0;                   // the number of the first (a part's, start_part)
@@ -92,9 +135,19 @@ Auditor::Auditor(Topology topology, Options options) : impl_(std::make_unique<Im
     throw std::invalid_argument("toi_width must be in [2^-52, 1]");
   if (topology.cloth_vertices < 0 || topology.obstacle_vertices < 0)
     throw std::invalid_argument("a vertex count is negative");
+  if (!(options.min_distance >= 0 && std::isfinite(options.min_distance)))
+    throw std::invalid_argument("min_distance must be a finite number >= 0");
+  if (options.near_rings < 0) throw std::invalid_argument("near_rings must be >= 0");
+  // Primitive indices go into NearPairs' keys (30 bits each).
+  if (std::max<std::size_t>({std::size_t(topology.cloth_vertices),
+                             std::size_t(topology.obstacle_vertices), 3 * topology.cloth.size(),
+                             3 * topology.obstacle.size()}) >= (std::size_t(1) << 30))
+    throw std::invalid_argument("more than 2^30 vertices, edges or triangles");
   impl_->cloth = mesh_parts(topology.cloth_vertices, topology.cloth, "cloth");
   impl_->obstacle = mesh_parts(topology.obstacle_vertices, topology.obstacle, "obstacle");
   impl_->inside = std::make_unique<InsideCount>(impl_->obstacle.tris);
+  if (options.min_distance > 0)
+    impl_->near = NearPairs(impl_->cloth, topology.cloth_vertices, options.near_rings);
   impl_->topology = std::move(topology);
   impl_->options = options;
   if (options.threads > 0) impl_->arena.emplace(options.threads);
@@ -147,6 +200,12 @@ FrameReport Auditor::Impl::frame(const std::vector<Vec3>& x, const std::vector<V
   pass.o1 = &y;
   pass.keep = options.keep;
   pass.toi_width = options.toi_width;
+  pass.d = options.min_distance;
+  pass.near = &near;
+  // The first frame with the near rule's first-frame part: a pass that does not move, noting
+  // the pairs within D (and counting what a frame counts).
+  pass.record = r.frame == 0 && pass.d > 0 && options.near_first_frame;
+  pass.ccd = pass.ccd || pass.record;
   if (!trees) trees = make_trees(options.k, cloth, obstacle, x, y);
   if (pass.ccd) vertex_boxes(pass);
   std::vector<Part> parts = trees->run(pass);
@@ -157,6 +216,14 @@ FrameReport Auditor::Impl::frame(const std::vector<Vec3>& x, const std::vector<V
   r.self_intersections = all.self_intersections;
   r.obstacle_intersections = all.obstacle_intersections;
   r.static_candidates = all.static_candidates;
+  r.self_proximity = all.self_proximity, r.obstacle_proximity = all.obstacle_proximity;
+  r.excluded = all.excluded;
+  if (pass.record) {
+    near.set_first_frame(std::move(all.recorded));
+    r.excluded.first_frame_pairs = near.first_frame_pairs();
+  }
+  if (pass.d > 0)
+    for (int i = 0; i < 2; ++i) r.nearest[i] = nearest_of(all.nearest[i], r.frame, topology, x, y);
   r.step = all.step;
   r.inside = inside->count(x, cloth.owned_vertices, y);
   r.violations = std::move(all.kept);

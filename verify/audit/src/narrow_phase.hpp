@@ -5,10 +5,13 @@
 // triangle-triangle test.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "fdh/audit/auditor.hpp"
 #include "mesh_parts.hpp"
+#include "near_pairs.hpp"
+#include "nearest.hpp"
 
 namespace fdh::audit {
 
@@ -26,6 +29,12 @@ struct Pass {
   std::vector<Aabb> cbox, obox;  // each vertex's box over the step (exact: min and max)
   int keep = 0;
   double toi_width = kDefaultToiWidth;
+  // The minimum distance D (Options::min_distance; 0: contact only) and the pairs near by
+  // construction. With `record` (the first frame, Options::near_first_frame) the pass only
+  // notes the pairs within D (c0 == c1: a step that does not move) in Part::recorded.
+  double d = 0;
+  const NearPairs* near = nullptr;
+  bool record = false;
 };
 
 // The boxes of pass.cbox and pass.obox, on every core.
@@ -35,6 +44,10 @@ void vertex_boxes(Pass& pass);
 struct Part {
   StepCounts step;
   long self_intersections = 0, obstacle_intersections = 0, static_candidates = 0;
+  long self_proximity = 0, obstacle_proximity = 0;
+  NearExcluded excluded;
+  std::vector<std::uint64_t> recorded;  // Pass::record: the pairs within D (NearPairs::key)
+  NearestCandidate nearest[2];          // the nearest triangle pairs looked at: self, obstacle
   std::vector<Violation> kept;
   void add(Violation v, int keep);
   void merge(Part& other, int keep);

@@ -25,14 +25,29 @@ inline Aabb joined(const Aabb& a, const Aabb& b) {
   return {{min_of(a.lo.x, b.lo.x), min_of(a.lo.y, b.lo.y), min_of(a.lo.z, b.lo.z)},
           {max_of(a.hi.x, b.hi.x), max_of(a.hi.y, b.hi.y), max_of(a.hi.z, b.hi.z)}};
 }
-// Apart along an axis at both ends, the same way round: nothing under one node meets anything
-// under the other during the step (narrow_phase.cpp's apart_all_step, for whole subtrees).
-inline bool apart_all_step(const Ends& a, const Ends& b) {
+// Apart along an axis by more than d at both ends, the same way round: nothing under one node
+// comes within d of anything under the other during the step (narrow_phase.cpp's
+// apart_all_step, for whole subtrees; exact as it is).
+inline bool apart_all_step(const Ends& a, const Ends& b, double d) {
   for (int i = 0; i < 3; ++i)
-    if ((a.at0.lo[i] > b.at0.hi[i] && a.at1.lo[i] > b.at1.hi[i]) ||
-        (b.at0.lo[i] > a.at0.hi[i] && b.at1.lo[i] > a.at1.hi[i]))
+    if ((a.at0.lo[i] - b.at0.hi[i] > d && a.at1.lo[i] - b.at1.hi[i] > d) ||
+        (b.at0.lo[i] - a.at0.hi[i] > d && b.at1.lo[i] - a.at1.hi[i] > d))
       return true;
   return false;
+}
+
+// The k-DOPs' overlap grown by d: two points within distance d project within |n| d of each
+// other on a slab's direction n (|n| = 1 on the axes, sqrt 2 or sqrt 3 on the diagonals, both
+// below 2), so boxes apart by more than that on a slab hold no pair within d. A difference that
+// rounds above the margin is above it exactly (rounding is monotonic). d = 0: kdop.hpp's own.
+template <int K>
+bool overlap_within(const Kdop<K>& a, const Kdop<K>& b, double d) {
+  if (d <= 0) return overlap(a, b);
+  for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
+    const double m = Kdop<K>::is_exact_slab(s) ? d : 2 * d;
+    if (b.lo[s] - a.hi[s] > m || a.lo[s] - b.hi[s] > m) return false;
+  }
+  return true;
 }
 
 // A task: two nodes whose leaf pairs are to be found, cloth with cloth or cloth with obstacle.
@@ -114,10 +129,13 @@ class TreesK : public Trees {
     const bool obstacle_moves = pass.ccd && *pass.o0 != *pass.o1;
     update(otree_, osub_, *pass.o0, obstacle_moves ? *pass.o1 : none, oends_, false);
     const std::vector<Vec3>& x1 = moves ? *pass.c1 : *pass.c0;
+    d_ = pass.d;
     std::vector<Task> tasks;
     if (pass.self) tasks = self_tasks(*pass.c0, x1);
-    for (const auto& [a, b] : frontier(
-             ctree_, otree_, 256, [](const Kdop<K>&p, const Kdop<K>&q) { return overlap(p, q); }))
+    const double d = d_;
+    for (const auto& [a, b] : frontier(ctree_, otree_, 256, [d](const Kdop<K>&p, const Kdop<K>&q) {
+           return overlap_within(p, q, d);
+         }))
       tasks.push_back({a, b, true});
     const std::size_t grain = std::max<std::size_t>(1, (tasks.size() + kChunks - 1) / kChunks);
     return parallel::parts_in_order(tasks.size(), grain, Part{},
@@ -168,8 +186,10 @@ class TreesK : public Trees {
 
   // Whether the node's patch cannot touch itself during the step (normal_cone.hpp): its
   // normals lean one way and its one boundary loop is star-shaped around a moving centre.
+  // Not within a minimum distance: a patch that cannot touch itself can still come within D of
+  // itself (a tight fold), so with D > 0 no node is flat.
   bool flat(int node, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) const {
-    if (!loops_.has_loop(node)) return false;
+    if (d_ > 0 || !loops_.has_loop(node)) return false;
     const int bit = best_direction(positive_directions(normals_[node]), lean_[node]);
     if (bit < 0) return false;
     thread_local std::vector<int> contour;
@@ -229,7 +249,7 @@ class TreesK : public Trees {
   // small enough for one chunk, so that no chunk holds most of the work.
   void split(int a, int b, std::vector<Task>& out) const {
     const auto& nodes = ctree_.nodes();
-    if (!overlap(nodes[a].box, nodes[b].box)) return;
+    if (!overlap_within(nodes[a].box, nodes[b].box, d_)) return;
     const int limit = std::max<int>(64, int(nodes.size() / kChunks));
     std::pair<int, int> first, second;
     if (ends_[a] - a + ends_[b] - b > limit && split_pair(ctree_, ctree_, a, b, first, second)) {
@@ -252,7 +272,8 @@ class TreesK : public Trees {
     while (!stack.empty()) {
       const auto [i, j] = stack.back();
       stack.pop_back();
-      if (!overlap(A[i].box, B[j].box) || apart_all_step(cends_[i], bends[j])) continue;
+      if (!overlap_within(A[i].box, B[j].box, d_) || apart_all_step(cends_[i], bends[j], d_))
+        continue;
       std::pair<int, int> first, second;
       if (split_pair(ctree_, b, i, j, first, second)) {
         stack.push_back(second);
@@ -278,6 +299,7 @@ class TreesK : public Trees {
   std::vector<NormalBox> normals_;
   std::vector<Vec3> lean_;
   long flat_count_ = 0;
+  double d_ = 0;  // the pass's minimum distance (Pass::d)
 };
 
 std::unique_ptr<Trees> make_trees(int k, const MeshParts& cloth, const MeshParts& obstacle,

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -29,11 +30,17 @@ void AuditOptions::validate() const {
     throw std::invalid_argument(fmt::format("up must be 0, 1 or 2 (x, y, z), not {}", up));
   if (part < 0 || parts < 1 || part > parts)
     throw std::invalid_argument(fmt::format("part {}/{}: takes I/N with 1 <= I <= N", part, parts));
+  if (!(min_distance >= 0 && std::isfinite(min_distance)))
+    throw std::invalid_argument(
+        fmt::format("min_distance must be a finite number >= 0, not {}", min_distance));
+  if (near_rings < 0 || near_rings > 100)
+    throw std::invalid_argument(fmt::format("near_rings must be in [0, 100], not {}", near_rings));
 }
 
 audit::Options AuditOptions::engine() const {
   audit::Options a;
   a.k = k, a.keep = keep, a.threads = threads;
+  a.min_distance = min_distance, a.near_rings = near_rings, a.near_first_frame = near_first_frame;
   return a;
 }
 
@@ -104,7 +111,7 @@ struct Placed {
 };
 
 std::string detail_of(const audit::FrameReport& r) {
-  const long n = r.self_intersections + r.obstacle_intersections + r.step.total();
+  const long n = audit::counts_of(r).total();
   return n ? fmt::format("{} violations in frame {}", n, r.frame) : std::string();
 }
 

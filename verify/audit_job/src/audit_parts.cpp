@@ -48,11 +48,16 @@ ReadPart read_part(const std::string& dir) {
 
 MergedAudit merge_audit_parts(const std::vector<std::string>& dirs) {
   if (dirs.empty()) throw std::invalid_argument("--merge needs the parts' folders");
-  std::vector<ReadPart> parts;
-  for (const std::string& d : dirs) parts.push_back(read_part(d));
-  std::stable_sort(parts.begin(), parts.end(), [](const ReadPart& a, const ReadPart& b) {
-    return a.report.part()->index < b.report.part()->index;
+  std::vector<ReadPart> read;
+  for (const std::string& d : dirs) read.push_back(read_part(d));
+  // In the parts' order (given order on ties); indices sorted, so no ReadPart is moved twice.
+  std::vector<std::size_t> order(read.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return read[a].report.part()->index < read[b].report.part()->index;
   });
+  std::vector<ReadPart> parts;
+  for (const std::size_t i : order) parts.push_back(std::move(read[i]));
   const AuditPart& first = *parts.front().report.part();
   if (first.index != 1)
     throw InputError(

@@ -24,10 +24,19 @@ constexpr ViolationKind kKinds[] = {
     ViolationKind::ClothVertexObstacle,  ViolationKind::ObstacleVertexCloth,
     ViolationKind::ClothEdgeObstacleEdge};
 
+// The kinds a run counts: the proximity kinds only with a minimum distance (so that an audit
+// without one writes what it wrote before they existed).
+std::vector<ViolationKind> kinds_of(const audit::Options& o) {
+  std::vector<ViolationKind> out(std::begin(kKinds), std::end(kKinds));
+  if (o.min_distance > 0)
+    for (const ViolationKind k : kKinds) out.push_back(audit::proximity_kind(k));
+  return out;
+}
+
 // Which of a step violation's four query vertices are the cloth's (the rest are the
 // obstacles'), in fdh::Query's order (vertex-face: v f0 f1 f2; edge-edge: a0 a1 b0 b1).
 std::array<bool, 4> cloth_vertices_of(ViolationKind k) {
-  switch (k) {
+  switch (audit::contact_kind(k)) {
     case ViolationKind::ClothVertexObstacle:
       return {true, false, false, false};
     case ViolationKind::ObstacleVertexCloth:
@@ -43,7 +52,7 @@ std::array<bool, 4> cloth_vertices_of(ViolationKind k) {
 std::vector<std::string> places_of(const audit::Violation& v, const FramePlaces& p) {
   std::vector<std::string> out;
   if (!audit::is_step(v.kind)) {
-    const bool self = v.kind == ViolationKind::SelfIntersection;
+    const bool self = audit::contact_kind(v.kind) == ViolationKind::SelfIntersection;
     if (!p.cloth_tris || !(self ? p.cloth_tris : p.obstacle_tris)) return out;
     out.push_back(p.cloth_tris->at(v.triangles[0]));
     out.push_back((self ? p.cloth_tris : p.obstacle_tris)->at(v.triangles[1]));
@@ -74,9 +83,9 @@ std::string describe(const audit::Violation& v) {
 }
 
 // "2 self-intersection; in the step from 3: 1 self-vertex-face": a frame's nonzero counts.
-std::string frame_counts(const AuditCounts& c, int frame) {
+std::string frame_counts(const AuditCounts& c, int frame, const std::vector<ViolationKind>& kinds) {
   std::string in_frame, in_step;
-  for (const ViolationKind k : kKinds) {
+  for (const ViolationKind k : kinds) {
     std::string& s = audit::is_step(k) ? in_step : in_frame;
     if (const long n = count_of(c, k))
       s += fmt::format("{}{} {}", s.empty() ? "" : ", ", n, audit::to_string(k));
@@ -128,11 +137,16 @@ bool AuditReport::add(const audit::FrameReport& r, const FramePlaces* step_start
   per_frame_.push_back(c);
   total_.add(c);
   (per_frame_.size() == 1 && frame_number(0) == 0 ? first_seconds_ : step_seconds_) += r.seconds;
+  // The nearest pairs of the run: the least lower bound, the earliest frame on ties.
+  for (int i = 0; i < 2; ++i) {
+    const audit::Nearest& n = r.nearest[std::size_t(i)];
+    if (n.frame >= 0 && (nearest_[i].frame < 0 || n.lo < nearest_[i].lo)) nearest_[i] = n;
+  }
   for (const audit::Violation& v : r.violations) {
     if (int(kept_.size()) >= keep_) break;
     KeptViolation k{v, r.frame, {}, {}, {}};
     if (!audit::is_step(v.kind)) {
-      const bool self = v.kind == ViolationKind::SelfIntersection;
+      const bool self = audit::contact_kind(v.kind) == ViolationKind::SelfIntersection;
       k.corners = {topology_.cloth[std::size_t(v.triangles[0])],
                    (self ? topology_.cloth : topology_.obstacle)[std::size_t(v.triangles[1])]};
     }
@@ -189,9 +203,10 @@ std::string AuditReport::summary_line() const {
                           counted(part_->sequence_frames, "frame"), part_->first_frame,
                           part_->last_frame, counted(steps(), "step"))
             : counted(frames(), "frame") + ", " + counted(steps(), "step");
-  if (clean()) return fmt::format("clean: {}, 0 violations (exact)", what);
-  return fmt::format("VIOLATION: {}, {}; first: {}", what, counted(total_.total(), "violation"),
-                     describe(kept_.front().violation));
+  const std::string near = options_.min_distance > 0 ? "; " + nearest_words(*this) : "";
+  if (clean()) return fmt::format("clean: {}, 0 violations (exact){}", what, near);
+  return fmt::format("VIOLATION: {}, {}; first: {}{}", what, counted(total_.total(), "violation"),
+                     describe(kept_.front().violation), near);
 }
 
 std::string AuditReport::text(int max_frames) const {
@@ -205,7 +220,8 @@ std::string AuditReport::text(int max_frames) const {
       continue;
     }
     ++shown;
-    out += fmt::format("  frame {}: {}\n", frame_number(f), frame_counts(c, frame_number(f)));
+    out += fmt::format("  frame {}: {}\n", frame_number(f),
+                       frame_counts(c, frame_number(f), kinds_of(options_)));
   }
   if (more) out += fmt::format("  ... and {} more frames with violations\n", more);
   if (total_.inside > 0)
@@ -217,9 +233,9 @@ std::string AuditReport::text(int max_frames) const {
 
 namespace {
 
-Json counts_json(const AuditCounts& c, bool with_step) {
+Json counts_json(const AuditCounts& c, bool with_step, const std::vector<ViolationKind>& kinds) {
   Json j;
-  for (const ViolationKind k : kKinds)
+  for (const ViolationKind k : kinds)
     if (with_step || !audit::is_step(k)) j[audit::to_string(k)] = count_of(c, k);
   return j;
 }
@@ -254,14 +270,15 @@ nlohmann::ordered_json AuditReport::json() const {
              {{"vertices", sizes_.obstacle_vertices}, {"triangles", sizes_.obstacle_triangles}}},
             {"k", options_.k},
             {"violations", total_.total()},
-            {"totals", counts_json(total_, true)},
+            {"totals", counts_json(total_, true, kinds_of(options_))},
             {"candidates", {{"static", total_.static_candidates}, {"ccd", total_.step.candidates}}},
             {"inside", total_.inside}};
+  if (options_.min_distance > 0) j["proximity"] = proximity_json(*this);
   j["first_violation"] = kept_.empty() ? Json(nullptr) : violation_json(kept_.front());
   Json frames_j = Json::array();
   for (std::size_t f = 0; f < per_frame_.size(); ++f) {
     Json one = {{"frame", frame_number(f)}};
-    one.update(counts_json(per_frame_[f], frame_number(f) > 0));
+    one.update(counts_json(per_frame_[f], frame_number(f) > 0, kinds_of(options_)));
     frames_j.push_back(std::move(one));
   }
   j["per_frame"] = std::move(frames_j);
@@ -305,11 +322,15 @@ std::string AuditReport::markdown() const {
       sizes_.cloth_vertices, sizes_.cloth_triangles, sizes_.obstacle_vertices,
       sizes_.obstacle_triangles, counted(frames(), "frame"), counted(steps, "step"), options_.k);
   md += "| kind | count |\n|---|---|\n";
-  for (const ViolationKind k : kKinds)
+  for (const ViolationKind k : kinds_of(options_))
     md += fmt::format("| {} | {} |\n", audit::to_string(k), count_of(total_, k));
+  if (options_.min_distance > 0) md += "\n" + proximity_markdown(*this);
   if (!kept_.empty()) {
     // With case files the run writes the picture beside this file (`audit --out`).
-    if (case_files_) md += "\n![the first violation, its triangles in blue](first-violation.png)\n";
+    const bool near = audit::is_proximity(kept_.front().violation.kind);
+    if (case_files_)
+      md += fmt::format("\n![the first violation, its triangles in {}](first-violation.png)\n",
+                        near ? "yellow" : "blue");
     md += fmt::format("\n## The first {} violations, earliest first\n\n", kept_.size());
     md += "| # | what | where | case file |\n|---|---|---|---|\n";
     for (std::size_t i = 0; i < kept_.size(); ++i) {
@@ -324,7 +345,7 @@ std::string AuditReport::markdown() const {
     for (std::size_t f = 0; f < per_frame_.size(); ++f) {
       if (per_frame_[f].total() == 0) continue;
       md += fmt::format("| {} | {} |\n", frame_number(f),
-                        frame_counts(per_frame_[f], frame_number(f)));
+                        frame_counts(per_frame_[f], frame_number(f), kinds_of(options_)));
     }
   }
   md += fmt::format(

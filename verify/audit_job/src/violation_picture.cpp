@@ -9,7 +9,7 @@ namespace fdh::verify {
 namespace {
 
 const std::array<double, 3> kClothColour = {0.85, 0.25, 0.2}, kObstacleColour = {0.7, 0.7, 0.65},
-                            kMarkColour = {0.15, 0.45, 1.0},
+                            kMarkColour = {0.15, 0.45, 1.0}, kNearColour = {1.0, 0.8, 0.1},
                             kObstacleMarkColour = {0.95, 0.7, 0.15};
 
 // The triangles of `tris` holding every vertex of `vs` (an edge's two, or a vertex's one).
@@ -27,7 +27,7 @@ std::pair<std::vector<Tri>, std::vector<Tri>> marked(const audit::Violation& v,
   std::vector<Tri> c, o;
   const auto& x = v.vertices;
   using K = audit::ViolationKind;
-  switch (v.kind) {
+  switch (audit::contact_kind(v.kind)) {  // a proximity kind marks the same primitives
     case K::SelfIntersection:
       c = {t.cloth[std::size_t(v.triangles[0])], t.cloth[std::size_t(v.triangles[1])]};
       break;
@@ -48,6 +48,8 @@ std::pair<std::vector<Tri>, std::vector<Tri>> marked(const audit::Violation& v,
       break;
     case K::ClothEdgeObstacleEdge:
       mark_holding(t.cloth, {x[0], x[1]}, c), mark_holding(t.obstacle, {x[2], x[3]}, o);
+      break;
+    default:
       break;
   }
   return {c, o};
@@ -185,7 +187,9 @@ std::string violation_picture(const std::vector<Vec3>& cloth_x, const std::vecto
   const std::vector<SceneMesh> scene = {{"marked obstacle", &obstacle, &mo, kObstacleMarkColour},
                                         {"cloth", &cloth, &t.cloth, kClothColour},
                                         {"obstacles", &obstacle, &t.obstacle, kObstacleColour}};
-  const std::vector<SceneMesh> marks = {{"marked", &cloth, &mc, kMarkColour}};
+  // Proximity in yellow, intersection in blue.
+  const std::array<double, 3>& mark = audit::is_proximity(v.kind) ? kNearColour : kMarkColour;
+  const std::vector<SceneMesh> marks = {{"marked", &cloth, &mc, mark}};
   const Framing view = close_up(cloth, mc);
   const Framing ball{view.centre, 2 * view.radius};
   const std::vector<Tri> nc = near_ball(cloth, t.cloth, ball),

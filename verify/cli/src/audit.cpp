@@ -14,6 +14,7 @@
 #include "fdh/io/mesh_sequence.hpp"
 #include "fdh/os/atomic_file.hpp"
 #include "fdh/os/output_folder.hpp"
+#include "min_distance_option.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -42,19 +43,27 @@ Decided exactly (robust's filters with their exact fallbacks):
                   against cloth triangles, cloth edges against obstacle edges.
 For each violation: the frame or the step, the primitives (indices into the
 cloth's and the obstacles' vertices and triangles, and FILE:LINE of each), and
-a certified enclosure of the time of impact within the step. Also counted,
-beside the verdict: cloth vertices strictly inside a closed obstacle (each
-connected piece of the obstacles that is a closed manifold mesh; open pieces
-have no inside).)";
+a certified enclosure of the time of impact within the step.
+With --min-distance D > 0, also every pair of the kinds above that comes
+within distance D without meeting (distance <= D counts): the proximity
+kinds, each with its certified earliest time within D, and the nearest pair
+of triangles seen with its exact distance. Pairs near by construction are
+left out of them (never out of the intersection kinds): cloth pairs within
+--near-rings rings of each other, and pairs already within D in the first
+frame (--near-first-frame).
+Also counted, beside the verdict: cloth vertices strictly inside a closed
+obstacle (each connected piece of the obstacles that is a closed manifold
+mesh; open pieces have no inside).)";
 
 const char* const kAuditFooter =
     R"(Prints a summary line and a line per frame with violations (--json: the
 certificate as one JSON object, docs/formats.md "audit output"). --out DIR
 writes DIR/audit.json, DIR/audit.md, DIR/first-violation.png (a close-up of
-the first violation, its primitives' triangles in blue, the whole frame in an
-inset) and DIR/cases/*.vf, one replayable case per kept step violation
-(`fdhcert classify` / `replay`, truth 1), all published at once: a run that
-fails leaves DIR as it was. See docs/audit.md.
+the first violation, its primitives' triangles in blue, yellow for proximity,
+the whole frame in an inset) and DIR/cases/*.vf, one replayable case per kept
+step violation (`fdhcert classify` / `replay`, truth 1; a proximity's at
+`min-distance D`), all published at once: a run that fails leaves DIR as it
+was. See docs/audit.md.
 --part I/N audits the I-th of N contiguous ranges of the steps (neighbouring
 parts share one frame) into --out DIR; `fdhcert audit --merge DIR... --out DIR`
 joins the parts' folders into the whole run's certificate (the same JSON but
@@ -97,6 +106,8 @@ int run_audit_command(AuditCommand& o, const Io& io) {
   if (o.frames.empty()) throw UsageError("audit: FRAMES is required (or --merge DIR...)");
   if (!o.part.empty() && o.out.empty())
     throw UsageError("audit: --part needs --out DIR (the part's certificate, for --merge)");
+  if (!o.part.empty() && o.job.min_distance > 0)  // --merge does not carry the proximity block
+    throw UsageError("audit: --part does not take --min-distance yet; audit the run whole");
   if (!o.out.empty()) check_output_folder(o.out, kWritten);
   const ThreadLimit threads(o.job.threads);
   const MeshSequence seq(o.frames, o.cloth, o.obstacles);
@@ -168,6 +179,22 @@ void add_audit_options(CLI::App& cmd, AuditCommand& o) {
                     "violations kept in the certificate, earliest first, each\n"
                     "with its case file (default 16)",
                     "N", 1, 100000);
+  add_min_distance_option(cmd, o.job.min_distance,
+                          "the minimum distance D: pairs within distance D (<= D)\n"
+                          "without meeting are proximity violations (default 0:\n"
+                          "contact only)");
+  add_number_option(cmd, "--near-rings", o.job.near_rings,
+                    "with --min-distance: leave out of the proximity\n"
+                    "kinds cloth pairs whose vertices are within N edges\n"
+                    "of each other (default 2; 0: only those sharing a\n"
+                    "vertex)",
+                    "N", 0, 100);
+  cmd.add_option("--near-first-frame", o.job.near_first_frame,
+                 "with --min-distance: leave out pairs already within\n"
+                 "D in the first frame: on (default) or off")
+      ->type_name("on|off")
+      ->transform(
+          CLI::CheckedTransformer(std::map<std::string, bool>{{"on", true}, {"off", false}}));
   add_threads_option(cmd, o.job.threads, "the audit");
   add_quiet_flag(cmd, o.progress);
 }

@@ -9,12 +9,17 @@ namespace fdh::audit {
 
 struct AuditCounts {
   long self_intersections = 0, obstacle_intersections = 0;  // within the frames
+  long self_proximity = 0, obstacle_proximity = 0;          // within D in the frames
   StepCounts step;                                          // during the steps
-  long static_candidates = 0;                               // triangle pairs tested
+  NearExcluded excluded;       // proximity tests the near rule left out
+  long static_candidates = 0;  // triangle pairs tested
   // Cloth vertices strictly inside a closed obstacle (FrameReport::inside), summed over the
   // frames: a count of particles, not of violations, so not in total().
   long inside = 0;
-  long total() const { return self_intersections + obstacle_intersections + step.total(); }
+  long total() const {
+    return self_intersections + obstacle_intersections + self_proximity + obstacle_proximity +
+           step.total();
+  }
   void add(const AuditCounts& c);
 };
 

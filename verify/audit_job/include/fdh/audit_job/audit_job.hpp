@@ -22,6 +22,11 @@ struct AuditOptions {
   int k = 18;       // the FDH's k: 6, 14, 18 or 26
   int threads = 0;  // 0: every core
   int keep = 16;    // violations kept in the certificate, earliest first, each with its case
+  // The minimum distance D (`--min-distance`; 0: contact only) and the rule on pairs near by
+  // construction (`--near-rings`, `--near-first-frame`): audit::Options' fields of those names.
+  double min_distance = 0;
+  int near_rings = 2;
+  bool near_first_frame = true;
   // The run will write its files (Result::write): case files are named and the first
   // violation's frame is kept for the picture.
   bool files = false;

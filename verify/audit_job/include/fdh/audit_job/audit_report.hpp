@@ -59,6 +59,15 @@ using audit::AuditCounts;  // what the certificate counts, per frame and in tota
 // exact truth 1, and `file` its case file.
 QueryRecord case_record(const KeptViolation& k);
 
+class AuditReport;
+
+// With a minimum distance D (audit::Options::min_distance > 0; proximity_report.cpp): the
+// summary's words on the nearest pair ("nearest 0.015625 ..."), and the certificate's block on D,
+// the near rule and what it left out, and the nearest pair.
+std::string nearest_words(const AuditReport& r);
+nlohmann::ordered_json proximity_json(const AuditReport& r);
+std::string proximity_markdown(const AuditReport& r);
+
 class AuditReport {
  public:
   // `keep`: the violations kept in the certificate, earliest first (at least 1);
@@ -104,6 +113,11 @@ class AuditReport {
   int steps() const;
   const AuditCounts& totals() const { return total_; }
   const std::vector<KeptViolation>& kept() const { return kept_; }
+  const audit::Options& options() const { return options_; }
+  const audit::Topology& topology() const { return topology_; }
+  // With a minimum distance: the nearest pair of triangles the run looked at, of the cloth
+  // against itself (0) and against the obstacles (1); frame -1: none.
+  const audit::Nearest& nearest(int i) const { return nearest_[std::size_t(i)]; }
 
   // The replayable case files of the kept step violations: the query with its exact truth (1),
   // `file` set to its name under the --out folder (case_record of each with a case file).
@@ -134,6 +148,7 @@ class AuditReport {
   std::vector<AuditCounts> per_frame_;
   AuditCounts total_;
   std::vector<KeptViolation> kept_;
+  std::array<audit::Nearest, 2> nearest_;
   std::optional<AuditPart> part_;
   // Costs: the first frame (the trees, the boundary loops, its checks) apart from the steps'.
   double first_seconds_ = 0, step_seconds_ = 0, wall_seconds_ = 0, cpu_seconds_ = 0;
