@@ -5,6 +5,8 @@
 
 #include "fdh/certify/certify.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <optional>
@@ -46,18 +48,27 @@ struct CertifyTally {
   long truths = 0, truth_violations = 0;
   long queries = 0;  // the queries checked (certify counts them per source)
   long skipped = 0;  // the queries not checked: the budget was spent (fdh/os/budget.hpp)
-  // The first violation: its words, and the case file that shows it (a name in out_dir and
-  // the file's text); written only when it is the certificate's first.
+  // The first violation of each kind (`key`: method, decision and what broke), its words and
+  // the case file that shows it (a name in out_dir and the file's text): every broken promise
+  // is named and saved once, the certificate's first also as first_violation.
   struct Found {
-    std::string what, file, text;
+    std::string key, what, file, text;
   };
-  std::optional<Found> first;
+  std::vector<Found> found;
+
+  bool has(const std::string& key) const {
+    return std::any_of(found.begin(), found.end(), [&](const Found& f) { return f.key == key; });
+  }
+  void keep(const Found& f) {
+    if (!has(f.key)) found.push_back(f);
+  }
 
   void add(const CertifyTally& later) {
     for (std::size_t i = 0; i < promises.size(); ++i) {
       promises[i].checked += later.promises[i].checked;
       promises[i].filter_decided += later.promises[i].filter_decided;
       promises[i].violations += later.promises[i].violations;
+      promises[i].no_answer += later.promises[i].no_answer;
     }
     for (std::size_t i = 0; i < times.size(); ++i) times[i].tally.merge(later.times[i].tally, 0);
     for (std::size_t i = 0; i < boxes.size(); ++i) {
@@ -78,7 +89,7 @@ struct CertifyTally {
     }
     truths += later.truths, truth_violations += later.truth_violations;
     queries += later.queries, skipped += later.skipped;
-    if (!first) first = later.first;
+    for (const Found& f : later.found) keep(f);
   }
 };
 
@@ -146,12 +157,15 @@ class Certifier {
 
   // t's counts into the certificate; its violation, if the certificate's first, saved.
   void record(const CertifyTally& t) {
+    for (const CertifyTally::Found& f : t.found) {
+      if (total_.has(f.key)) continue;  // this kind is saved already
+      const fs::path file = fs::path(c_.options.out_dir) / f.file;
+      write_file_atomically(file.string(), f.text);
+      c_.broken_saved.push_back(f.what + ", saved to " + file.string());
+      if (c_.first_violation.empty()) c_.first_violation = c_.broken_saved.back();
+    }
     total_.add(t);
     write_counts();
-    if (!t.first || !c_.first_violation.empty()) return;
-    const fs::path file = fs::path(c_.options.out_dir) / t.first->file;
-    write_file_atomically(file.string(), t.first->text);
-    c_.first_violation = t.first->what + ", saved to " + file.string();
   }
 
  private:
@@ -191,11 +205,27 @@ class Certifier {
     }
     const bool twin = twin_hit(q);
     check_truth(r, twin, t);
-    if (const auto broken = metamorphic_.check(q, twin, t.metamorphic, t.transforms, budget())) {
+    // The query as drawn first: where it already breaks a promise, that is the case saved, and
+    // its verdicts are not asked again under the transforms.
+    MetamorphicCertifier::Said said;
+    std::set<std::string> broke;  // methods that broke a promise on q as drawn
+    check_verdicts(r, twin, t, said, broke);
+    check_times(r, twin, t, broke);
+    if (const auto broken =
+            metamorphic_.check(q, twin, t.metamorphic, t.transforms, budget(), said)) {
       QueryRecord saved = with_truth(r, twin);  // the truth, id and place of q: the transform's
       saved.query = broken->saved;
-      violation(saved, broken->what, t, broken->before(with_truth(r, twin)));
+      if (!broke.count(broken->method))
+        violation(saved, broken->method + "/metamorphic", broken->what, t,
+                  broken->before(with_truth(r, twin)));
     }
+  }
+
+  // Each promised method's verdict on q against the twin; `said` gets the verdicts (nullopt: no
+  // answer in time), `broke` the methods that broke their promise.
+  void check_verdicts(const QueryRecord& r, bool twin, CertifyTally& t,
+                      MetamorphicCertifier::Said& said, std::set<std::string>& broke) const {
+    const Query& q = r.query;
     const Decision d = decision_of(q);
     for (std::size_t i = 0; i < t.promises.size(); ++i) {
       PromiseCheck& p = t.promises[i];
@@ -206,15 +236,20 @@ class Certifier {
       p.filter_decided += filter && filter(q) != Filtered::Uncertain;
       ++p.checked;
       const Verdicts v = check(m, q, twin);
+      said[m.name] = v.no_answer ? std::nullopt : std::optional<bool>(v.said);
       if (v.kept) continue;
       ++p.violations;
-      violation(with_truth(r, twin), describe(m, v) + " (" + to_string(d) + ")", t);
+      p.no_answer += v.no_answer;
+      broke.insert(m.name);
+      violation(with_truth(r, twin),
+                m.name + "/" + to_string(d) + (v.no_answer ? "/no-answer" : "/verdict"),
+                describe(m, v) + " (" + to_string(d) + ")", t);
     }
-    check_times(r, twin, t);
   }
 
   // Each time-promised method's time of impact against the exact earliest contact.
-  void check_times(const QueryRecord& r, bool twin, CertifyTally& t) const {
+  void check_times(const QueryRecord& r, bool twin, CertifyTally& t,
+                   std::set<std::string>& broke) const {
     if (t.times.empty()) return;
     const Query& q = r.query;
     const Decision d = toi_decision_of(q);
@@ -225,8 +260,11 @@ class Certifier {
       if (q.min_distance > 0 && !m.answers_min_distance) continue;
       const TimeCheck c = check_time(m, q, c_.options.toi_width, exact);
       row.tally.add(c, 0, 0);
-      if (!c.kept)
-        violation(with_truth(r, twin), judged_time_words(m, c) + " (" + to_string(d) + ")", t);
+      if (c.kept) continue;
+      broke.insert(m.name);
+      const char* kind = c.no_answer ? "/no-answer" : c.garbage ? "/not-a-time" : "/time";
+      violation(with_truth(r, twin), m.name + "/" + to_string(d) + kind,
+                judged_time_words(m, c) + " (" + to_string(d) + ")", t);
     }
   }
 
@@ -241,7 +279,7 @@ class Certifier {
     ++t.truths;
     if (*agrees) return;
     ++t.truth_violations;
-    violation(q,
+    violation(q, "truth",
               "exact says " + std::string(twin ? "hit" : "no") + ", the stored truth says " +
                   (q.truth == Truth::Yes ? "hit" : "no"),
               t);
@@ -279,10 +317,21 @@ class Certifier {
     for (std::size_t i = 0; i < boxes_.size(); ++i) {
       BoxCheck& box = t.boxes[i];
       ++box.boxes;
-      const int s = check_box(boxes_[i], pts.data(), pts.size());
+      int s = -1;
+      try {
+        s = check_box(boxes_[i], pts.data(), pts.size());
+      } catch (const NoAnswer& e) {
+        ++box.box_violations;
+        violation(q, box.method + "/" + std::to_string(box.k) + "/no-answer",
+                  box.method + " gives no " + std::to_string(box.k) + "-DOP of " +
+                      std::to_string(pts.size()) + " of its points in " +
+                      fmt::format("{:g}", e.seconds) + " s",
+                  t);
+        continue;
+      }
       if (s < 0) continue;
       ++box.box_violations;
-      violation(q,
+      violation(q, box.method + "/" + std::to_string(box.k) + "/box",
                 "the " + box.method + " " + std::to_string(box.k) + "-DOP of " +
                     std::to_string(pts.size()) + " of its points misses the exact extent in slab " +
                     std::to_string(s),
@@ -290,22 +339,24 @@ class Certifier {
     }
   }
 
-  // `note`, if not empty, is a second comment in the saved case.
-  static void violation(const QueryRecord& q, const std::string& what, CertifyTally& t,
-                        const std::string& note = "") {
-    if (t.first) return;
+  // The first violation of its kind (`key`) in t is kept; `note`, if not empty, is a second
+  // comment in the saved case.
+  static void violation(const QueryRecord& q, const std::string& key, const std::string& what,
+                        CertifyTally& t, const std::string& note = "") {
+    if (t.has(key)) return;
     std::vector<std::string> comments = {"certify: " + what + "."};
     if (!note.empty()) comments.push_back(note);
-    t.first = CertifyTally::Found{
+    t.keep(CertifyTally::Found{
+        key,
         what + " (query " + q.id + " from " +
             (q.file.empty() ? "a generator" : q.file + ":" + std::to_string(q.line)) + ")",
-        "violation-" + case_hash(q.query) + ".vf", case_file_text(q, comments)};
+        "violation-" + case_hash(q.query) + ".vf", case_file_text(q, comments)});
   }
 
   // A missed pair is saved as an OBJ: A at t = 0, A at t = 1 (its swept leaves), and B.
   static void soup_violation(const Soup& a, const Soup& b, int k, std::pair<int, int> p,
                              CertifyTally& t) {
-    if (t.first) return;
+    if (t.has("tree")) return;
     std::ostringstream os;
     os << "# certify: the " << k << "-DOP tree missed the pair (" << p.first << ", " << p.second
        << ") whose exact " << k << "-DOPs overlap\n";
@@ -325,8 +376,8 @@ class Certifier {
     object("A_t0", a.x0, a.tris);
     object("A_t1", a.x1, a.tris);
     object("B", b.x0, b.tris);
-    t.first = CertifyTally::Found{"the " + std::to_string(k) + "-DOP tree missed a pair",
-                                  "violation-tree.obj", os.str()};
+    t.keep(CertifyTally::Found{"tree", "the " + std::to_string(k) + "-DOP tree missed a pair",
+                               "violation-tree.obj", os.str()});
   }
 
   Certificate& c_;

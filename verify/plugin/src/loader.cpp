@@ -184,6 +184,15 @@ bool verdict(const LoadedPtr& p, const CallSite& site, int r) {
   return r == 1;
 }
 
+// A call past --plugin-timeout, abandoned (guard.hpp returned_within_limit): no answer on this
+// query, which the checker counts as a broken promise.
+[[noreturn]] void no_answer(const LoadedPtr& p, const CallSite& site) {
+  const double limit = plugin::call_limit();
+  throw NoAnswer("plug-in " + p->name + " did not return within " + shortest(limit) +
+                     " s (--plugin-timeout) " + plugin::where(site),
+                 p->name, limit);
+}
+
 // A query with δ > 0 asked of a decision without a δ function: the caller should have seen that
 // the method does not apply (Method::applies_to, gives_toi), and no plug-in is to blame.
 [[noreturn]] void not_answered(const LoadedPtr& p, const Query& q) {
@@ -208,11 +217,11 @@ QueryTest query_test(const LoadedPtr& p, const Verdicts& f) {
     const bool at_contact = f.contact && q.min_distance == 0;
     if (!at_contact && !f.within) not_answered(p, q);
     const CallSite site{p->name.c_str(), at_contact ? f.contact_name : f.within_name, &q};
-    int r;
-    {
-      const InCall in(site);
-      r = at_contact ? f.contact(x) : f.within(x, q.min_distance);
-    }
+    int r = 0;
+    if (!plugin::returned_within_limit(site, [&] {
+          r = at_contact ? f.contact(x) : f.within(x, q.min_distance);
+        }))
+      no_answer(p, site);
     return verdict(p, site, r);
   };
 }
@@ -235,16 +244,15 @@ QueryToi query_toi(const LoadedPtr& p, const Times& f) {
     if (!at_contact && !f.within) not_answered(p, q);
     const CallSite site{p->name.c_str(), at_contact ? f.contact_name : f.within_name, &q};
     double lo = 1, hi = 1;
-    int r;
-    {
-      const InCall in(site);
-      r = at_contact ? f.contact(x, width, &lo, &hi) : f.within(x, q.min_distance, width, &lo, &hi);
-    }
+    int r = 0;
+    if (!plugin::returned_within_limit(site, [&] {
+          r = at_contact ? f.contact(x, width, &lo, &hi)
+                         : f.within(x, q.min_distance, width, &lo, &hi);
+        }))
+      no_answer(p, site);
     if (!verdict(p, site, r)) return Toi{};
-    if (!(0 <= lo && lo <= hi && hi <= 1))  // NaN fails too
-      throw PluginFailure("plug-in " + p->name + " returned a contact at [" + shortest(lo) + ", " +
-                          shortest(hi) + "] (garbage: not 0 <= t_lo <= t_hi <= 1) " +
-                          plugin::where(site));
+    // A time outside [0, 1] goes to the checker as said: a broken promise ("not a time"), on
+    // that query, not the end of the run (issue 34); t_hi = +inf is "no upper bound".
     return Toi{true, lo, hi};
   };
 }
@@ -315,10 +323,9 @@ BoxMethod box_method(const LoadedPtr& p, int k) {
     xyz.reserve(3 * n);
     for (std::size_t i = 0; i < n; ++i) xyz.insert(xyz.end(), {pts[i].x, pts[i].y, pts[i].z});
     const CallSite site{p->name.c_str(), "kdop", nullptr, k, n};
-    {
-      const InCall in(site);
-      p->api.kdop(k, reinterpret_cast<const double(*)[3]>(xyz.data()), n, lo, hi);
-    }
+    const auto* points = reinterpret_cast<const double(*)[3]>(xyz.data());
+    if (!plugin::returned_within_limit(site, [&] { p->api.kdop(k, points, n, lo, hi); }))
+      no_answer(p, site);
     for (int s = 0; s < k / 2; ++s)
       if (!std::isfinite(lo[s]) || !std::isfinite(hi[s]) || lo[s] > hi[s])
         throw PluginFailure("plug-in " + p->name + " returned slab " + std::to_string(s) + " = [" +

@@ -59,6 +59,7 @@ struct PromiseCheck {
   Decision decision = Decision::PointTriangle;
   Promise promise = Promise::Exact;
   long checked = 0, filter_decided = 0, violations = 0;
+  long no_answer = 0;  // of the violations: calls past --plugin-timeout (a plug-in's)
 };
 
 // One method's time of impact on one TOI decision, under its TimePromise, against the exact
@@ -138,6 +139,10 @@ struct Certificate {
   PeersReport peers;
   DeltaStage delta;             // the minimum-separation stage; its checks count in checks() too
   std::string first_violation;  // what went wrong first, and the file it was saved to
+  // Every kind of broken promise found (a method, a decision, and a wrong verdict, a wrong or
+  // not-a-time time, no answer in --plugin-timeout, ...), in its first case: its words and the
+  // file it was saved to. The first is first_violation.
+  std::vector<std::string> broken_saved;
   // The stages the budget cut short, in run order: how far each got. Not empty: the checks
   // above cover part of the inputs only, and the certificate certifies nothing.
   std::vector<BudgetCut> cut_short;

@@ -21,7 +21,11 @@ bool keeps_promise(Promise promise, bool said, bool twin);
 struct Verdicts {
   bool said = false, twin = false;
   bool kept = true;  // said keeps the method's promise
-  bool agree() const { return said == twin; }
+  // No answer: a plug-in's call past --plugin-timeout, abandoned (NoAnswer; `said` is then
+  // meaningless): a broken promise for a method that promises anything.
+  bool no_answer = false;
+  double limit = 0;  // with no_answer: the time limit it passed, seconds
+  bool agree() const { return !no_answer && said == twin; }
 };
 
 // One method against the twin on one query it applies to.
@@ -127,8 +131,14 @@ struct TimeCheck {
   bool zero = false;      // t_lo == 0 said where 0 < t*
   double early = 0;       // with both hits and not late: t* - t_lo, in step units (>= 0)
   bool kept = true;       // the method's TimePromise is kept
-  bool garbage = false;   // not 0 <= t_lo <= t_hi <= 1 with a hit: breaks either promise
+  bool garbage = false;   // not a time: not 0 <= t_lo <= t_hi <= 1 with a hit: breaks either
+  bool no_answer = false;  // no answer within --plugin-timeout (NoAnswer): breaks either
+  double limit = 0;        // with no_answer: the time limit it passed, seconds
 };
+
+// t_hi = +inf: "no upper bound", which a never-late (lower-bound) method may say
+// (FDH_TIME_NO_UPPER_BOUND, fdh/plugin.h); its enclosure then means nothing.
+bool no_upper_bound(const Toi& t);
 
 // How early a time of impact may be (t* - t_lo, step units) before fuzz --toi and replay --toi
 // call it a finding: a solver that moves to a time a tenth of the step early stalls.
@@ -149,6 +159,7 @@ TimeCheck check_time_given(const Method& m, const Query& q, double width, const 
 struct TimeTally {
   long checked = 0, contacts = 0;  // queries checked; those with an exact contact
   long verdict_errors = 0, late = 0, zero = 0, not_enclosed = 0, too_wide = 0, garbage = 0;
+  long no_answer = 0;  // calls past --plugin-timeout (each a broken promise)
   long broken = 0;                        // checks that broke the method's TimePromise
   std::vector<double> early;              // t* - t_lo of every contact found in time, step units
   std::vector<std::size_t> first_broken;  // indices into the caller's sequence, at most `keep`

@@ -8,7 +8,9 @@
 #include <array>
 #include <cstddef>
 #include <functional>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fdh/ccd/toi.hpp"
@@ -59,6 +61,16 @@ enum class TimePromise {
   None,       // measured, not promised (float-cubic)
 };
 const char* to_string(TimePromise p);  // "exact-enclosure", "never-late", "none"
+
+// A method that gave no answer on a query: a plug-in call past --plugin-timeout, abandoned
+// (docs/plugins.md). what() names the plug-in, the function and the query; the checker counts
+// it as a broken promise on that query ("no answer in T s") and the run goes on.
+struct NoAnswer : std::runtime_error {
+  NoAnswer(const std::string& what, std::string method_name, double limit)
+      : std::runtime_error(what), method(std::move(method_name)), seconds(limit) {}
+  std::string method;
+  double seconds;  // the limit it passed
+};
 
 using QueryTest = std::function<bool(const Query&)>;
 using QueryFilter = std::function<Filtered(const Query&)>;
