@@ -50,7 +50,8 @@ json promises_json(const std::vector<PromiseCheck>& promises) {
                    {"promise", to_string(p.promise)},
                    {"checked", p.checked},
                    {"decided_by_filter", p.filter_decided},
-                   {"violations", p.violations}});
+                   {"violations", p.violations},
+                   {"no_answer", p.no_answer}});
   return out;
 }
 
@@ -112,22 +113,29 @@ void inputs_markdown(Out to, const Certificate& c) {
   fmt::format_to(to, "| random triangle-soup pairs (tree) | {} |\n\n", c.options.soups);
 }
 
+// "2 not a time, 1 no answer in time, " where a plug-in gave such times (each a violation).
+std::string faults_words(const TimeTally& t) {
+  return (t.garbage ? fmt::format("{} not a time, ", t.garbage) : "") +
+         (t.no_answer ? fmt::format("{} no answer in time, ", t.no_answer) : "");
+}
+
 void promise_rows(Out to, const std::vector<PromiseCheck>& promises,
                   const std::vector<TimePromiseCheck>& times) {
   for (const PromiseCheck& p : promises)
     fmt::format_to(to, "| {} verdict {} | `{}` | – | {} queries{} | {} |\n", to_string(p.decision),
                    promise_words(p.promise), p.method, p.checked,
-                   p.filter_decided
-                       ? fmt::format(" ({} decided by the float filter alone)", p.filter_decided)
-                       : std::string(),
+                   (p.filter_decided
+                        ? fmt::format(" ({} decided by the float filter alone)", p.filter_decided)
+                        : std::string()) +
+                       (p.no_answer ? fmt::format(" ({} no answer in time)", p.no_answer) : ""),
                    p.violations);
   for (const TimePromiseCheck& p : times)
     fmt::format_to(to,
-                   "| {} time {} | `{}` | – | {} queries ({} contacts; {} late, {} zero, "
+                   "| {} time {} | `{}` | – | {} queries ({} contacts; {} late, {} zero, {}"
                    "earliest by {:.3g} of the step, median {:.3g}) | {} |\n",
                    to_string(p.decision), time_promise_words(p.promise), p.method, p.tally.checked,
-                   p.tally.contacts, p.tally.late, p.tally.zero, p.tally.early_max(),
-                   p.tally.early_median(), p.tally.broken);
+                   p.tally.contacts, p.tally.late, p.tally.zero, faults_words(p.tally),
+                   p.tally.early_max(), p.tally.early_median(), p.tally.broken);
 }
 
 void properties_markdown(Out to, const Certificate& c) {
@@ -273,6 +281,12 @@ json plugins_json(const Certificate& c) {
 
 // The first words: certified, violated, or cut short by the budget (which certifies nothing).
 std::string verdict_markdown(const Certificate& c) {
+  if (c.broken_saved.size() > 1) {  // every kind of broken promise, each with its case
+    std::string all;
+    for (const std::string& b : c.broken_saved) all += "\n- " + b + ".";
+    return fmt::format("**Violated**: {} kinds of broken promise, each saved:\n{}",
+                       c.broken_saved.size(), all);
+  }
   if (!c.first_violation.empty()) return fmt::format("**Violated**: {}.", c.first_violation);
   if (c.complete()) return "**Certified**: no violation.";
   std::string cuts;
@@ -362,7 +376,8 @@ std::string certificate_json(const Certificate& c) {
       {"metamorphic_transforms", transforms_json(c.metamorphic_transforms)},
       {"min_distance", delta_json(c)},
       {"peers", peers_json(c.peers)},
-      {"first_violation", c.first_violation}};
+      {"first_violation", c.first_violation},
+      {"broken_promises", c.broken_saved}};
   return json_text(j, "certificate.json");
 }
 

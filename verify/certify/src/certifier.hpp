@@ -160,7 +160,8 @@ class Certifier {
     for (const CertifyTally::Found& f : t.found) {
       if (total_.has(f.key)) continue;  // this kind is saved already
       const fs::path file = fs::path(c_.options.out_dir) / f.file;
-      write_file_atomically(file.string(), f.text);
+      // A query that breaks two promises is one file, with the first one's words.
+      if (written_.insert(f.file).second) write_file_atomically(file.string(), f.text);
       c_.broken_saved.push_back(f.what + ", saved to " + file.string());
       if (c_.first_violation.empty()) c_.first_violation = c_.broken_saved.back();
     }
@@ -388,6 +389,7 @@ class Certifier {
   const MetamorphicCertifier metamorphic_;
   CertifyTally zero_;   // every row, every count 0
   CertifyTally total_;  // what record() has merged so far
+  std::set<std::string> written_;  // the case files written, by name
 };
 
 }  // namespace fdh::verify

@@ -230,8 +230,8 @@ void check_delta(Certificate& c) {
 // transforms of the queries not reached were not checked either.
 void note_metamorphic_cut(Certificate& c) {
   if (c.cut_short.empty()) return;
-  long checked = 0;
-  for (const MetamorphicCheck& m : c.metamorphic) checked += m.checked;
+  long checked = 0;  // transformed queries, each once however many methods were asked on it
+  for (const TransformCount& t : c.metamorphic_transforms) checked += t.applied;
   c.cut_short.push_back({"metamorphic", checked, 0, "transformed queries"});
 }
 
@@ -247,6 +247,8 @@ Certificate certify(const CertifyOptions& options) {
   c.commit = build_commit();
   c.cgal = exact::cgal_library_version();
   c.gmp = exact::gmp_library_version();
+  for (const CertifiedPlugin& p : c.options.plugins)  // the probe counts in the budget too
+    if (p.probe_cut) c.cut_short.push_back({"probe of plug-in " + p.name, p.probe_calls, 0, "calls"});
   Certifier cert(c);
   check_corpus(c, cert);
   check_families(c, cert);

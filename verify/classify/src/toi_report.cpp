@@ -47,6 +47,8 @@ void add_time_counts(Json& j, const TimeTally& t) {
   j["verdict_errors"] = t.verdict_errors;
   j["not_enclosed"] = t.not_enclosed;
   j["too_wide"] = t.too_wide;
+  j["not_a_time"] = t.garbage;
+  j["no_answer"] = t.no_answer;
 }
 
 namespace {

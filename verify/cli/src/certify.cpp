@@ -134,7 +134,8 @@ int run_certify(const CertifyCommand& cmd, const Io& io) {
     io.err << " (" << (dir / "certificate.md").string() << ")\n";
     return 1;
   }
-  io.err << "fdhcert: certify: " << c.first_violation << "\n";
+  for (const std::string& broken : c.broken_saved) io.err << "fdhcert: certify: " << broken << "\n";
+  if (c.broken_saved.empty()) io.err << "fdhcert: certify: " << c.first_violation << "\n";
   return 1;
 }
 
@@ -143,7 +144,7 @@ int run_certify(const CertifyCommand& cmd, const Io& io) {
 std::vector<CertifiedPlugin> certified_plugins() {
   std::vector<CertifiedPlugin> out;
   for (const LoadedPlugin& p : loaded_plugins())
-    out.push_back({p.file, p.name, p.settings, p.thread_safe});
+    out.push_back({p.file, p.name, p.settings, p.thread_safe, p.probe_cut, p.probe_calls});
   return out;
 }
 

@@ -64,6 +64,18 @@ std::vector<LoadedPlugin>& loaded_list() {
   return list;
 }
 
+// A probe that waits for probe_plugins: the plug-in's methods and its place in loaded_list().
+struct PendingProbe {
+  std::string name;
+  std::vector<Method> methods;
+  std::vector<BoxMethod> boxes;
+  std::size_t loaded = 0;
+};
+std::vector<PendingProbe>& pending_probes() {
+  static std::vector<PendingProbe> pending;
+  return pending;
+}
+
 // A letter or digit, then letters, digits and . _ + -: never a path like "..", since fuzz makes
 // folders of method names.
 bool is_name(const char* s) {
@@ -343,7 +355,7 @@ BoxMethod box_method(const LoadedPtr& p, int k) {
 
 }  // namespace
 
-void load_plugin(const std::string& path, const PluginSettings& settings) {
+void load_plugin(const std::string& path, const PluginSettings& settings, bool probe_now) {
   plugin::install_crash_handlers();
   plugin::catch_exit(path);
   plugin::divert_stdout();
@@ -371,9 +383,20 @@ void load_plugin(const std::string& path, const PluginSettings& settings) {
   } catch (const std::invalid_argument& e) {
     refuse(path, std::string(e.what()) + ": rename the plug-in");
   }
-  plugin::probe(p->name, methods, boxes, limit_of_child());
+  if (probe_now) plugin::probe(p->name, methods, boxes, limit_of_child());
   if (known) files.push_back(id);
+  if (!probe_now) pending_probes().push_back({p->name, methods, boxes, loaded_list().size()});
   loaded_list().push_back({path, p->name, settings, !p->one_thread()});
+}
+
+void probe_plugins(const Budget& budget) {
+  std::vector<PendingProbe> pending;
+  pending.swap(pending_probes());
+  for (const PendingProbe& p : pending) {
+    const plugin::ProbeCut cut = plugin::probe(p.name, p.methods, p.boxes, limit_of_child(), budget);
+    loaded_list()[p.loaded].probe_cut = cut.cut;
+    loaded_list()[p.loaded].probe_calls = cut.calls;
+  }
 }
 
 std::vector<LoadedPlugin> loaded_plugins() {
@@ -385,6 +408,7 @@ void set_plugin_timeout(double seconds) {
 }
 
 void end_plugin_run() {
+  pending_probes().clear();
   loaded_files().clear();
   loaded_list().clear();
   plugin::restore_stdout();

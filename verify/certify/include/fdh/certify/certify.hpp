@@ -25,6 +25,8 @@ struct CertifiedPlugin {
   std::string file, name;
   std::vector<std::pair<std::string, std::string>> settings;
   bool thread_safe = false;
+  bool probe_cut = false;  // --budget ended its start-up probe, after probe_calls calls
+  long probe_calls = 0;
 };
 
 struct CertifyOptions {
