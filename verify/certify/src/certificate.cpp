@@ -67,6 +67,7 @@ json times_json(const Certificate& c, const std::vector<TimePromiseCheck>& times
     j["early_max"] = t.early_max();
     j["early_median"] = t.early_median();
     j["violations"] = t.broken;
+    j["zero_queries"] = p.zero_queries;  // the first few
     out.push_back(std::move(j));
   }
   return out;
@@ -113,6 +114,14 @@ void inputs_markdown(Out to, const Certificate& c) {
   fmt::format_to(to, "| random triangle-soup pairs (tree) | {} |\n\n", c.options.soups);
 }
 
+// " (q.vf:1, 'gen', ...)": the first queries of the zero times, where there are any.
+std::string zero_names(const TimePromiseCheck& p) {
+  std::string named;
+  for (const std::string& z : p.zero_queries) named += (named.empty() ? "" : ", ") + z;
+  if (named.empty()) return "";
+  return " (" + named + (p.tally.zero > long(p.zero_queries.size()) ? ", ...)" : ")");
+}
+
 // "2 not a time, 1 no answer in time, " where a plug-in gave such times (each a violation).
 std::string faults_words(const TimeTally& t) {
   return (t.garbage ? fmt::format("{} not a time, ", t.garbage) : "") +
@@ -131,10 +140,11 @@ void promise_rows(Out to, const std::vector<PromiseCheck>& promises,
                    p.violations);
   for (const TimePromiseCheck& p : times)
     fmt::format_to(to,
-                   "| {} time {} | `{}` | – | {} queries ({} contacts; {} late, {} zero, {}"
+                   "| {} time {} | `{}` | – | {} queries ({} contacts; {} late, {} zero{}, {}"
                    "earliest by {:.3g} of the step, median {:.3g}) | {} |\n",
                    to_string(p.decision), time_promise_words(p.promise), p.method, p.tally.checked,
-                   p.tally.contacts, p.tally.late, p.tally.zero, faults_words(p.tally),
+                   p.tally.contacts, p.tally.late, p.tally.zero, zero_names(p),
+                   faults_words(p.tally),
                    p.tally.early_max(), p.tally.early_median(), p.tally.broken);
 }
 
@@ -366,6 +376,7 @@ std::string certificate_json(const Certificate& c) {
       {"gmp", c.gmp},
       {"mode", mode(c)},
       {"seed", c.options.seed},
+      {"stages", c.options.stages.empty() ? certify_stages() : c.options.stages},
       {"inputs", inputs_json(c)},
       {"kdop_contains_exact", boxes},
       {"tree_no_false_cull", culls},
@@ -385,9 +396,11 @@ std::string certificate_markdown(const Certificate& c) {
   fmt::memory_buffer out;
   const auto to = std::back_inserter(out);
   fmt::format_to(to, "# fdhcert certificate\n\n{}\n", verdict_markdown(c));
+  std::string stages;  // the stages given, when not all in the default order
+  for (const std::string& s : c.options.stages) stages += (stages.empty() ? " --stages " : ",") + s;
   fmt::format_to(
-      to, "\nCommit `{}`, CGAL {}, GMP {}, {} run, seed {}. Made by `fdhcert certify{}`.\n\n",
-      c.commit, c.cgal, c.gmp, mode(c), c.options.seed, c.options.quick ? " --quick" : "");
+      to, "\nCommit `{}`, CGAL {}, GMP {}, {} run, seed {}. Made by `fdhcert certify{}{}`.\n\n",
+      c.commit, c.cgal, c.gmp, mode(c), c.options.seed, c.options.quick ? " --quick" : "", stages);
   plugins_markdown(to, c);
   inputs_markdown(to, c);
   properties_markdown(to, c);

@@ -39,6 +39,9 @@ namespace fs = std::filesystem;
 // What checking some queries (or soups) adds to the certificate: counts in the certificate's
 // rows, and the first violation found. Parts of a run are merged in the order of their inputs,
 // so the certificate does not depend on how the run was cut (parallel.hpp).
+// The zero times named per method and decision (TimePromiseCheck::zero_queries).
+inline constexpr std::size_t kZeroNamed = 3;
+
 struct CertifyTally {
   std::vector<PromiseCheck> promises;
   std::vector<TimePromiseCheck> times;
@@ -70,7 +73,11 @@ struct CertifyTally {
       promises[i].violations += later.promises[i].violations;
       promises[i].no_answer += later.promises[i].no_answer;
     }
-    for (std::size_t i = 0; i < times.size(); ++i) times[i].tally.merge(later.times[i].tally, 0);
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      times[i].tally.merge(later.times[i].tally, 0);
+      for (const std::string& z : later.times[i].zero_queries)
+        if (times[i].zero_queries.size() < kZeroNamed) times[i].zero_queries.push_back(z);
+    }
     for (std::size_t i = 0; i < boxes.size(); ++i) {
       const BoxCheck& b = later.boxes[i];
       boxes[i].boxes += b.boxes, boxes[i].box_violations += b.box_violations;
@@ -107,7 +114,8 @@ class Certifier {
         methods_(stage_methods(promised_methods(), delta)),
         timed_(stage_methods(time_promised_methods(), delta)),
         boxes_(delta ? std::vector<BoxMethod>() : all_box_methods()),
-        metamorphic_(stage_methods(all_methods(), delta)) {
+        metamorphic_(c.options.runs("metamorphic") ? stage_methods(all_methods(), delta)
+                                                   : std::vector<Method>()) {
     fs::create_directories(c.options.out_dir);
     for (const Method& m : methods_)
       for (const Decision d : kQueryDecisions)
@@ -261,6 +269,9 @@ class Certifier {
       if (q.min_distance > 0 && !m.answers_min_distance) continue;
       const TimeCheck c = check_time(m, q, c_.options.toi_width, exact);
       row.tally.add(c, 0, 0);
+      if (c.zero && row.zero_queries.size() < kZeroNamed)
+        row.zero_queries.push_back(r.file.empty() ? "'" + r.id + "'"
+                                                  : r.file + ":" + std::to_string(r.line));
       if (c.kept) continue;
       broke.insert(m.name);
       const char* kind = c.no_answer ? "/no-answer" : c.garbage ? "/not-a-time" : "/time";

@@ -61,6 +61,7 @@ std::optional<MetamorphicCertifier::Violation> MetamorphicCertifier::check(
     const Query& q, bool twin, std::vector<MetamorphicCheck>& rows,
     std::vector<TransformCount>& transforms, const Budget& budget, const Said& said) const {
   std::optional<Violation> found;
+  if (methods_.empty()) return found;  // the metamorphic stage is not run (--stages)
   const std::vector<Transformed> moved = transforms_of(q, &transforms);
   for (std::size_t i = 0; i < methods_.size(); ++i) {
     const Method& m = methods_[i];

@@ -29,6 +29,12 @@ struct CertifiedPlugin {
   long probe_calls = 0;
 };
 
+// The stages of certify, in their default order (--stages picks and orders them):
+// "corpus", "families", "scenes", "soups", "extra", "metamorphic", "min-distance", "peers".
+// "metamorphic" is no pass of its own: with it, every query of the query stages is also checked
+// under the transforms (they go with each query, wherever the word is in the list).
+const std::vector<std::string>& certify_stages();
+
 struct CertifyOptions {
   bool quick = false;
   std::string corpus_dir = "corpus";
@@ -53,6 +59,9 @@ struct CertifyOptions {
   // of one); what was not reached is listed in Certificate::cut_short.
   Budget budget;
   std::vector<CertifiedPlugin> plugins;  // recorded in the certificate
+  // The stages run, in this order (certify_stages()' names); empty: all, in the default order.
+  std::vector<std::string> stages;
+  bool runs(const std::string& stage) const;
 };
 
 // One method's promise on one decision, checked against the exact twin (check/checker.hpp).
@@ -71,6 +80,8 @@ struct TimePromiseCheck {
   Decision decision = Decision::VertexFaceToi;
   TimePromise promise = TimePromise::Enclosure;
   TimeTally tally;  // tally.broken: the violations
+  // The first few queries given a time of 0 where t* > 0 ("FILE:LINE" or a generated id).
+  std::vector<std::string> zero_queries;
 };
 
 // One k-DOP method (one k): its boxes contain the exact FDH; the tree built of its boxes culls
