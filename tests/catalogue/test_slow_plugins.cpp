@@ -124,5 +124,29 @@ TEST(SlowPlugins, ATwoSecondPerCallPlugInIsProbedToTheEnd) {
   EXPECT_TRUE(has(e.out, "tunable ")) << e.out;
 }
 
+// Class 8: a fuzz run that --budget stopped is paused, not broken: the same --out takes a run
+// of another family beside it, and the first run's own command then resumes it.
+TEST(SlowPlugins, AFuzzRunCutShortByTheBudgetLetsAnotherFamilyUseTheOut) {
+  const fs::path d = fresh_temp_dir("slow_plugins_fuzz");
+  const auto fuzz = [&](const std::string& family, const std::string& settings,
+                        std::vector<std::string> more) {
+    std::vector<std::string> args = {"fuzz",     "--method",    "tunable", "--family",
+                                     family,     "--count",     "20",      "--threads",
+                                     "1",        "--out",       (d / "out").string(),
+                                     "--plugin", kTunable + ":" + settings};
+    args.insert(args.end(), more.begin(), more.end());
+    return run_fdhcert(args, d, 60);
+  };
+  const Ended cut = fuzz("parallel-cross", "answer=0,delay=0.2", {"--budget", "2"});
+  ASSERT_EQ(cut.status, 0) << cut.err;
+  ASSERT_TRUE(has(cut.out, "budget of 2 s spent: stopped after ")) << cut.out;
+  const Ended other = fuzz("angled", "answer=0", {});
+  EXPECT_EQ(other.status, 0) << other.err;
+  EXPECT_TRUE(has(other.out, "20 cases (")) << other.out;
+  const Ended resumed = fuzz("parallel-cross", "answer=0", {});
+  EXPECT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_TRUE(has(resumed.out, "20 cases (")) << resumed.out;
+}
+
 }  // namespace
 }  // namespace fdh::verify::slow_plugins
