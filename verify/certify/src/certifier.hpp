@@ -244,7 +244,12 @@ class Certifier {
       const auto& filter = m.filter[std::size_t(d)];
       p.filter_decided += filter && filter(q) != Filtered::Uncertain;
       ++p.checked;
-      const Verdicts v = check(m, q, twin);
+      Verdicts v;
+      try {
+        v = check(m, q, twin);
+      } catch (const NoAnswer& e) {  // abandoned: a broken promise on q, and the run goes on
+        v = unanswered(m, e, twin);
+      }
       said[m.name] = v.no_answer ? std::nullopt : std::optional<bool>(v.said);
       if (v.kept) continue;
       ++p.violations;
@@ -267,7 +272,12 @@ class Certifier {
       if (row.decision != d) continue;
       const Method& m = named(timed_, row.method);
       if (q.min_distance > 0 && !m.answers_min_distance) continue;
-      const TimeCheck c = check_time(m, q, c_.options.toi_width, exact);
+      TimeCheck c;
+      try {
+        c = check_time(m, q, c_.options.toi_width, exact);
+      } catch (const NoAnswer& e) {
+        c = unanswered_time(m, e, c_.options.toi_width, exact);
+      }
       row.tally.add(c, 0, 0);
       if (c.zero && row.zero_queries.size() < kZeroNamed)
         row.zero_queries.push_back(r.file.empty() ? "'" + r.id + "'"

@@ -23,9 +23,6 @@ bool keeps_promise(Promise promise, bool said, bool twin) {
   return false;
 }
 
-namespace {
-
-// A call that did not return in time: a broken promise of any promised method.
 Verdicts unanswered(const Method& m, const NoAnswer& e, bool twin) {
   Verdicts v;
   v.twin = twin, v.said = !twin;
@@ -34,16 +31,10 @@ Verdicts unanswered(const Method& m, const NoAnswer& e, bool twin) {
   return v;
 }
 
-}  // namespace
-
 Verdicts check(const Method& m, const Query& q, bool twin) {
   Verdicts v;
   v.twin = twin;
-  try {
-    v.said = m.is_twin ? twin : m.hit(q);
-  } catch (const NoAnswer& e) {
-    return unanswered(m, e, twin);
-  }
+  v.said = m.is_twin ? twin : m.hit(q);
   v.kept = keeps_promise(m.promise, v.said, v.twin);
   return v;
 }
@@ -56,11 +47,7 @@ Verdicts check(const Method& m, const Query& q, Decision d) {
   Verdicts v;
   v.twin = twin_hit(q, d);
   const QueryTest& test = m.test[std::size_t(d)];
-  try {
-    v.said = m.is_twin || !test ? v.twin : test(q);
-  } catch (const NoAnswer& e) {
-    return unanswered(m, e, v.twin);
-  }
+  v.said = m.is_twin || !test ? v.twin : test(q);
   v.kept = keeps_promise(m.promise, v.said, v.twin);
   return v;
 }
@@ -278,17 +265,16 @@ TimeCheck check_time_given(const Method& m, const Query& q, double width, const 
 }
 
 TimeCheck check_time(const Method& m, const Query& q, double width, const TimeTwin& twin) {
-  Toi said;
-  try {
-    said = m.time_of_impact(q, width);
-  } catch (const NoAnswer& e) {
-    TimeCheck c;
-    c.twin = twin, c.width = width;
-    c.no_answer = true, c.limit = e.seconds;
-    c.kept = m.time_promise == TimePromise::None;
-    return c;
-  }
-  return check_time_given(m, q, width, said, twin);
+  return check_time_given(m, q, width, m.time_of_impact(q, width), twin);
+}
+
+TimeCheck unanswered_time(const Method& m, const NoAnswer& e, double width,
+                          const TimeTwin& twin) {
+  TimeCheck c;
+  c.twin = twin, c.width = width;
+  c.no_answer = true, c.limit = e.seconds;
+  c.kept = m.time_promise == TimePromise::None;
+  return c;
 }
 
 bool no_upper_bound(const Toi& t) {

@@ -139,10 +139,10 @@ ClassifyResult classify_job(const ClassifyOptions& o) {
   r.methods = o.methods.empty() ? all_methods(o.gate) : select_methods(o.methods, o.gate);
   std::optional<QueryKind> kind;
   if (!o.kind.empty()) kind = o.kind == "edge-edge" ? QueryKind::EdgeEdge : QueryKind::VertexFace;
-  r.classified = classify_files(o.files, r.methods, kind, o.min_distance);
+  r.classified = classify_files(o.files, r.methods, kind, o.min_distance, o.progress);
   r.findings = findings(r.classified.total, r.classified.all, r.methods, Place::LineAndId);
   if (o.toi) {
-    r.toi = classify_toi_files(r.classified, r.methods, o.width);
+    r.toi = classify_toi_files(r.classified, r.methods, o.width, o.progress);
     r.time_findings = time_findings(r.toi->total, r.methods);
   }
   if (o.time || !o.time_ratio.empty()) r.timings = time_queries(o, r.classified.all, r.methods);

@@ -81,6 +81,7 @@ struct ClassifyCli {
   ClassifyOptions job;
   bool json = false, check = false;
   std::string per_query;
+  ProgressWhen progress = ProgressWhen::Auto;
 };
 
 int run_classify(const ClassifyCli& o, const Io& io) {
@@ -88,11 +89,14 @@ int run_classify(const ClassifyCli& o, const Io& io) {
   ClassifyOptions job = o.job;
   if (!job.kind.empty()) job.kind = job.kind == "ee" ? "edge-edge" : "vertex-face";  // --kind
   ClassifyResult r;
+  ProgressLine progress(io.err, progress_wanted(io, o.progress));
+  job.progress = progress.sink();  // off a terminal: lines once the run has taken 10 s
   try {
     r = classify_job(job);
   } catch (const std::invalid_argument& e) {  // the options, checked by the job
     throw UsageError(e.what());
   }
+  progress.clear();
   if (!o.per_query.empty()) write_file_atomically(o.per_query, r.per_query_csv());
   if (o.json)
     print_json(io.out, r.to_json());
@@ -138,6 +142,7 @@ Command add_classify(CLI::App& app) {
                   "(a rational, or lo..hi)")
       ->type_name("FILE");
   add_plugin_option(*cmd);
+  add_quiet_flag(*cmd, cli->progress);
   cmd->add_option("--time-ratio", o->time_ratio,
                   "also time each query alone (thread CPU time, the least\n"
                   "disturbed of --rounds batches) and print each method's\n"

@@ -257,6 +257,9 @@ std::vector<ChildProcess> start_workers(const Run& run, int workers, int progres
       try {
         run.work(w, workers, progress_fd);
         return 0;
+      } catch (const NoAnswer& e) {  // a plug-in's hang, in its own words, as before
+        std::fprintf(stderr, "fdhcert: %s\n", e.what());
+        return 3;
       } catch (const std::exception& e) {
         std::fprintf(stderr, "fdhcert: fuzz worker: %s\n", e.what());
         return 3;

@@ -35,6 +35,9 @@ Verdicts check(const Method& m, const Query& q, bool twin);
 // The method's test for decision d against d's twin (a static query asked as a CCD query, say);
 // a method without a test for d keeps its promise trivially (said = twin).
 Verdicts check(const Method& m, const Query& q, Decision d);
+// No verdict: m's call did not return within --plugin-timeout (NoAnswer, which check lets
+// through: only certify counts it, as a broken promise of a promised method).
+Verdicts unanswered(const Method& m, const NoAnswer& e, bool twin);
 // A verdict the method already gave elsewhere (the simulator's narrow phase) against the twin.
 Verdicts check_given(const Method& m, const Query& q, bool said);
 
@@ -151,6 +154,8 @@ bool keeps_time_promise(TimePromise promise, const TimeCheck& c);
 // given or computed. The method must give one for q's TOI decision (Method::gives_toi).
 TimeCheck check_time(const Method& m, const Query& q, double width, const TimeTwin& twin);
 TimeCheck check_time(const Method& m, const Query& q, double width);
+// No time: as unanswered, for a time of impact.
+TimeCheck unanswered_time(const Method& m, const NoAnswer& e, double width, const TimeTwin& twin);
 // A time the method already gave (classify's timed runs, a plug-in's saved answer).
 TimeCheck check_time_given(const Method& m, const Query& q, double width, const Toi& said,
                            const TimeTwin& twin);
