@@ -34,6 +34,23 @@ const Method* named(const std::vector<Method>& methods, const std::string& name)
   return nullptr;
 }
 
+// With --toi, --time times each method's time of impact too, as a method of its own named
+// "NAME/toi": its "verdict" on a query is the time function's contact.
+std::vector<Method> toi_as_methods(const std::vector<Method>& selected, double width) {
+  std::vector<Method> out;
+  for (const Method& m : selected) {
+    if (!m.toi[0] && !m.toi[1]) continue;
+    Method t;
+    t.name = m.name + "/toi";
+    t.answers_min_distance = m.answers_min_distance;
+    for (const Decision d : kQueryDecisions)
+      if (const QueryToi& toi = m.toi[d == Decision::EdgeEdgeCcd ? 1 : 0])
+        t.test[std::size_t(d)] = [toi, width](const Query& q) { return toi(q, width).hit; };
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
 QueryTimings time_queries(const ClassifyOptions& o, const std::vector<QueryRecord>& records,
                           const std::vector<Method>& selected) {
   const std::vector<Query> qs = queries_of(records);
@@ -51,6 +68,11 @@ QueryTimings time_queries(const ClassifyOptions& o, const std::vector<QueryRecor
     t.spreads = time_spreads(std::vector<std::vector<double>>(
                                  t.ns.begin(), t.ns.begin() + std::ptrdiff_t(selected.size())),
                              selected);
+  if (o.time && o.toi) {
+    const std::vector<Method> tois = toi_as_methods(selected, o.width);
+    const std::vector<TimeSpread> more = time_spreads(time_each_query(qs, tois, o.rounds), tois);
+    t.spreads.insert(t.spreads.end(), more.begin(), more.end());
+  }
   if (o.time_ratio.empty()) return t;
   for (const std::vector<double>& times : t.ns) {  // each method's mean, each query timed alone
     double sum = 0;

@@ -60,7 +60,8 @@ With --time it also holds
                "p90_ns": .., "max_ns": .., "slowest": WHERE}, ...}}
 each method's thread CPU time per query over the queries it applies to, each
 query timed alone (the least disturbed of --rounds batches, a batch long enough
-for the clock). With --time-ratio BASE it
+for the clock); with --toi also "NAME/toi", each method's time of impact timed
+the same way. With --time-ratio BASE it
 also holds
   "time_ratio": {"to": BASE, "limit": R, "queries": N,
                  "mean_ns": {"robust": .., "exact": ..}, "methods": {"robust":
@@ -157,7 +158,8 @@ Command add_classify(CLI::App& app) {
                 "also time each query alone (thread CPU time, the least\n"
                 "disturbed of --rounds batches) and print each method's\n"
                 "median, 90th percentile and maximum per query (and the\n"
-                "slowest query), beside the table's wall-clock means");
+                "slowest query), beside the table's wall-clock means; with\n"
+                "--toi, each time of impact too (rows NAME/toi)");
   add_number_option(*cmd, "--rounds", o->rounds,
                     "--time's and --time-ratio's timed batches per query and\n"
                     "method (default 7)",
