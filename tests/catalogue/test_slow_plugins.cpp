@@ -45,27 +45,29 @@ std::string ti_queries(const fs::path& dir) {
 TEST(SlowPlugins, ATightInclusionLikePlugInIsCertifiedToTheEnd) {
   const fs::path d = fresh_temp_dir("slow_plugins_ti");
   fs::create_directories(d / "corpus");
-  const Ended e = run_fdhcert(
-      {"certify", "--corpus", (d / "corpus").string(), "--per-family", "0", "--soups", "0",
-       "--peer-cases", "0", "--min-distance", "0", "--out", (d / "out").string(),
-       "--plugin-timeout", "1", "--plugin", kTiLike + ":delay=0.01,hang=0.375,huge=0.125",
-       ti_queries(d)},
-      d, 60);
+  const Ended e = run_fdhcert({"certify", "--corpus", (d / "corpus").string(), "--per-family", "0",
+                               "--soups", "0", "--peer-cases", "0", "--min-distance", "0", "--out",
+                               (d / "out").string(), "--plugin-timeout", "1", "--plugin",
+                               kTiLike + ":delay=0.01,hang=0.375,huge=0.125", ti_queries(d)},
+                              d, 60);
   ASSERT_EQ(e.status, 1) << e.err;  // violated, not ended by the plug-in (3)
   EXPECT_LT(e.seconds, 30) << e.err;
   EXPECT_TRUE(has(e.out, "VIOLATED: ")) << e.out;
   const std::string file = (d / "q.vf").string();
-  EXPECT_TRUE(has(e.err, "ti-like gives no answer in 1 s, the exact twin says hit (breaks "
-                         "CONSERVATIVE) (point-triangle) (query hang from " +
-                             file + ":2), saved to "))
+  EXPECT_TRUE(has(e.err,
+                  "ti-like gives no answer in 1 s, the exact twin says hit (breaks "
+                  "CONSERVATIVE) (point-triangle) (query hang from " +
+                      file + ":2), saved to "))
       << e.err;
-  EXPECT_TRUE(has(e.err, "ti-like gives no answer in 1 s (breaks never-late) (vertex-face-toi) "
-                         "(query hang from " +
-                             file + ":2)"))
+  EXPECT_TRUE(has(e.err,
+                  "ti-like gives no answer in 1 s (breaks never-late) (vertex-face-toi) "
+                  "(query hang from " +
+                      file + ":2)"))
       << e.err;
-  EXPECT_TRUE(has(e.err, "ti-like's TOI [1e+19, 1e+19] is not a time (not 0 <= t_lo <= t_hi <= "
-                         "1) (breaks never-late) (edge-edge-toi) (query huge from " +
-                             file + ":3), saved to "))
+  EXPECT_TRUE(has(e.err,
+                  "ti-like's TOI [1e+19, 1e+19] is not a time (not 0 <= t_lo <= t_hi <= "
+                  "1) (breaks never-late) (edge-edge-toi) (query huge from " +
+                      file + ":3), saved to "))
       << e.err;
   const nlohmann::json j = nlohmann::json::parse(text_of(d / "out" / "certificate.json"));
   EXPECT_FALSE(j["certified"]);
@@ -115,10 +117,9 @@ TEST(SlowPlugins, ATwoSecondPerCallPlugInIsProbedToTheEnd) {
   const fs::path d = fresh_temp_dir("slow_plugins_two_seconds");
   std::ofstream(d / "one.vf")
       << "vf q1 0.25 0.25 1  0 0 0  1 0 0  0 1 0  0.25 0.25 -1  0 0 0  1 0 0  0 1 0  1\n";
-  const Ended e = run_fdhcert(
-      {"classify", (d / "one.vf").string(), "--plugin", kTunable + ":delay=2", "--methods",
-       "exact,tunable"},
-      d, 60);
+  const Ended e = run_fdhcert({"classify", (d / "one.vf").string(), "--plugin",
+                               kTunable + ":delay=2", "--methods", "exact,tunable"},
+                              d, 60);
   EXPECT_EQ(e.status, 0) << e.err;
   EXPECT_GT(e.seconds, 16) << e.err;
   EXPECT_TRUE(has(e.out, "tunable ")) << e.out;
@@ -130,10 +131,12 @@ TEST(SlowPlugins, AFuzzRunCutShortByTheBudgetLetsAnotherFamilyUseTheOut) {
   const fs::path d = fresh_temp_dir("slow_plugins_fuzz");
   const auto fuzz = [&](const std::string& family, const std::string& settings,
                         std::vector<std::string> more) {
-    std::vector<std::string> args = {"fuzz",     "--method",    "tunable", "--family",
-                                     family,     "--count",     "20",      "--threads",
-                                     "1",        "--out",       (d / "out").string(),
-                                     "--plugin", kTunable + ":" + settings};
+    std::vector<std::string> args = {"fuzz", "--method", "tunable", "--family", family};
+    const std::vector<std::string> rest = {"--count",   "20",
+                                           "--threads", "1",
+                                           "--out",     (d / "out").string(),
+                                           "--plugin",  kTunable + ":" + settings};
+    args.insert(args.end(), rest.begin(), rest.end());
     args.insert(args.end(), more.begin(), more.end());
     return run_fdhcert(args, d, 60);
   };

@@ -85,8 +85,8 @@ const char* fdh_plugin_init(size_t n, const char* const* keys, const char* const
     else if (ok && strcmp(keys[i], "huge") == 0)
       huge_x = v;
     else {
-      snprintf(why, sizeof why, "cannot take %s=%s (it takes delay=0..60, hang=X, huge=X)",
-               keys[i], values[i]);
+      snprintf(why, sizeof why, "cannot take %s=%s (it takes delay=0..60, hang=X, huge=X)", keys[i],
+               values[i]);
       return why;
     }
   }

@@ -131,21 +131,21 @@ std::string faults_words(const TimeTally& t) {
 void promise_rows(Out to, const std::vector<PromiseCheck>& promises,
                   const std::vector<TimePromiseCheck>& times) {
   for (const PromiseCheck& p : promises)
-    fmt::format_to(to, "| {} verdict {} | `{}` | – | {} queries{} | {} |\n", to_string(p.decision),
-                   promise_words(p.promise), p.method, p.checked,
-                   (p.filter_decided
-                        ? fmt::format(" ({} decided by the float filter alone)", p.filter_decided)
-                        : std::string()) +
-                       (p.no_answer ? fmt::format(" ({} no answer in time)", p.no_answer) : ""),
-                   p.violations);
+    fmt::format_to(
+        to, "| {} verdict {} | `{}` | – | {} queries{} | {} |\n", to_string(p.decision),
+        promise_words(p.promise), p.method, p.checked,
+        (p.filter_decided ? fmt::format(" ({} decided by the float filter alone)", p.filter_decided)
+                          : std::string()) +
+            (p.no_answer ? fmt::format(" ({} no answer in time)", p.no_answer) : ""),
+        p.violations);
   for (const TimePromiseCheck& p : times)
     fmt::format_to(to,
                    "| {} time {} | `{}` | – | {} queries ({} contacts; {} late, {} zero{}, {}"
                    "earliest by {:.3g} of the step, median {:.3g}) | {} |\n",
                    to_string(p.decision), time_promise_words(p.promise), p.method, p.tally.checked,
                    p.tally.contacts, p.tally.late, p.tally.zero, zero_names(p),
-                   faults_words(p.tally),
-                   p.tally.early_max(), p.tally.early_median(), p.tally.broken);
+                   faults_words(p.tally), p.tally.early_max(), p.tally.early_median(),
+                   p.tally.broken);
 }
 
 void properties_markdown(Out to, const Certificate& c) {

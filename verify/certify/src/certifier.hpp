@@ -408,8 +408,8 @@ class Certifier {
   const std::vector<Method> timed_;
   const std::vector<BoxMethod> boxes_;
   const MetamorphicCertifier metamorphic_;
-  CertifyTally zero_;   // every row, every count 0
-  CertifyTally total_;  // what record() has merged so far
+  CertifyTally zero_;              // every row, every count 0
+  CertifyTally total_;             // what record() has merged so far
   std::set<std::string> written_;  // the case files written, by name
 };
 

@@ -121,7 +121,8 @@ long check_files(Certificate& c, Certifier& cert, const std::string& stage,
     for (std::size_t i = 0; i < qs.size(); i += batch) {
       tell(c, stage, done, total);
       const std::size_t end = std::min(qs.size(), i + batch);
-      done += cert.check_queries({qs.begin() + std::ptrdiff_t(i), qs.begin() + std::ptrdiff_t(end)});
+      done +=
+          cert.check_queries({qs.begin() + std::ptrdiff_t(i), qs.begin() + std::ptrdiff_t(end)});
     }
   note_cut(c, stage, done, total, "queries");
   return done;
@@ -129,7 +130,8 @@ long check_files(Certificate& c, Certifier& cert, const std::string& stage,
 
 void check_corpus(Certificate& c, Certifier& cert) {
   std::vector<std::vector<QueryRecord>> files;
-  for (const std::string& f : list_query_files(c.options.corpus_dir)) files.push_back(read_native(f));
+  for (const std::string& f : list_query_files(c.options.corpus_dir))
+    files.push_back(read_native(f));
   c.corpus_files = long(files.size());
   c.corpus_queries = check_files(c, cert, "corpus", files);
 }
@@ -270,8 +272,8 @@ void run_stages(Certificate& c, Certifier& cert, const std::vector<std::string>&
 }  // namespace
 
 const std::vector<std::string>& certify_stages() {
-  static const std::vector<std::string> names = {
-      "corpus", "families", "scenes", "soups", "extra", "metamorphic", "min-distance", "peers"};
+  static const std::vector<std::string> names = {"corpus", "families",    "scenes",       "soups",
+                                                 "extra",  "metamorphic", "min-distance", "peers"};
   return names;
 }
 
@@ -290,7 +292,8 @@ Certificate certify(const CertifyOptions& options) {
   c.cgal = exact::cgal_library_version();
   c.gmp = exact::gmp_library_version();
   for (const CertifiedPlugin& p : c.options.plugins)  // the probe counts in the budget too
-    if (p.probe_cut) c.cut_short.push_back({"probe of plug-in " + p.name, p.probe_calls, 0, "calls"});
+    if (p.probe_cut)
+      c.cut_short.push_back({"probe of plug-in " + p.name, p.probe_calls, 0, "calls"});
   Certifier cert(c);
   run_stages(c, cert, c.options.stages.empty() ? certify_stages() : c.options.stages);
   return c;

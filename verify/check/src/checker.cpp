@@ -231,8 +231,7 @@ TimeTwin time_twin(const Query& q) {
 bool keeps_time_promise(TimePromise promise, const TimeCheck& c) {
   switch (promise) {
     case TimePromise::Enclosure:
-      return !c.no_answer && !c.garbage && !c.verdict_error && !c.late && c.enclosed &&
-             !c.too_wide;
+      return !c.no_answer && !c.garbage && !c.verdict_error && !c.late && c.enclosed && !c.too_wide;
     case TimePromise::NeverLate:
       return !c.no_answer && !c.garbage && !c.late;
     case TimePromise::None:
@@ -248,8 +247,8 @@ TimeCheck check_time_given(const Method& m, const Query& q, double width, const 
   c.verdict_error = said.hit != twin.hit;
   if (said.hit) {
     // Written so that NaN is garbage too; t_hi = +inf is no upper bound, not garbage.
-    c.garbage = !(0 <= said.t_lo && said.t_lo <= said.t_hi &&
-                  (said.t_hi <= 1 || no_upper_bound(said)));
+    c.garbage =
+        !(0 <= said.t_lo && said.t_lo <= said.t_hi && (said.t_hi <= 1 || no_upper_bound(said)));
     c.too_wide = !c.garbage && said.t_hi - said.t_lo > width;
   }
   if (twin.hit && !said.hit) c.late = true;  // a missed contact: the step passes through
@@ -268,8 +267,7 @@ TimeCheck check_time(const Method& m, const Query& q, double width, const TimeTw
   return check_time_given(m, q, width, m.time_of_impact(q, width), twin);
 }
 
-TimeCheck unanswered_time(const Method& m, const NoAnswer& e, double width,
-                          const TimeTwin& twin) {
+TimeCheck unanswered_time(const Method& m, const NoAnswer& e, double width, const TimeTwin& twin) {
   TimeCheck c;
   c.twin = twin, c.width = width;
   c.no_answer = true, c.limit = e.seconds;

@@ -13,8 +13,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::vector<char> run_and_time(const Method& m, const std::vector<Query>& qs,
-                               double& ns_per_query, const ProgressSink& progress) {
+std::vector<char> run_and_time(const Method& m, const std::vector<Query>& qs, double& ns_per_query,
+                               const ProgressSink& progress) {
   std::vector<char> verdict(qs.size(), kNotApplicable);
   std::vector<std::size_t> mine;
   for (std::size_t i = 0; i < qs.size(); ++i)

@@ -27,9 +27,8 @@ void print_block(std::ostream& os, const std::string& title, const ToiClassifica
     }
     // A never-late time is a lower bound: its t_hi (perhaps "no upper bound") encloses nothing
     // it promises, so its enclosure column is dropped.
-    const std::string encl = m.promise == TimePromise::NeverLate
-                                 ? "-"
-                                 : std::to_string(t.not_enclosed + t.too_wide);
+    const std::string encl =
+        m.promise == TimePromise::NeverLate ? "-" : std::to_string(t.not_enclosed + t.too_wide);
     os << fmt::format(
         "  {:<16} {:<16} {:>7} {:>7} {:>6} {:>7} {:>6} {:>10.3g} {:>10.3g} {:>10.1f}\n", m.name,
         to_string(m.promise), t.checked, t.late, t.zero, t.verdict_errors, encl, t.early_max(),

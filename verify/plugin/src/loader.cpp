@@ -230,9 +230,8 @@ QueryTest query_test(const LoadedPtr& p, const Verdicts& f) {
     if (!at_contact && !f.within) not_answered(p, q);
     const CallSite site{p->name.c_str(), at_contact ? f.contact_name : f.within_name, &q};
     int r = 0;
-    if (!plugin::returned_within_limit(site, [&] {
-          r = at_contact ? f.contact(x) : f.within(x, q.min_distance);
-        }))
+    if (!plugin::returned_within_limit(
+            site, [&] { r = at_contact ? f.contact(x) : f.within(x, q.min_distance); }))
       no_answer(p, site);
     return verdict(p, site, r);
   };
@@ -393,7 +392,8 @@ void probe_plugins(const Budget& budget) {
   std::vector<PendingProbe> pending;
   pending.swap(pending_probes());
   for (const PendingProbe& p : pending) {
-    const plugin::ProbeCut cut = plugin::probe(p.name, p.methods, p.boxes, limit_of_child(), budget);
+    const plugin::ProbeCut cut =
+        plugin::probe(p.name, p.methods, p.boxes, limit_of_child(), budget);
     loaded_list()[p.loaded].probe_cut = cut.cut;
     loaded_list()[p.loaded].probe_calls = cut.calls;
   }

@@ -24,8 +24,7 @@ struct ProbeCut {
 // garbage, ended early or went `seconds` without finishing a call. Once `budget` is spent the
 // child is stopped and the probe is cut short (docs/plugins.md, "Slow plug-ins").
 ProbeCut probe(const std::string& plugin, const std::vector<Method>& methods,
-               const std::vector<BoxMethod>& boxes, double seconds = 10,
-               const Budget& budget = {});
+               const std::vector<BoxMethod>& boxes, double seconds = 10, const Budget& budget = {});
 
 // Loads `file` (plug-in `path`) in a child and calls its fdh_plugin_init with `settings` (if it
 // has one), its fdh_plugin_flags and its entry point, so that a constructor or a

@@ -48,8 +48,8 @@ class MetamorphicCertifier {
   // query a plug-in gives no answer on (NoAnswer) is a broken promise of its method.
   using Said = std::map<std::string, std::optional<bool>>;
   std::optional<Violation> check(const Query& q, bool twin, std::vector<MetamorphicCheck>& rows,
-                                 std::vector<TransformCount>& transforms,
-                                 const Budget& budget = {}, const Said& said = {}) const;
+                                 std::vector<TransformCount>& transforms, const Budget& budget = {},
+                                 const Said& said = {}) const;
   // The same without the transforms' counts.
   std::optional<Violation> check(const Query& q, bool twin,
                                  std::vector<MetamorphicCheck>& rows) const;

@@ -128,13 +128,13 @@ struct TimeCheck {
   TimeTwin twin;
   double width = kDefaultToiWidth;  // the width asked
   bool verdict_error = false;       // said.hit differs from the exact verdict
-  bool late = false;      // a contact missed, or t_lo > t* (exactly): breaks either promise
-  bool enclosed = true;   // with both hits: t_lo <= t* <= t_hi, exactly
-  bool too_wide = false;  // with a hit said: t_hi - t_lo above the width asked
-  bool zero = false;      // t_lo == 0 said where 0 < t*
-  double early = 0;       // with both hits and not late: t* - t_lo, in step units (>= 0)
-  bool kept = true;       // the method's TimePromise is kept
-  bool garbage = false;   // not a time: not 0 <= t_lo <= t_hi <= 1 with a hit: breaks either
+  bool late = false;       // a contact missed, or t_lo > t* (exactly): breaks either promise
+  bool enclosed = true;    // with both hits: t_lo <= t* <= t_hi, exactly
+  bool too_wide = false;   // with a hit said: t_hi - t_lo above the width asked
+  bool zero = false;       // t_lo == 0 said where 0 < t*
+  double early = 0;        // with both hits and not late: t* - t_lo, in step units (>= 0)
+  bool kept = true;        // the method's TimePromise is kept
+  bool garbage = false;    // not a time: not 0 <= t_lo <= t_hi <= 1 with a hit: breaks either
   bool no_answer = false;  // no answer within --plugin-timeout (NoAnswer): breaks either
   double limit = 0;        // with no_answer: the time limit it passed, seconds
 };
@@ -164,7 +164,7 @@ TimeCheck check_time_given(const Method& m, const Query& q, double width, const 
 struct TimeTally {
   long checked = 0, contacts = 0;  // queries checked; those with an exact contact
   long verdict_errors = 0, late = 0, zero = 0, not_enclosed = 0, too_wide = 0, garbage = 0;
-  long no_answer = 0;  // calls past --plugin-timeout (each a broken promise)
+  long no_answer = 0;                     // calls past --plugin-timeout (each a broken promise)
   long broken = 0;                        // checks that broke the method's TimePromise
   std::vector<double> early;              // t* - t_lo of every contact found in time, step units
   std::vector<std::size_t> first_broken;  // indices into the caller's sequence, at most `keep`

@@ -105,8 +105,7 @@ struct Method {
   bool answers_min_distance = false;
 
   bool applies_to(const Query& q) const {
-    return bool(test[std::size_t(decision_of(q))]) &&
-           (q.min_distance == 0 || answers_min_distance);
+    return bool(test[std::size_t(decision_of(q))]) && (q.min_distance == 0 || answers_min_distance);
   }
   bool hit(const Query& q) const { return test[std::size_t(decision_of(q))](q); }
   // A time for q's TOI decision, and for q's δ (as applies_to).
