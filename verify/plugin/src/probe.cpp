@@ -101,27 +101,25 @@ void run_probes(int fd, const std::vector<Method>& methods, const std::vector<Bo
 
 using Clock = std::chrono::steady_clock;
 
-// Everything the child writes on `fd` until it closes it or `seconds` pass without a byte from
-// it; nullopt on timeout, or once `until` is past (`cut` is then set).
-std::optional<std::string> read_until_closed(int fd, double seconds, Clock::time_point until,
-                                             bool& cut) {
+// What the child writes on `fd`, into `text`, until it closes it (true), or until `seconds` pass
+// without a byte from it or `until` is past (false; `cut` says it was `until`).
+bool read_until_closed(int fd, double seconds, Clock::time_point until, std::string& text,
+                       bool& cut) {
   const auto quiet = std::chrono::duration_cast<Clock::duration>(
       std::chrono::duration<double>(std::min(seconds, 1e9)));
   auto deadline = std::min(Clock::now() + quiet, until);
-  std::string text;
   for (;;) {
     cut = Clock::now() >= until;
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-        deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) return std::nullopt;
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    if (left <= 0) return false;
     pollfd p{fd, POLLIN, 0};
-    const int ready = ::poll(&p, 1, int(left.count()));
-    if (ready < 0 && errno == EINTR) continue;
-    if (ready <= 0) continue;  // the deadline is checked above
+    const int ready = ::poll(&p, 1, int(std::min<long long>(left, 1000)));
+    if (ready <= 0) continue;  // EINTR, or the time: the deadline is checked above
     char buf[512];
     const ssize_t n = ::read(fd, buf, sizeof buf);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return text;
+    if (n <= 0) return true;
     text.append(buf, std::size_t(n));
     deadline = std::min(Clock::now() + quiet, until);
   }
@@ -155,15 +153,14 @@ Said talk(const std::string& what, double seconds, const Body& body,
   }
   ::close(fds[1]);
   Said said;
-  said.text = read_until_closed(fds[0], seconds, until, said.cut);
+  std::string text;
+  const bool closed = read_until_closed(fds[0], seconds, until, text, said.cut);
   ::close(fds[0]);
-  if (!said.text) process->kill();
+  if (!closed) process->kill();
   said.status = process->wait();
-  if (said.text) {
-    const std::size_t dots = said.text->find_first_not_of('.');
-    said.calls = long(dots == std::string::npos ? said.text->size() : dots);
-    said.text->erase(0, std::size_t(said.calls));
-  }
+  const std::size_t dots = text.find_first_not_of('.');
+  said.calls = long(dots == std::string::npos ? text.size() : dots);
+  if (closed) said.text = text.substr(std::size_t(said.calls));
   return said;
 }
 
