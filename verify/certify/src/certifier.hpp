@@ -122,7 +122,7 @@ class Certifier {
         if (m.test[std::size_t(d)]) zero_.promises.push_back({m.name, d, m.promise});
     for (const Method& m : timed_)
       for (const Decision d : kToiDecisions)
-        if (m.toi[toi_index(d)]) zero_.times.push_back({m.name, d, m.time_promise, {}});
+        if (m.toi[toi_index(d)]) zero_.times.push_back({m.name, d, m.time_promise, {}, {}});
     for (const BoxMethod& b : boxes_) {
       zero_.boxes.push_back({b.name, b.k});
       zero_.boxes.back().tree = b.builds_tree;
