@@ -100,9 +100,10 @@ TEST(SlowPlugins, ATightInclusionLikePlugInIsCertifiedToTheEnd) {
 // and said so, where it took 8 s.
 TEST(SlowPlugins, TheBudgetCoversTheStartUpProbe) {
   const fs::path d = fresh_temp_dir("slow_plugins_budget");
-  const Ended e = run_fdhcert({"certify", "--quick", "--out", (d / "out").string(), "--plugin",
-                               kTunable + ":delay=1", "--budget", "3"},
-                              d, 30);
+  const Ended e =
+      run_fdhcert({"certify", "--quick", "--corpus", FDH_SOURCE_DIR "/corpus", "--out",
+                   (d / "out").string(), "--plugin", kTunable + ":delay=1", "--budget", "3"},
+                  d, 30);
   EXPECT_EQ(e.status, 1) << e.err;
   EXPECT_LT(e.seconds, 3 + 1 + 1.5) << e.err;  // one call past it, and the writing
   EXPECT_TRUE(has(e.out, "NOT CERTIFIED (cut short by --budget)")) << e.out;
