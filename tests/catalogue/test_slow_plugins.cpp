@@ -91,7 +91,7 @@ TEST(SlowPlugins, ATightInclusionLikePlugInIsCertifiedToTheEnd) {
   EXPECT_EQ(not_a_time, 1);
   EXPECT_EQ(zero, 1);  // q1: t_lo = 0 where t* = 1/2
   const std::string md = text_of(d / "out" / "certificate.md");
-  EXPECT_TRUE(has(md, "**Violated**: 3 kinds of broken promise, each saved:")) << md;
+  EXPECT_TRUE(has(md, "3 kinds of broken promise, each saved with its first case:")) << md;
   EXPECT_TRUE(has(md, "1 not a time, ")) << md;
   EXPECT_TRUE(has(md, "(1 no answer in time)")) << md;
 }

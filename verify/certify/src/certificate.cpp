@@ -291,13 +291,15 @@ json plugins_json(const Certificate& c) {
 
 // The first words: certified, violated, or cut short by the budget (which certifies nothing).
 std::string verdict_markdown(const Certificate& c) {
-  if (c.broken_saved.size() > 1) {  // every kind of broken promise, each with its case
+  if (!c.first_violation.empty()) {  // the first, then every kind of broken promise found
     std::string all;
     for (const std::string& b : c.broken_saved) all += "\n- " + b + ".";
-    return fmt::format("**Violated**: {} kinds of broken promise, each saved:\n{}",
-                       c.broken_saved.size(), all);
+    return fmt::format("**Violated**: {}.", c.first_violation) +
+           (c.broken_saved.size() < 2 ? ""
+                                      : fmt::format("\n\n{} kinds of broken promise, each saved "
+                                                    "with its first case:\n{}",
+                                                    c.broken_saved.size(), all));
   }
-  if (!c.first_violation.empty()) return fmt::format("**Violated**: {}.", c.first_violation);
   if (c.complete()) return "**Certified**: no violation.";
   std::string cuts;
   for (const BudgetCut& cut : c.cut_short) cuts += (cuts.empty() ? "" : "; ") + cut_words(cut);
