@@ -10,8 +10,6 @@
 
 namespace fdh::verify {
 
-std::string join_words(const std::vector<std::string>& words);
-
 namespace {
 
 const char* const kCertifyAbout =
@@ -151,12 +149,6 @@ int run_certify(const CertifyCommand& cmd, const Io& io) {
 
 }  // namespace
 
-std::string join_words(const std::vector<std::string>& words) {
-  std::string out;
-  for (const std::string& w : words) out += (out.empty() ? "" : ",") + w;
-  return out;
-}
-
 std::vector<CertifiedPlugin> certified_plugins() {
   std::vector<CertifiedPlugin> out;
   for (const LoadedPlugin& p : loaded_plugins())
@@ -193,10 +185,12 @@ void add_certify_options(CLI::App& cmd, CertifyCommand& c) {
                           "asks again (default: 2^-20 of each query's scale); 0 skips\n"
                           "the stage");
   cmd.add_option("--stages", opt.stages,
-                 "the stages to run, in this order (default: all, " + join_words(certify_stages()) +
-                     "). metamorphic checks each query of the\n"
-                     "query stages under the transforms too, wherever it is\n"
-                     "listed. A slow plug-in: --stages families,corpus first")
+                 "the stages to run, in this order (default: all of\n"
+                 "corpus,families,scenes,soups,extra,metamorphic,\n"
+                 "min-distance,peers). metamorphic checks each query of\n"
+                 "the query stages under the transforms too, wherever it\n"
+                 "is listed. With a slow plug-in: --stages families,corpus,\n"
+                 "say")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->type_name("LIST")
