@@ -286,6 +286,7 @@ Certificate certify(const CertifyOptions& options) {
   c.options = options;
   if (c.options.per_family < 0) c.options.per_family = options.quick ? 200 : 3000;
   if (c.options.soups < 0) c.options.soups = options.quick ? 30 : 300;
+  if (!c.options.runs("soups")) c.options.soups = 0;  // none checked: none claimed
   if (c.options.scene_frames < 0) c.options.scene_frames = options.quick ? 600 : kMaxFrames;
   if (c.options.scene_stride < 1) c.options.scene_stride = options.quick ? 50 : 10;
   c.commit = build_commit();
