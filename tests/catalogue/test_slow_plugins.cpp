@@ -93,6 +93,7 @@ TEST(SlowPlugins, ATightInclusionLikePlugInIsCertifiedToTheEnd) {
   const std::string md = text_of(d / "out" / "certificate.md");
   EXPECT_TRUE(has(md, "3 kinds of broken promise, each saved with its first case:")) << md;
   EXPECT_TRUE(has(md, "1 not a time, ")) << md;
+  EXPECT_TRUE(has(md, "1 zero (" + file + ":1), ")) << md;  // the zero time, named
   EXPECT_TRUE(has(md, "(1 no answer in time)")) << md;
 }
 
@@ -118,12 +119,42 @@ TEST(SlowPlugins, ATwoSecondPerCallPlugInIsProbedToTheEnd) {
   const fs::path d = fresh_temp_dir("slow_plugins_two_seconds");
   std::ofstream(d / "one.vf")
       << "vf q1 0.25 0.25 1  0 0 0  1 0 0  0 1 0  0.25 0.25 -1  0 0 0  1 0 0  0 1 0  1\n";
-  const Ended e = run_fdhcert({"classify", (d / "one.vf").string(), "--plugin",
-                               kTunable + ":delay=2", "--methods", "exact,tunable"},
-                              d, 60);
+  const Ended e =
+      run_fdhcert({"classify", (d / "one.vf").string(), "--plugin", kTunable + ":delay=2",
+                   "--methods", "exact,tunable", "--progress", "always"},
+                  d, 60);
   EXPECT_EQ(e.status, 0) << e.err;
   EXPECT_GT(e.seconds, 16) << e.err;
   EXPECT_TRUE(has(e.out, "tunable ")) << e.out;
+  EXPECT_TRUE(has(e.err, "classify tunable: 0 of 1 queries")) << e.err;  // classify's progress
+}
+
+// Class 8: certify --stages runs the stages asked, in that order, and records them; classify
+// --time --toi times each time of impact too.
+TEST(SlowPlugins, CertifyRunsTheStagesAskedInTheirOrderAndClassifyTimesBoth) {
+  const fs::path d = fresh_temp_dir("slow_plugins_stages");
+  const Ended e = run_fdhcert(
+      {"certify", "--quick", "--corpus", FDH_SOURCE_DIR "/corpus", "--out", (d / "out").string(),
+       "--stages", "families,corpus", "--per-family", "10", "--progress", "always"},
+      d, 120);
+  ASSERT_EQ(e.status, 0) << e.err;
+  const std::size_t families = e.err.find("certify: generator families: ");
+  ASSERT_NE(families, std::string::npos) << e.err;
+  EXPECT_LT(families, e.err.find("certify: corpus: ")) << e.err;
+  EXPECT_TRUE(has(e.err, " queries")) << e.err;  // progress counts queries, not files
+  const nlohmann::json j = nlohmann::json::parse(text_of(d / "out" / "certificate.json"));
+  EXPECT_EQ(j["stages"], nlohmann::json({"families", "corpus"}));
+  EXPECT_GT(j["inputs"]["fuzzed_queries"], 0);
+  EXPECT_GT(j["inputs"]["corpus_queries"], 0);
+  EXPECT_EQ(j["inputs"]["scenes"], 0);
+  EXPECT_EQ(j["inputs"]["soup_pairs"], 0);
+  for (const auto& m : j["metamorphic"]) EXPECT_EQ(m["checked"], 0) << m;
+  const Ended t = run_fdhcert({"classify", ti_queries(d), "--methods", "robust,float-cubic",
+                               "--toi", "--time", "--rounds", "1"},
+                              d, 120);
+  ASSERT_EQ(t.status, 0) << t.err;
+  EXPECT_TRUE(has(t.out, "robust/toi ")) << t.out;
+  EXPECT_TRUE(has(t.out, "float-cubic/toi ")) << t.out;
 }
 
 // Class 8: a fuzz run that --budget stopped is paused, not broken: the same --out takes a run
