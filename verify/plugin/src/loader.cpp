@@ -5,13 +5,11 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -34,7 +32,9 @@ namespace {
 using plugin::CallSite;
 using plugin::check_promises;
 using plugin::check_settings;
+using plugin::copy_of_version;
 using plugin::InCall;
+using plugin::is_name;
 using plugin::refuse;
 using plugin::within_struct;
 
@@ -76,37 +76,11 @@ std::vector<PendingProbe>& pending_probes() {
   return pending;
 }
 
-// A letter or digit, then letters, digits and . _ + -: never a path like "..", since fuzz makes
-// folders of method names.
-bool is_name(const char* s) {
-  if (!s || !std::isalnum(static_cast<unsigned char>(s[0]))) return false;
-  std::size_t n = 0;
-  for (; s[n]; ++n)
-    if (n >= 40 || !(std::isalnum(static_cast<unsigned char>(s[n])) || std::strchr("._+-", s[n])))
-      return false;
-  return n > 0;
-}
-
 // The entry point: fdh_plugin_v2, else fdh_plugin_v1, and its name.
 std::pair<const fdh_plugin* (*)(), const char*> entry_point(void* lib, const std::string& path) {
   for (const char* name : {"fdh_plugin_v2", "fdh_plugin_v1"})
     if (void* f = ::dlsym(lib, name)) return {reinterpret_cast<const fdh_plugin* (*)()>(f), name};
   refuse(path, "exports neither fdh_plugin_v2 nor fdh_plugin_v1 (an fdhcert plug-in must)");
-}
-
-// The struct as far as its version has fields: a version-1 struct ends at kdop, so nothing
-// beyond is read (the version-2 fields stay zero: no time of impact).
-fdh_plugin copy_of_version(const fdh_plugin* p, const std::string& path) {
-  fdh_plugin api{};
-  if (p->abi_version == FDH_PLUGIN_ABI_VERSION)
-    api = *p;
-  else if (p->abi_version == FDH_PLUGIN_ABI_VERSION_1)
-    std::memcpy(static_cast<void*>(&api), p, offsetof(fdh_plugin, time_promise));
-  else
-    refuse(path, "ABI version " + std::to_string(p->abi_version) + ", but this fdhcert takes " +
-                     std::to_string(FDH_PLUGIN_ABI_VERSION_1) + " or " +
-                     std::to_string(FDH_PLUGIN_ABI_VERSION));
-  return api;
 }
 
 // How long a probing child may take: the call limit and then some, for the watchdog in the child
