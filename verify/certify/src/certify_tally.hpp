@@ -16,8 +16,8 @@ namespace fdh::verify {
 inline constexpr std::size_t kZeroNamed = 3;
 
 // What checking some queries (or soups) adds to the certificate: counts in the certificate's
-// rows, and the first violation of each kind. Parts of a run are merged in the order of their inputs,
-// so the certificate does not depend on how the run was cut (parallel.hpp).
+// rows, and the first violation of each kind. Parts of a run are merged in the order of their
+// inputs, so the certificate does not depend on how the run was cut (parallel.hpp).
 struct CertifyTally {
   std::vector<PromiseCheck> promises;
   std::vector<TimePromiseCheck> times;
