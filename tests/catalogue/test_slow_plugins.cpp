@@ -183,5 +183,27 @@ TEST(SlowPlugins, AFuzzRunCutShortByTheBudgetLetsAnotherFamilyUseTheOut) {
   EXPECT_TRUE(has(resumed.out, "20 cases (")) << resumed.out;
 }
 
+// Class 8: classify --toi asks a plug-in whose time gives its verdict (FDH_PLUGIN_TOI_GIVES_
+// VERDICT) once per query, not twice; the tables are the same.
+TEST(SlowPlugins, ClassifyAsksATimeThatGivesTheVerdictOncePerQuery) {
+  const fs::path d = fresh_temp_dir("slow_plugins_once");
+  const std::string queries = ti_queries(d);
+  const auto calls = [&](const std::string& once, std::string& out) {
+    const fs::path count = d / ("count" + once);
+    const Ended e =
+        run_fdhcert({"classify", queries, "--methods", "exact,ti-like", "--toi", "--plugin",
+                     kTiLike + ":delay=0.01,once=" + once + ",count=" + count.string()},
+                    d, 60);
+    EXPECT_EQ(e.status, 0) << e.err;
+    out = e.out.substr(0, e.out.find("ns/query"));  // the counts, not the times
+    return fs::file_size(count);
+  };
+  std::string twice_out, once_out;
+  const auto twice = calls("0", twice_out), once = calls("1", once_out);
+  // The 4 verdict calls saved (the probe's are the same; 10 ms a call: one timed pass each).
+  EXPECT_EQ(twice - once, 4u);
+  EXPECT_EQ(twice_out, once_out);
+}
+
 }  // namespace
 }  // namespace fdh::verify::slow_plugins

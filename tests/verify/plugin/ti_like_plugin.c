@@ -6,6 +6,8 @@
      delay=SECONDS  each call sleeps that long first (default 0)
      hang=X         never returns on a query whose first point has x = X (both functions)
      huge=X         says contact at [1e19, 1e19] on a query whose first point has x = X
+     once=1         fdh_plugin_flags says FDH_PLUGIN_TOI_GIVES_VERDICT (its time gives its verdict)
+     count=PATH     each call appends a byte to PATH (the tests count the calls)
    A query with x = NaN matches nothing, the default. */
 #include <fdh/plugin.h>
 #include <math.h>
@@ -15,6 +17,8 @@
 #include <time.h>
 
 static double delay, hang_x = NAN, huge_x = NAN;
+static unsigned flags;
+static char count_path[512];
 
 static void sleep_for(double seconds) {
   struct timespec t = {(time_t)seconds, (long)((seconds - (double)(time_t)seconds) * 1e9)};
@@ -24,6 +28,10 @@ static void sleep_for(double seconds) {
 
 /* A slow call, and the hang: the library's solver that never ends on one query. */
 static void enter(const double x[8][3]) {
+  if (count_path[0]) {
+    FILE* f = fopen(count_path, "a");
+    if (f) fputc('.', f), fclose(f);
+  }
   if (delay > 0) sleep_for(delay);
   if (x[0][0] == hang_x)
     for (;;) sleep_for(1);
@@ -50,7 +58,8 @@ static int edge_edge(const double x[8][3]) {
   enter(x);
   return boxes_meet(x, 0x33);
 }
-/* A lower bound of t*: 0 wherever the boxes meet, no upper bound; 1e19 on the `huge` query. */
+/* A lower bound of t*: 0 wherever the boxes meet, no upper bound; 1e19 on the `huge` query.
+   Its contact is the verdict's: the boxes' (one call of enter() for both). */
 static int time_of(int hit, const double x[8][3], double* t_lo, double* t_hi) {
   *t_lo = x[0][0] == huge_x ? 1e19 : 0;
   *t_hi = x[0][0] == huge_x ? 1e19 : FDH_TIME_NO_UPPER_BOUND;
@@ -74,7 +83,7 @@ static int read_number(const char* text, double* out) {
 
 const char* fdh_plugin_init(size_t n, const char* const* keys, const char* const* values) {
   static char why[200];
-  delay = 0, hang_x = NAN, huge_x = NAN;
+  delay = 0, hang_x = NAN, huge_x = NAN, flags = 0, count_path[0] = '\0';
   for (size_t i = 0; i < n; ++i) {
     double v = 0;
     const int ok = read_number(values[i], &v);
@@ -84,13 +93,22 @@ const char* fdh_plugin_init(size_t n, const char* const* keys, const char* const
       hang_x = v;
     else if (ok && strcmp(keys[i], "huge") == 0)
       huge_x = v;
+    else if (ok && strcmp(keys[i], "once") == 0 && (v == 0 || v == 1))
+      flags = v == 1 ? FDH_PLUGIN_TOI_GIVES_VERDICT : 0;
+    else if (strcmp(keys[i], "count") == 0 && strlen(values[i]) < sizeof count_path)
+      strcpy(count_path, values[i]);
     else {
-      snprintf(why, sizeof why, "cannot take %s=%s (it takes delay=0..60, hang=X, huge=X)", keys[i],
-               values[i]);
+      snprintf(why, sizeof why,
+               "cannot take %s=%s (it takes delay=0..60, hang=X, huge=X, once=0|1, count=PATH)",
+               keys[i], values[i]);
       return why;
     }
   }
   return NULL;
+}
+
+unsigned fdh_plugin_flags(void) {
+  return flags;
 }
 
 const struct fdh_plugin* fdh_plugin_v2(void) {

@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "fdh/classify/classification_output.hpp"
 #include "fdh/classify/toi_report.hpp"
@@ -32,6 +35,53 @@ const Method* named(const std::vector<Method>& methods, const std::string& name)
   for (const Method& m : methods)
     if (m.name == name) return &m;
   return nullptr;
+}
+
+// The times a verdict pass kept, by query (its bytes: kind, points, δ), for the time pass.
+using KeptTimes = std::shared_ptr<std::map<std::string, Toi>>;
+std::string key_of(const Query& q) {
+  std::string k(reinterpret_cast<const char*>(q.x.data()), sizeof(Vec3) * q.x.size());
+  k.append(reinterpret_cast<const char*>(&q.min_distance), sizeof q.min_distance);
+  return k + char(q.kind);
+}
+
+// With --toi, a method whose time gives its verdict (Method::verdict_from_toi) is called once
+// per query: its verdict pass calls the time function and keeps the time; its time pass reads
+// it back (and reports the verdict pass's ns per query, the calls' own time).
+std::pair<Method, Method> once_per_query(const Method& m, double width) {
+  const KeptTimes kept = std::make_shared<std::map<std::string, Toi>>();
+  Method verdict = m, time = m;
+  for (const Decision d : kQueryDecisions)
+    if (const QueryToi& toi = m.toi[d == Decision::EdgeEdgeCcd ? 1 : 0];
+        toi && m.test[std::size_t(d)])
+      verdict.test[std::size_t(d)] = [toi, width, kept](const Query& q) {
+        const Toi t = toi(q, width);
+        kept->emplace(key_of(q), t);
+        return t.hit;
+      };
+  for (QueryToi& toi : time.toi)
+    if (toi)
+      toi = [toi, kept](const Query& q, double w) {
+        const auto found = kept->find(key_of(q));
+        return found != kept->end() ? found->second : toi(q, w);
+      };
+  return {verdict, time};
+}
+
+// The verdict pass's ns per query as the time pass's, for the methods asked once per query.
+void once_per_query_times(const std::vector<Method>& methods, const ClassifiedFiles& c,
+                          ToiClassifiedFiles& toi) {
+  const auto copy = [&](const Classification& v, ToiClassification& t) {
+    for (ToiResult& r : t.methods)
+      for (const MethodResult& m : v.methods) {
+        const Method* asked = named(methods, m.name);
+        if (m.name == r.name && asked && asked->verdict_from_toi)
+          r.ns_per_query = m.tally.ns_per_query;
+      }
+  };
+  copy(c.total, toi.total);
+  for (std::size_t i = 0; i < c.files.size() && i < toi.files.size(); ++i)
+    copy(c.files[i].c, toi.files[i].second);
 }
 
 // With --toi, --time times each method's time of impact too, as a method of its own named
@@ -161,10 +211,15 @@ ClassifyResult classify_job(const ClassifyOptions& o) {
   r.methods = o.methods.empty() ? all_methods(o.gate) : select_methods(o.methods, o.gate);
   std::optional<QueryKind> kind;
   if (!o.kind.empty()) kind = o.kind == "edge-edge" ? QueryKind::EdgeEdge : QueryKind::VertexFace;
-  r.classified = classify_files(o.files, r.methods, kind, o.min_distance, o.progress);
+  std::vector<Method> verdicts = r.methods, times = r.methods;  // as asked in each pass
+  for (std::size_t i = 0; o.toi && i < r.methods.size(); ++i)
+    if (r.methods[i].verdict_from_toi)
+      std::tie(verdicts[i], times[i]) = once_per_query(r.methods[i], o.width);
+  r.classified = classify_files(o.files, verdicts, kind, o.min_distance, o.progress);
   r.findings = findings(r.classified.total, r.classified.all, r.methods, Place::LineAndId);
   if (o.toi) {
-    r.toi = classify_toi_files(r.classified, r.methods, o.width, o.progress);
+    r.toi = classify_toi_files(r.classified, times, o.width, o.progress);
+    once_per_query_times(r.methods, r.classified, *r.toi);
     r.time_findings = time_findings(r.toi->total, r.methods);
   }
   if (o.time || !o.time_ratio.empty()) r.timings = time_queries(o, r.classified.all, r.methods);

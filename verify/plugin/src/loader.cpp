@@ -118,7 +118,7 @@ fdh_plugin entry_struct(const std::string& path, const PluginSettings& settings,
   if (const std::optional<std::string> why = plugin::call_init(lib, path, settings))
     refuse(path, *why);
   flags = plugin::call_flags(lib, path);
-  if (flags & ~FDH_PLUGIN_THREAD_SAFE)
+  if (flags & ~(FDH_PLUGIN_THREAD_SAFE | FDH_PLUGIN_TOI_GIVES_VERDICT))
     refuse(path, "fdh_plugin_flags() has bits this fdhcert does not know (FDH_PLUGIN_* only)");
   const CallSite site{path.c_str(), entry_name};
   const fdh_plugin* returned = nullptr;
@@ -269,6 +269,7 @@ Method query_method(const LoadedPtr& p) {
   Method m;
   m.name = p->name;
   m.one_thread = p->one_thread();  // docs/plugins.md: one thread unless it says it is safe
+  m.verdict_from_toi = p->flags & FDH_PLUGIN_TOI_GIVES_VERDICT;
   m.summary = std::string(p->api.summary ? p->api.summary : "") + " (plug-in " + p->path + ")";
   const fdh_plugin& a = p->api;
   const fdh_min_distance w = p->within.value_or(fdh_min_distance{});

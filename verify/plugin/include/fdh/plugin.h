@@ -126,6 +126,12 @@ const char* fdh_plugin_init(size_t n, const char* const* keys, const char* const
  * keeps them on one thread. */
 #define FDH_PLUGIN_THREAD_SAFE 1u
 
+/* A bit of fdh_plugin_flags(): the contact its time-of-impact functions return (1 or 0) is its
+ * verdict, the same question its query functions answer (a solver whose verdict is its time, as
+ * Tight Inclusion's). `classify --toi` then calls the time function alone, once per query, and
+ * takes the verdict from it. Without it, the two are asked apart. */
+#define FDH_PLUGIN_TOI_GIVES_VERDICT 2u
+
 typedef unsigned (*fdh_plugin_flags_fn)(void);
 unsigned fdh_plugin_flags(void);
 

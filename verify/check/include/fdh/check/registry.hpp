@@ -95,6 +95,9 @@ struct Method {
   // Its functions are called from the calling thread only, one call at a time: a plug-in's
   // (docs/plugins.md promises no more). The built-in methods are safe from any thread.
   bool one_thread = false;
+  // Its time functions' contact is its verdict (a plug-in's FDH_PLUGIN_TOI_GIVES_VERDICT):
+  // classify --toi asks the time alone, once per query.
+  bool verdict_from_toi = false;
   // Its time of impact per TOI decision (indexed by toi_index), empty where it gives none, and
   // what that time promises.
   std::array<QueryToi, 2> toi{};
