@@ -14,7 +14,13 @@ set(fdh_whole_job_tests
   Kills.ReportKilledAnywhereAndInItsChartsLeavesWholeOutputs
   Kills.FuzzKilledAgainAndAgainAndResumedWithOtherOptionsEndsWithTheSameCases
   Plugin.CertifyCatchesAPlugInThatBreaksItsPromise
-  Plugin.CertifyCatchesALateTimeAndSavesTheCase)
+  Plugin.CertifyCatchesALateTimeAndSavesTheCase
+  SlowPlugins.ATightInclusionLikePlugInIsCertifiedToTheEnd
+  SlowPlugins.TheBudgetCoversTheStartUpProbe
+  SlowPlugins.ATwoSecondPerCallPlugInIsProbedToTheEnd
+  SlowPlugins.AFuzzRunCutShortByTheBudgetLetsAnotherFamilyUseTheOut
+  SlowPlugins.CertifyRunsTheStagesAskedInTheirOrderAndClassifyTimesBoth
+  SlowPlugins.ClassifyAsksATimeThatGivesTheVerdictOncePerQuery)
 # Seconds measured in the whole suite's run, in that order (load average 10 to 25): 165, 146,
 # 144, 76, 71, 43, 35, 31, 30, 28, 26, 26, 24, 22, 21; these 15 alone, again at -j2 (load about
 # 10): 28, 56, 56, 20, 26, 10, 8, 10, 13, 7, 10, 6, 11, 4, 9.
@@ -34,7 +40,8 @@ set(fdh_slow_tests
   AuditBruteForce.ViolationsEqualAllPairsOnFoldedSheets
   Kills.CertifyKilledAnywhereLeavesWholeOutputs
   AuditBruteForce.ViolationsEqualAllPairs
-  Certify.CertifiesTheCommittedCorpusAndCountsEveryCheck)
+  Certify.CertifiesTheCommittedCorpusAndCountsEveryCheck
+  SlowPlugins.ATwoSecondPerCallPlugInIsProbedToTheEnd)
 set(fdh_timed_tests
   Fuzz.KilledWithSigkillAndRestartedLosesNothing
   Fuzz.MovingRunKilledWithSigkillAndRestartedLosesNothing)

@@ -51,7 +51,8 @@ json promises_json(const std::vector<PromiseCheck>& promises) {
                    {"promise", to_string(p.promise)},
                    {"checked", p.checked},
                    {"decided_by_filter", p.filter_decided},
-                   {"violations", p.violations}});
+                   {"violations", p.violations},
+                   {"no_answer", p.no_answer}});
   return out;
 }
 
@@ -67,6 +68,7 @@ json times_json(const Certificate& c, const std::vector<TimePromiseCheck>& times
     j["early_max"] = t.early_max();
     j["early_median"] = t.early_median();
     j["violations"] = t.broken;
+    j["zero_queries"] = p.zero_queries;  // the first few
     out.push_back(std::move(j));
   }
   return out;
@@ -113,22 +115,38 @@ void inputs_markdown(Out to, const Certificate& c) {
   fmt::format_to(to, "| random triangle-soup pairs (tree) | {} |\n\n", c.options.soups);
 }
 
+// " (q.vf:1, 'gen', ...)": the first queries of the zero times, where there are any.
+std::string zero_names(const TimePromiseCheck& p) {
+  std::string named;
+  for (const std::string& z : p.zero_queries) named += (named.empty() ? "" : ", ") + z;
+  if (named.empty()) return "";
+  return " (" + named + (p.tally.zero > long(p.zero_queries.size()) ? ", ...)" : ")");
+}
+
+// "2 not a time, 1 no answer in time, " where a plug-in gave such times (each a violation).
+std::string faults_words(const TimeTally& t) {
+  return (t.garbage ? fmt::format("{} not a time, ", t.garbage) : "") +
+         (t.no_answer ? fmt::format("{} no answer in time, ", t.no_answer) : "");
+}
+
 void promise_rows(Out to, const std::vector<PromiseCheck>& promises,
                   const std::vector<TimePromiseCheck>& times) {
   for (const PromiseCheck& p : promises)
-    fmt::format_to(to, "| {} verdict {} | `{}` | – | {} queries{} | {} |\n", to_string(p.decision),
-                   promise_words(p.promise), p.method, p.checked,
-                   p.filter_decided
-                       ? fmt::format(" ({} decided by the float filter alone)", p.filter_decided)
-                       : std::string(),
-                   p.violations);
+    fmt::format_to(
+        to, "| {} verdict {} | `{}` | – | {} queries{} | {} |\n", to_string(p.decision),
+        promise_words(p.promise), p.method, p.checked,
+        (p.filter_decided ? fmt::format(" ({} decided by the float filter alone)", p.filter_decided)
+                          : std::string()) +
+            (p.no_answer ? fmt::format(" ({} no answer in time)", p.no_answer) : ""),
+        p.violations);
   for (const TimePromiseCheck& p : times)
     fmt::format_to(to,
-                   "| {} time {} | `{}` | – | {} queries ({} contacts; {} late, {} zero, "
+                   "| {} time {} | `{}` | – | {} queries ({} contacts; {} late, {} zero{}, {}"
                    "earliest by {:.3g} of the step, median {:.3g}) | {} |\n",
                    to_string(p.decision), time_promise_words(p.promise), p.method, p.tally.checked,
-                   p.tally.contacts, p.tally.late, p.tally.zero, p.tally.early_max(),
-                   p.tally.early_median(), p.tally.broken);
+                   p.tally.contacts, p.tally.late, p.tally.zero, zero_names(p),
+                   faults_words(p.tally), p.tally.early_max(), p.tally.early_median(),
+                   p.tally.broken);
 }
 
 void properties_markdown(Out to, const Certificate& c) {
@@ -274,7 +292,15 @@ json plugins_json(const Certificate& c) {
 
 // The first words: certified, violated, or cut short by the budget (which certifies nothing).
 std::string verdict_markdown(const Certificate& c) {
-  if (!c.first_violation.empty()) return fmt::format("**Violated**: {}.", c.first_violation);
+  if (!c.first_violation.empty()) {  // the first, then every kind of broken promise found
+    std::string all;
+    for (const std::string& b : c.broken_saved) all += "\n- " + b + ".";
+    return fmt::format("**Violated**: {}.", c.first_violation) +
+           (c.broken_saved.size() < 2 ? ""
+                                      : fmt::format("\n\n{} kinds of broken promise, each saved "
+                                                    "with its first case:\n{}",
+                                                    c.broken_saved.size(), all));
+  }
   if (c.complete()) return "**Certified**: no violation.";
   std::string cuts;
   for (const BudgetCut& cut : c.cut_short) cuts += (cuts.empty() ? "" : "; ") + cut_words(cut);
@@ -357,6 +383,7 @@ std::string certificate_json(const Certificate& c) {
       {"gmp", c.gmp},
       {"mode", mode(c)},
       {"seed", c.options.seed},
+      {"stages", c.options.stages.empty() ? certify_stages() : c.options.stages},
       {"inputs", inputs_json(c)},
       {"kdop_contains_exact", boxes},
       {"tree_no_false_cull", culls},
@@ -367,7 +394,8 @@ std::string certificate_json(const Certificate& c) {
       {"metamorphic_transforms", transforms_json(c.metamorphic_transforms)},
       {"min_distance", delta_json(c)},
       {"peers", peers_json(c.peers)},
-      {"first_violation", c.first_violation}};
+      {"first_violation", c.first_violation},
+      {"broken_promises", c.broken_saved}};
   return json_text(j, "certificate.json");
 }
 
@@ -375,9 +403,11 @@ std::string certificate_markdown(const Certificate& c) {
   fmt::memory_buffer out;
   const auto to = std::back_inserter(out);
   fmt::format_to(to, "# fdhcert certificate\n\n{}\n", verdict_markdown(c));
+  std::string stages;  // the stages given, when not all in the default order
+  for (const std::string& s : c.options.stages) stages += (stages.empty() ? " --stages " : ",") + s;
   fmt::format_to(
-      to, "\nCommit `{}`, CGAL {}, GMP {}, {} run, seed {}. Made by `fdhcert certify{}`.\n\n",
-      c.commit, c.cgal, c.gmp, mode(c), c.options.seed, c.options.quick ? " --quick" : "");
+      to, "\nCommit `{}`, CGAL {}, GMP {}, {} run, seed {}. Made by `fdhcert certify{}{}`.\n\n",
+      c.commit, c.cgal, c.gmp, mode(c), c.options.seed, c.options.quick ? " --quick" : "", stages);
   plugins_markdown(to, c);
   inputs_markdown(to, c);
   properties_markdown(to, c);

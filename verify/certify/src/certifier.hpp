@@ -5,6 +5,8 @@
 
 #include "fdh/certify/certify.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <optional>
@@ -31,56 +33,10 @@
 #include "fdh/scene/scene_report.hpp"
 #include "fdh/scene/scene_run.hpp"
 
+#include "certify_tally.hpp"
+
 namespace fdh::verify {
 namespace fs = std::filesystem;
-
-// What checking some queries (or soups) adds to the certificate: counts in the certificate's
-// rows, and the first violation found. Parts of a run are merged in the order of their inputs,
-// so the certificate does not depend on how the run was cut (parallel.hpp).
-struct CertifyTally {
-  std::vector<PromiseCheck> promises;
-  std::vector<TimePromiseCheck> times;
-  std::vector<BoxCheck> boxes;
-  std::vector<MetamorphicCheck> metamorphic;
-  std::vector<TransformCount> transforms;  // the metamorphic transforms applied and skipped
-  long truths = 0, truth_violations = 0;
-  long queries = 0;  // the queries checked (certify counts them per source)
-  long skipped = 0;  // the queries not checked: the budget was spent (fdh/os/budget.hpp)
-  // The first violation: its words, and the case file that shows it (a name in out_dir and
-  // the file's text); written only when it is the certificate's first.
-  struct Found {
-    std::string what, file, text;
-  };
-  std::optional<Found> first;
-
-  void add(const CertifyTally& later) {
-    for (std::size_t i = 0; i < promises.size(); ++i) {
-      promises[i].checked += later.promises[i].checked;
-      promises[i].filter_decided += later.promises[i].filter_decided;
-      promises[i].violations += later.promises[i].violations;
-    }
-    for (std::size_t i = 0; i < times.size(); ++i) times[i].tally.merge(later.times[i].tally, 0);
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-      const BoxCheck& b = later.boxes[i];
-      boxes[i].boxes += b.boxes, boxes[i].box_violations += b.box_violations;
-      boxes[i].soup_pairs += b.soup_pairs, boxes[i].exact_pairs += b.exact_pairs;
-      boxes[i].cull_violations += b.cull_violations;
-    }
-    for (std::size_t i = 0; i < metamorphic.size(); ++i) {
-      metamorphic[i].checked += later.metamorphic[i].checked;
-      metamorphic[i].violations += later.metamorphic[i].violations;
-      metamorphic[i].judged += later.metamorphic[i].judged;
-      metamorphic[i].broken += later.metamorphic[i].broken;
-    }
-    for (std::size_t i = 0; i < transforms.size(); ++i) {
-      transforms[i].applied += later.transforms[i].applied;
-      transforms[i].skipped += later.transforms[i].skipped;
-    }
-    truths += later.truths, truth_violations += later.truth_violations;
-    queries += later.queries, skipped += later.skipped;
-    if (!first) first = later.first;
-  }
-};
 
 // Every method with a promise, on every query decision it makes and every box it builds, against
 // the exact twin through the checker (check/checker.hpp). The checks are const: each writes into
@@ -96,14 +52,15 @@ class Certifier {
         methods_(stage_methods(promised_methods(), delta)),
         timed_(stage_methods(time_promised_methods(), delta)),
         boxes_(delta ? std::vector<BoxMethod>() : all_box_methods()),
-        metamorphic_(stage_methods(all_methods(), delta)) {
+        metamorphic_(c.options.runs("metamorphic") ? stage_methods(all_methods(), delta)
+                                                   : std::vector<Method>()) {
     fs::create_directories(c.options.files_dir());
     for (const Method& m : methods_)
       for (const Decision d : kQueryDecisions)
         if (m.test[std::size_t(d)]) zero_.promises.push_back({m.name, d, m.promise});
     for (const Method& m : timed_)
       for (const Decision d : kToiDecisions)
-        if (m.toi[toi_index(d)]) zero_.times.push_back({m.name, d, m.time_promise, {}});
+        if (m.toi[toi_index(d)]) zero_.times.push_back({m.name, d, m.time_promise, {}, {}});
     for (const BoxMethod& b : boxes_) {
       zero_.boxes.push_back({b.name, b.k});
       zero_.boxes.back().tree = b.builds_tree;
@@ -146,13 +103,17 @@ class Certifier {
 
   // t's counts into the certificate; its violation, if the certificate's first, saved.
   void record(const CertifyTally& t) {
+    for (const CertifyTally::Found& f : t.found) {
+      if (total_.has(f.key)) continue;                              // this kind is saved already
+      const fs::path file = fs::path(c_.options.out_dir) / f.file;  // as the user names it
+      // A query that breaks two promises is one file, with the first one's words.
+      if (written_.insert(f.file).second)
+        write_file_atomically((fs::path(c_.options.files_dir()) / f.file).string(), f.text);
+      c_.broken_saved.push_back(f.what + ", saved to " + file.string());
+      if (c_.first_violation.empty()) c_.first_violation = c_.broken_saved.back();
+    }
     total_.add(t);
     write_counts();
-    if (!t.first || !c_.first_violation.empty()) return;
-    const fs::path file = fs::path(c_.options.out_dir) / t.first->file;  // as the user names it
-    write_file_atomically((fs::path(c_.options.files_dir()) / t.first->file).string(),
-                          t.first->text);
-    c_.first_violation = t.first->what + ", saved to " + file.string();
   }
 
  private:
@@ -192,11 +153,27 @@ class Certifier {
     }
     const bool twin = twin_hit(q);
     check_truth(r, twin, t);
-    if (const auto broken = metamorphic_.check(q, twin, t.metamorphic, t.transforms, budget())) {
+    // The query as drawn first: where it already breaks a promise, that is the case saved, and
+    // its verdicts are not asked again under the transforms.
+    MetamorphicCertifier::Said said;
+    std::set<std::string> broke;  // methods that broke a promise on q as drawn
+    check_verdicts(r, twin, t, said, broke);
+    check_times(r, twin, t, broke);
+    if (const auto broken =
+            metamorphic_.check(q, twin, t.metamorphic, t.transforms, budget(), said)) {
       QueryRecord saved = with_truth(r, twin);  // the truth, id and place of q: the transform's
       saved.query = broken->saved;
-      violation(saved, broken->what, t, broken->before(with_truth(r, twin)));
+      if (!broke.count(broken->method))
+        violation(saved, broken->method + "/metamorphic", broken->what, t,
+                  broken->before(with_truth(r, twin)));
     }
+  }
+
+  // Each promised method's verdict on q against the twin; `said` gets the verdicts (nullopt: no
+  // answer in time), `broke` the methods that broke their promise.
+  void check_verdicts(const QueryRecord& r, bool twin, CertifyTally& t,
+                      MetamorphicCertifier::Said& said, std::set<std::string>& broke) const {
+    const Query& q = r.query;
     const Decision d = decision_of(q);
     for (std::size_t i = 0; i < t.promises.size(); ++i) {
       PromiseCheck& p = t.promises[i];
@@ -206,16 +183,26 @@ class Certifier {
       const auto& filter = m.filter[std::size_t(d)];
       p.filter_decided += filter && filter(q) != Filtered::Uncertain;
       ++p.checked;
-      const Verdicts v = check(m, q, twin);
+      Verdicts v;
+      try {
+        v = check(m, q, twin);
+      } catch (const NoAnswer& e) {  // abandoned: a broken promise on q, and the run goes on
+        v = unanswered(m, e, twin);
+      }
+      said[m.name] = v.no_answer ? std::nullopt : std::optional<bool>(v.said);
       if (v.kept) continue;
       ++p.violations;
-      violation(with_truth(r, twin), describe(m, v) + " (" + to_string(d) + ")", t);
+      p.no_answer += v.no_answer;
+      broke.insert(m.name);
+      violation(with_truth(r, twin),
+                m.name + "/" + to_string(d) + (v.no_answer ? "/no-answer" : "/verdict"),
+                describe(m, v) + " (" + to_string(d) + ")", t);
     }
-    check_times(r, twin, t);
   }
 
   // Each time-promised method's time of impact against the exact earliest contact.
-  void check_times(const QueryRecord& r, bool twin, CertifyTally& t) const {
+  void check_times(const QueryRecord& r, bool twin, CertifyTally& t,
+                   std::set<std::string>& broke) const {
     if (t.times.empty()) return;
     const Query& q = r.query;
     const Decision d = toi_decision_of(q);
@@ -224,10 +211,21 @@ class Certifier {
       if (row.decision != d) continue;
       const Method& m = named(timed_, row.method);
       if (q.min_distance > 0 && !m.answers_min_distance) continue;
-      const TimeCheck c = check_time(m, q, c_.options.toi_width, exact);
+      TimeCheck c;
+      try {
+        c = check_time(m, q, c_.options.toi_width, exact);
+      } catch (const NoAnswer& e) {
+        c = unanswered_time(m, e, c_.options.toi_width, exact);
+      }
       row.tally.add(c, 0, 0);
-      if (!c.kept)
-        violation(with_truth(r, twin), judged_time_words(m, c) + " (" + to_string(d) + ")", t);
+      if (c.zero && row.zero_queries.size() < kZeroNamed)
+        row.zero_queries.push_back(r.file.empty() ? "'" + r.id + "'"
+                                                  : r.file + ":" + std::to_string(r.line));
+      if (c.kept) continue;
+      broke.insert(m.name);
+      const char* kind = c.no_answer ? "/no-answer" : c.garbage ? "/not-a-time" : "/time";
+      violation(with_truth(r, twin), m.name + "/" + to_string(d) + kind,
+                judged_time_words(m, c) + " (" + to_string(d) + ")", t);
     }
   }
 
@@ -242,7 +240,7 @@ class Certifier {
     ++t.truths;
     if (*agrees) return;
     ++t.truth_violations;
-    violation(q,
+    violation(q, "truth",
               "exact says " + std::string(twin ? "hit" : "no") + ", the stored truth says " +
                   (q.truth == Truth::Yes ? "hit" : "no"),
               t);
@@ -280,10 +278,21 @@ class Certifier {
     for (std::size_t i = 0; i < boxes_.size(); ++i) {
       BoxCheck& box = t.boxes[i];
       ++box.boxes;
-      const int s = check_box(boxes_[i], pts.data(), pts.size());
+      int s = -1;
+      try {
+        s = check_box(boxes_[i], pts.data(), pts.size());
+      } catch (const NoAnswer& e) {
+        ++box.box_violations;
+        violation(q, box.method + "/" + std::to_string(box.k) + "/no-answer",
+                  box.method + " gives no " + std::to_string(box.k) + "-DOP of " +
+                      std::to_string(pts.size()) + " of its points in " +
+                      fmt::format("{:g}", e.seconds) + " s",
+                  t);
+        continue;
+      }
       if (s < 0) continue;
       ++box.box_violations;
-      violation(q,
+      violation(q, box.method + "/" + std::to_string(box.k) + "/box",
                 "the " + box.method + " " + std::to_string(box.k) + "-DOP of " +
                     std::to_string(pts.size()) + " of its points misses the exact extent in slab " +
                     std::to_string(s),
@@ -291,22 +300,24 @@ class Certifier {
     }
   }
 
-  // `note`, if not empty, is a second comment in the saved case.
-  static void violation(const QueryRecord& q, const std::string& what, CertifyTally& t,
-                        const std::string& note = "") {
-    if (t.first) return;
+  // The first violation of its kind (`key`) in t is kept; `note`, if not empty, is a second
+  // comment in the saved case.
+  static void violation(const QueryRecord& q, const std::string& key, const std::string& what,
+                        CertifyTally& t, const std::string& note = "") {
+    if (t.has(key)) return;
     std::vector<std::string> comments = {"certify: " + what + "."};
     if (!note.empty()) comments.push_back(note);
-    t.first = CertifyTally::Found{
+    t.keep(CertifyTally::Found{
+        key,
         what + " (query " + q.id + " from " +
             (q.file.empty() ? "a generator" : q.file + ":" + std::to_string(q.line)) + ")",
-        "violation-" + case_hash(q.query) + ".vf", case_file_text(q, comments)};
+        "violation-" + case_hash(q.query) + ".vf", case_file_text(q, comments)});
   }
 
   // A missed pair is saved as an OBJ: A at t = 0, A at t = 1 (its swept leaves), and B.
   static void soup_violation(const Soup& a, const Soup& b, int k, std::pair<int, int> p,
                              CertifyTally& t) {
-    if (t.first) return;
+    if (t.has("tree")) return;
     std::ostringstream os;
     os << "# certify: the " << k << "-DOP tree missed the pair (" << p.first << ", " << p.second
        << ") whose exact " << k << "-DOPs overlap\n";
@@ -326,8 +337,8 @@ class Certifier {
     object("A_t0", a.x0, a.tris);
     object("A_t1", a.x1, a.tris);
     object("B", b.x0, b.tris);
-    t.first = CertifyTally::Found{"the " + std::to_string(k) + "-DOP tree missed a pair",
-                                  "violation-tree.obj", os.str()};
+    t.keep(CertifyTally::Found{"tree", "the " + std::to_string(k) + "-DOP tree missed a pair",
+                               "violation-tree.obj", os.str()});
   }
 
   Certificate& c_;
@@ -336,8 +347,9 @@ class Certifier {
   const std::vector<Method> timed_;
   const std::vector<BoxMethod> boxes_;
   const MetamorphicCertifier metamorphic_;
-  CertifyTally zero_;   // every row, every count 0
-  CertifyTally total_;  // what record() has merged so far
+  CertifyTally zero_;              // every row, every count 0
+  CertifyTally total_;             // what record() has merged so far
+  std::set<std::string> written_;  // the case files written, by name
 };
 
 }  // namespace fdh::verify

@@ -63,7 +63,8 @@ CertifyTally scene_tally(const std::string& file, const CertifyOptions& o, const
 }
 
 void tell(const Certificate& c, const std::string& stage, long done, long total) {
-  const std::string unit = stage == "generator families" || stage == "minimum separation"
+  const std::string unit = stage == "generator families" || stage == "minimum separation" ||
+                                   stage == "corpus" || stage == "extra files"
                                ? "queries"
                            : stage == "scenes" ? "scenes"
                            : total > 0         ? "files"
@@ -111,18 +112,30 @@ PeerOptions peer_options(const CertifyOptions& o) {
   return p;
 }
 
-// Files whole or not at all: each is read (so that a cut can say of how many queries) and its
-// queries checked while the budget lasts.
+// Queries of `files`, read first (so that progress and a cut can say of how many queries), then
+// checked in batches while the budget lasts; progress counts queries.
+long check_files(Certificate& c, Certifier& cert, const std::string& stage,
+                 const std::vector<std::vector<QueryRecord>>& files) {
+  long total = 0, done = 0;
+  for (const auto& qs : files) total += long(qs.size());
+  const std::size_t batch = 64;  // a slow plug-in's progress, between queries
+  for (const auto& qs : files)
+    for (std::size_t i = 0; i < qs.size(); i += batch) {
+      tell(c, stage, done, total);
+      const std::size_t end = std::min(qs.size(), i + batch);
+      done +=
+          cert.check_queries({qs.begin() + std::ptrdiff_t(i), qs.begin() + std::ptrdiff_t(end)});
+    }
+  note_cut(c, stage, done, total, "queries");
+  return done;
+}
+
 void check_corpus(Certificate& c, Certifier& cert) {
-  const std::vector<std::string> files = list_query_files(c.options.corpus_dir);
-  long total = 0;
-  for (const std::string& f : files) {
-    tell(c, "corpus", c.corpus_files++, long(files.size()));
-    const std::vector<QueryRecord> qs = read_native(f);
-    total += long(qs.size());
-    c.corpus_queries += cert.check_queries(qs);
-  }
-  note_cut(c, "corpus", c.corpus_queries, total, "queries");
+  std::vector<std::vector<QueryRecord>> files;
+  for (const std::string& f : list_query_files(c.options.corpus_dir))
+    files.push_back(read_native(f));
+  c.corpus_files = long(files.size());
+  c.corpus_queries = check_files(c, cert, "corpus", files);
 }
 
 // per_family queries of every family, family j from stream j, in batches: drawn on this thread
@@ -174,13 +187,7 @@ std::vector<std::vector<QueryRecord>> read_inputs_first(const CertifyOptions& o)
 
 void check_extra_files(Certificate& c, Certifier& cert,
                        const std::vector<std::vector<QueryRecord>>& extra) {
-  long done = 0, total = 0;
-  for (const std::vector<QueryRecord>& qs : extra) {
-    tell(c, "extra files", done++, long(extra.size()));
-    total += long(qs.size());
-    c.extra_queries += cert.check_queries(qs);
-  }
-  note_cut(c, "extra files", c.extra_queries, total, "queries");
+  c.extra_queries = check_files(c, cert, "extra files", extra);
 }
 
 // The δ a contact query is asked at again: the D given, else 2^-20 of the query's scale (the
@@ -243,43 +250,71 @@ void check_delta(Certificate& c) {
         {"minimum separation", d.family_queries + d.contact_queries, 0, "queries"});
 }
 
-// The metamorphic checks ran with the queries above: once the budget stopped those, the
-// transforms of the queries not reached were not checked either.
+// The metamorphic checks ran with the queries of the query stages: once the budget stopped one
+// of those, the transforms of the queries not reached were not checked either. Said after the
+// last cut of a query stage.
 void note_metamorphic_cut(Certificate& c) {
-  if (c.cut_short.empty()) return;
-  long checked = 0;
-  for (const MetamorphicCheck& m : c.metamorphic) checked += m.checked;
-  c.cut_short.push_back({"metamorphic", checked, 0, "transformed queries"});
+  if (!c.options.runs("metamorphic")) return;
+  const auto after = std::find_if(c.cut_short.rbegin(), c.cut_short.rend(), [](const BudgetCut& b) {
+    return b.stage != "minimum separation" && b.stage != "peers";
+  });
+  if (after == c.cut_short.rend()) return;
+  long checked = 0;  // transformed queries, each once however many methods were asked on it
+  for (const TransformCount& t : c.metamorphic_transforms) checked += t.applied;
+  c.cut_short.insert(after.base(), {"metamorphic", checked, 0, "transformed queries"});
+}
+
+void check_peers(Certificate& c) {
+  if (c.options.budget.spent()) return c.cut_short.push_back({"peers", 0, 0, ""});  // not run
+  tell(c, "peers", 0, 0);
+  c.peers = certify_peers(peer_options(c.options));
+  if (c.first_violation.empty()) c.first_violation = c.peers.first_own_violation;
+}
+
+// The stages of `names`, in that order; metamorphic is a flag of the query stages.
+void run_stages(Certificate& c, Certifier& cert, const std::vector<std::string>& names,
+                const std::vector<std::vector<QueryRecord>>& extra) {
+  for (const std::string& s : names) {
+    if (s == "corpus") check_corpus(c, cert);
+    if (s == "families") check_families(c, cert);
+    if (s == "scenes") check_scenes(c, cert);
+    if (s == "soups") check_soups(c, cert);
+    if (s == "extra") check_extra_files(c, cert, extra);
+    if (s == "min-distance") check_delta(c);
+    if (s == "peers") check_peers(c);
+  }
+  note_metamorphic_cut(c);
 }
 
 }  // namespace
+
+const std::vector<std::string>& certify_stages() {
+  static const std::vector<std::string> names = {"corpus", "families",    "scenes",       "soups",
+                                                 "extra",  "metamorphic", "min-distance", "peers"};
+  return names;
+}
+
+bool CertifyOptions::runs(const std::string& stage) const {
+  return stages.empty() || std::find(stages.begin(), stages.end(), stage) != stages.end();
+}
 
 Certificate certify(const CertifyOptions& options) {
   Certificate c;
   c.options = options;
   if (c.options.per_family < 0) c.options.per_family = options.quick ? 200 : 3000;
   if (c.options.soups < 0) c.options.soups = options.quick ? 30 : 300;
+  if (!c.options.runs("soups")) c.options.soups = 0;  // none checked: none claimed
   if (c.options.scene_frames < 0) c.options.scene_frames = options.quick ? 600 : kMaxFrames;
   if (c.options.scene_stride < 1) c.options.scene_stride = options.quick ? 50 : 10;
   c.commit = build_commit();
   c.cgal = exact::cgal_library_version();
   c.gmp = exact::gmp_library_version();
   const std::vector<std::vector<QueryRecord>> extra = read_inputs_first(c.options);
+  for (const CertifiedPlugin& p : c.options.plugins)  // the probe counts in the budget too
+    if (p.probe_cut)
+      c.cut_short.push_back({"probe of plug-in " + p.name, p.probe_calls, 0, "calls"});
   Certifier cert(c);
-  check_corpus(c, cert);
-  check_families(c, cert);
-  check_scenes(c, cert);
-  check_soups(c, cert);
-  check_extra_files(c, cert, extra);
-  note_metamorphic_cut(c);
-  check_delta(c);
-  if (c.options.budget.spent()) {
-    c.cut_short.push_back({"peers", 0, 0, ""});  // not run
-    return c;
-  }
-  tell(c, "peers", 0, 0);
-  c.peers = certify_peers(peer_options(c.options));
-  if (c.first_violation.empty()) c.first_violation = c.peers.first_own_violation;
+  run_stages(c, cert, c.options.stages.empty() ? certify_stages() : c.options.stages, extra);
   return c;
 }
 

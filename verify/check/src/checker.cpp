@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "fdh/exact/ccd.hpp"
@@ -20,6 +21,14 @@ bool keeps_promise(Promise promise, bool said, bool twin) {
       return true;
   }
   return false;
+}
+
+Verdicts unanswered(const Method& m, const NoAnswer& e, bool twin) {
+  Verdicts v;
+  v.twin = twin, v.said = !twin;
+  v.no_answer = true, v.limit = e.seconds;
+  v.kept = m.promise == Promise::None;
+  return v;
 }
 
 Verdicts check(const Method& m, const Query& q, bool twin) {
@@ -159,6 +168,17 @@ std::string judgement_words(Judgement j, TimePromise p) {
 
 namespace {
 
+// "5 s", "0.25 s": a time limit in words.
+std::string seconds_words(double s) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%g s", s);
+  return text;
+}
+
+std::string broken_words(const Method& m) {
+  return judgement_words(Judgement::Broken, m.promise);
+}
+
 // What a disagreement is: named as a fault where a promise judges it, plainly where none does.
 std::string disagreement_phrase(Promise p, bool said) {
   if (p == Promise::None)
@@ -188,6 +208,9 @@ void DisagreementTally::merge(const DisagreementTally& o) {
 
 std::string describe(const Method& m, const Verdicts& v) {
   const auto word = [](bool hit) { return hit ? "hit" : "no"; };
+  if (v.no_answer)
+    return m.name + " gives no answer in " + seconds_words(v.limit) + ", the exact twin says " +
+           word(v.twin) + (m.promise == Promise::None ? " (no promise)" : " " + broken_words(m));
   std::string out = m.name + " says " + word(v.said) + ", the exact twin says " + word(v.twin);
   if (v.said == v.twin) return out;
   if (m.promise == Promise::None) return out + " (no promise)";
@@ -208,9 +231,9 @@ TimeTwin time_twin(const Query& q) {
 bool keeps_time_promise(TimePromise promise, const TimeCheck& c) {
   switch (promise) {
     case TimePromise::Enclosure:
-      return !c.garbage && !c.verdict_error && !c.late && c.enclosed && !c.too_wide;
+      return !c.no_answer && !c.garbage && !c.verdict_error && !c.late && c.enclosed && !c.too_wide;
     case TimePromise::NeverLate:
-      return !c.garbage && !c.late;
+      return !c.no_answer && !c.garbage && !c.late;
     case TimePromise::None:
       return true;
   }
@@ -223,15 +246,16 @@ TimeCheck check_time_given(const Method& m, const Query& q, double width, const 
   c.said = said, c.twin = twin, c.width = width;
   c.verdict_error = said.hit != twin.hit;
   if (said.hit) {
-    // Written so that NaN is garbage too.
-    c.garbage = !(0 <= said.t_lo && said.t_lo <= said.t_hi && said.t_hi <= 1);
+    // Written so that NaN is garbage too; t_hi = +inf is no upper bound, not garbage.
+    c.garbage =
+        !(0 <= said.t_lo && said.t_lo <= said.t_hi && (said.t_hi <= 1 || no_upper_bound(said)));
     c.too_wide = !c.garbage && said.t_hi - said.t_lo > width;
   }
   if (twin.hit && !said.hit) c.late = true;  // a missed contact: the step passes through
   if (twin.hit && said.hit && !c.garbage) {
     const int lo = exact::compare_with_toi(q, said.t_lo);
     c.late = lo > 0;
-    c.enclosed = lo <= 0 && exact::compare_with_toi(q, said.t_hi) >= 0;
+    c.enclosed = lo <= 0 && (no_upper_bound(said) || exact::compare_with_toi(q, said.t_hi) >= 0);
     c.zero = said.t_lo == 0 && lo < 0;
     c.early = c.late ? 0 : std::max(0.0, twin.t_star - said.t_lo);
   }
@@ -243,6 +267,18 @@ TimeCheck check_time(const Method& m, const Query& q, double width, const TimeTw
   return check_time_given(m, q, width, m.time_of_impact(q, width), twin);
 }
 
+TimeCheck unanswered_time(const Method& m, const NoAnswer& e, double width, const TimeTwin& twin) {
+  TimeCheck c;
+  c.twin = twin, c.width = width;
+  c.no_answer = true, c.limit = e.seconds;
+  c.kept = m.time_promise == TimePromise::None;
+  return c;
+}
+
+bool no_upper_bound(const Toi& t) {
+  return t.t_hi == std::numeric_limits<double>::infinity();
+}
+
 TimeCheck check_time(const Method& m, const Query& q, double width) {
   return check_time(m, q, width, time_twin(q));
 }
@@ -252,6 +288,7 @@ void TimeTally::add(const TimeCheck& c, std::size_t index, std::size_t keep) {
   contacts += c.twin.hit;
   verdict_errors += c.verdict_error, late += c.late, zero += c.zero;
   not_enclosed += !c.enclosed, too_wide += c.too_wide, garbage += c.garbage;
+  no_answer += c.no_answer;
   if (c.twin.hit && c.said.hit && !c.late && !c.garbage) early.push_back(c.early);
   if (c.kept) return;
   ++broken;
@@ -261,7 +298,7 @@ void TimeTally::add(const TimeCheck& c, std::size_t index, std::size_t keep) {
 void TimeTally::merge(const TimeTally& o, std::size_t offset) {
   checked += o.checked, contacts += o.contacts, verdict_errors += o.verdict_errors;
   late += o.late, zero += o.zero, not_enclosed += o.not_enclosed, too_wide += o.too_wide;
-  garbage += o.garbage, broken += o.broken;
+  garbage += o.garbage, no_answer += o.no_answer, broken += o.broken;
   early.insert(early.end(), o.early.begin(), o.early.end());
   for (const std::size_t i : o.first_broken)
     if (first_broken.size() < 16) first_broken.push_back(offset + i);
@@ -292,7 +329,9 @@ std::string number(double v) {
 std::string describe(const Method& m, const TimeCheck& c) {
   const std::string enclosure = "[" + number(c.said.t_lo) + ", " + number(c.said.t_hi) + "]";
   const std::string t_star = "t* ~ " + number(c.twin.t_star);
-  if (c.garbage) return m.name + "'s TOI " + enclosure + " is not an interval of [0, 1]";
+  if (c.no_answer) return m.name + " gives no answer in " + seconds_words(c.limit);
+  if (c.garbage)
+    return m.name + "'s TOI " + enclosure + " is not a time (not 0 <= t_lo <= t_hi <= 1)";
   if (c.late && !c.said.hit)
     return m.name + " says no contact, the exact twin finds one at " + t_star;
   if (c.late) return m.name + "'s TOI is late: t_lo = " + number(c.said.t_lo) + " > " + t_star;

@@ -13,14 +13,16 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::vector<char> run_and_time(const Method& m, const std::vector<Query>& qs,
-                               double& ns_per_query) {
+std::vector<char> run_and_time(const Method& m, const std::vector<Query>& qs, double& ns_per_query,
+                               const ProgressSink& progress) {
   std::vector<char> verdict(qs.size(), kNotApplicable);
   std::vector<std::size_t> mine;
   for (std::size_t i = 0; i < qs.size(); ++i)
     if (m.applies_to(qs[i])) mine.push_back(i);
+  PassProgress told{progress, "classify " + m.name, long(mine.size())};
   const double seconds = seconds_per_pass([&] {
-    for (const std::size_t i : mine) verdict[i] = m.hit(qs[i]);
+    for (std::size_t k = 0; k < mine.size(); ++k) told.at(k), verdict[mine[k]] = m.hit(qs[mine[k]]);
+    told.first = false;
   });
   ns_per_query = mine.empty() ? 0 : seconds * 1e9 / double(mine.size());
   return verdict;
@@ -60,7 +62,7 @@ const char* truth_source_name(TruthSource s) {
 
 Classification classify(const std::vector<Query>& queries,
                         const std::vector<std::optional<bool>>& truth,
-                        const std::vector<Method>& methods) {
+                        const std::vector<Method>& methods, const ProgressSink& progress) {
   if (!truth.empty() && truth.size() != queries.size())
     throw std::invalid_argument("classify: one truth per query, or none");
   Classification c;
@@ -94,7 +96,7 @@ Classification classify(const std::vector<Query>& queries,
     MethodResult r;
     r.name = m.name;
     r.promise = m.promise;
-    r.verdict = run_and_time(m, queries, r.tally.ns_per_query);
+    r.verdict = run_and_time(m, queries, r.tally.ns_per_query, progress);
     for (std::size_t i = 0; i < queries.size(); ++i) {
       if (r.verdict[i] == kNotApplicable) {
         ++r.tally.na;

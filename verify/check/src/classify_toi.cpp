@@ -7,7 +7,8 @@ namespace fdh::verify {
 namespace {
 
 // m's times on every query it gives one for, timed on this thread.
-ToiResult run_and_time(const Method& m, const std::vector<Query>& qs, double width) {
+ToiResult run_and_time(const Method& m, const std::vector<Query>& qs, double width,
+                       const ProgressSink& progress) {
   ToiResult r;
   r.name = m.name;
   r.promise = m.time_promise;
@@ -17,8 +18,11 @@ ToiResult run_and_time(const Method& m, const std::vector<Query>& qs, double wid
   for (std::size_t i = 0; i < qs.size(); ++i)
     if (m.gives_toi(qs[i])) mine.push_back(i), r.applies[i] = 1;
   r.na = long(qs.size() - mine.size());
+  PassProgress told{progress, "classify --toi " + m.name, long(mine.size())};
   const double seconds = seconds_per_pass([&] {
-    for (const std::size_t i : mine) r.said[i] = m.time_of_impact(qs[i], width);
+    for (std::size_t k = 0; k < mine.size(); ++k)
+      told.at(k), r.said[mine[k]] = m.time_of_impact(qs[mine[k]], width);
+    told.first = false;
   });
   r.ns_per_query = mine.empty() ? 0 : seconds * 1e9 / double(mine.size());
   return r;
@@ -27,7 +31,8 @@ ToiResult run_and_time(const Method& m, const std::vector<Query>& qs, double wid
 }  // namespace
 
 ToiClassification classify_toi(const std::vector<Query>& queries,
-                               const std::vector<Method>& methods, double width) {
+                               const std::vector<Method>& methods, double width,
+                               const ProgressSink& progress) {
   ToiClassification c;
   c.width = width;
   c.queries = queries.size();
@@ -36,7 +41,7 @@ ToiClassification classify_toi(const std::vector<Query>& queries,
   for_each_index(queries.size(), 16, [&](std::size_t i) { c.twin[i] = time_twin(queries[i]); });
   for (const Method& m : methods) {
     if (!m.toi[0] && !m.toi[1]) continue;
-    ToiResult r = run_and_time(m, queries, width);
+    ToiResult r = run_and_time(m, queries, width, progress);
     r.checks.resize(queries.size());
     for_each_index(queries.size(), 16, [&](std::size_t i) {
       if (r.applies[i]) r.checks[i] = check_time_given(m, queries[i], width, r.said[i], c.twin[i]);

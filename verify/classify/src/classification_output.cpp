@@ -194,7 +194,10 @@ std::string per_query_csv(const std::vector<QueryRecord>& queries, const Classif
   os << ",contact,time" << (toi ? toi_csv_header(*toi) : "") << "\n";
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const QueryRecord& q = queries[i];
-    os << csv_field(prefix ? q.file + ":" + q.id : q.id) << ',' << int(c.reference[i]);
+    // FILE:LINE is the query's true place (a CSV query's id is its number in the file, which
+    // as FILE:ID looked like a line).
+    os << csv_field(prefix ? q.file + ":" + std::to_string(q.line) + " " + q.id : q.id) << ','
+       << int(c.reference[i]);
     for (const MethodResult& m : c.methods) os << ',' << verdict_field(m.verdict[i]);
     const auto [contact, time] = contact_columns(q.query);
     os << ',' << contact << ',' << time << (toi ? toi_csv_fields(*toi, i) : "") << '\n';

@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "fdh/classify/classification_output.hpp"
 #include "fdh/classify/toi_report.hpp"
@@ -34,6 +37,70 @@ const Method* named(const std::vector<Method>& methods, const std::string& name)
   return nullptr;
 }
 
+// The times a verdict pass kept, by query (its bytes: kind, points, δ), for the time pass.
+using KeptTimes = std::shared_ptr<std::map<std::string, Toi>>;
+std::string key_of(const Query& q) {
+  std::string k(reinterpret_cast<const char*>(q.x.data()), sizeof(Vec3) * q.x.size());
+  k.append(reinterpret_cast<const char*>(&q.min_distance), sizeof q.min_distance);
+  return k + char(q.kind);
+}
+
+// With --toi, a method whose time gives its verdict (Method::verdict_from_toi) is called once
+// per query: its verdict pass calls the time function and keeps the time; its time pass reads
+// it back (and reports the verdict pass's ns per query, the calls' own time).
+std::pair<Method, Method> once_per_query(const Method& m, double width) {
+  const KeptTimes kept = std::make_shared<std::map<std::string, Toi>>();
+  Method verdict = m, time = m;
+  for (const Decision d : kQueryDecisions)
+    if (const QueryToi& toi = m.toi[d == Decision::EdgeEdgeCcd ? 1 : 0];
+        toi && m.test[std::size_t(d)])
+      verdict.test[std::size_t(d)] = [toi, width, kept](const Query& q) {
+        const Toi t = toi(q, width);
+        kept->emplace(key_of(q), t);
+        return t.hit;
+      };
+  for (QueryToi& toi : time.toi)
+    if (toi)
+      toi = [toi, kept](const Query& q, double w) {
+        const auto found = kept->find(key_of(q));
+        return found != kept->end() ? found->second : toi(q, w);
+      };
+  return {verdict, time};
+}
+
+// The verdict pass's ns per query as the time pass's, for the methods asked once per query.
+void once_per_query_times(const std::vector<Method>& methods, const ClassifiedFiles& c,
+                          ToiClassifiedFiles& toi) {
+  const auto copy = [&](const Classification& v, ToiClassification& t) {
+    for (ToiResult& r : t.methods)
+      for (const MethodResult& m : v.methods) {
+        const Method* asked = named(methods, m.name);
+        if (m.name == r.name && asked && asked->verdict_from_toi)
+          r.ns_per_query = m.tally.ns_per_query;
+      }
+  };
+  copy(c.total, toi.total);
+  for (std::size_t i = 0; i < c.files.size() && i < toi.files.size(); ++i)
+    copy(c.files[i].c, toi.files[i].second);
+}
+
+// With --toi, --time times each method's time of impact too, as a method of its own named
+// "NAME/toi": its "verdict" on a query is the time function's contact.
+std::vector<Method> toi_as_methods(const std::vector<Method>& selected, double width) {
+  std::vector<Method> out;
+  for (const Method& m : selected) {
+    if (!m.toi[0] && !m.toi[1]) continue;
+    Method t;
+    t.name = m.name + "/toi";
+    t.answers_min_distance = m.answers_min_distance;
+    for (const Decision d : kQueryDecisions)
+      if (const QueryToi& toi = m.toi[d == Decision::EdgeEdgeCcd ? 1 : 0])
+        t.test[std::size_t(d)] = [toi, width](const Query& q) { return toi(q, width).hit; };
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
 QueryTimings time_queries(const ClassifyOptions& o, const std::vector<QueryRecord>& records,
                           const std::vector<Method>& selected) {
   const std::vector<Query> qs = queries_of(records);
@@ -51,6 +118,11 @@ QueryTimings time_queries(const ClassifyOptions& o, const std::vector<QueryRecor
     t.spreads = time_spreads(std::vector<std::vector<double>>(
                                  t.ns.begin(), t.ns.begin() + std::ptrdiff_t(selected.size())),
                              selected);
+  if (o.time && o.toi) {
+    const std::vector<Method> tois = toi_as_methods(selected, o.width);
+    const std::vector<TimeSpread> more = time_spreads(time_each_query(qs, tois, o.rounds), tois);
+    t.spreads.insert(t.spreads.end(), more.begin(), more.end());
+  }
   if (o.time_ratio.empty()) return t;
   for (const std::vector<double>& times : t.ns) {  // each method's mean, each query timed alone
     double sum = 0;
@@ -139,10 +211,15 @@ ClassifyResult classify_job(const ClassifyOptions& o) {
   r.methods = o.methods.empty() ? all_methods(o.gate) : select_methods(o.methods, o.gate);
   std::optional<QueryKind> kind;
   if (!o.kind.empty()) kind = o.kind == "edge-edge" ? QueryKind::EdgeEdge : QueryKind::VertexFace;
-  r.classified = classify_files(o.files, r.methods, kind, o.min_distance);
+  std::vector<Method> verdicts = r.methods, times = r.methods;  // as asked in each pass
+  for (std::size_t i = 0; o.toi && i < r.methods.size(); ++i)
+    if (r.methods[i].verdict_from_toi)
+      std::tie(verdicts[i], times[i]) = once_per_query(r.methods[i], o.width);
+  r.classified = classify_files(o.files, verdicts, kind, o.min_distance, o.progress);
   r.findings = findings(r.classified.total, r.classified.all, r.methods, Place::LineAndId);
   if (o.toi) {
-    r.toi = classify_toi_files(r.classified, r.methods, o.width);
+    r.toi = classify_toi_files(r.classified, times, o.width, o.progress);
+    once_per_query_times(r.methods, r.classified, *r.toi);
     r.time_findings = time_findings(r.toi->total, r.methods);
   }
   if (o.time || !o.time_ratio.empty()) r.timings = time_queries(o, r.classified.all, r.methods);

@@ -15,7 +15,7 @@ void ask_at(std::vector<QueryRecord>& records, double min_distance) {
 
 ClassifiedFiles classify_files(const std::vector<std::string>& files,
                                const std::vector<Method>& methods, std::optional<QueryKind> kind,
-                               double min_distance) {
+                               double min_distance, const ProgressSink& progress) {
   std::vector<std::pair<std::string, std::vector<QueryRecord>>> read;  // every file read first
   for (const std::string& f : files) {
     std::vector<QueryRecord> qs = read_query_file(f, kind);
@@ -28,7 +28,7 @@ ClassifiedFiles classify_files(const std::vector<std::string>& files,
   for (auto& [file, qs] : read) {
     const std::vector<Query> queries = queries_of(qs);
     const RecordScope asking(qs, queries);  // a plug-in's crash names FILE:LINE
-    parts.push_back(classify(queries, truths_of(qs), methods));
+    parts.push_back(classify(queries, truths_of(qs), methods, progress));
     out.files.push_back({file, parts.back()});
     out.all.insert(out.all.end(), qs.begin(), qs.end());
   }
@@ -37,16 +37,18 @@ ClassifiedFiles classify_files(const std::vector<std::string>& files,
 }
 
 ToiClassifiedFiles classify_toi_files(const ClassifiedFiles& classified,
-                                      const std::vector<Method>& methods, double width) {
+                                      const std::vector<Method>& methods, double width,
+                                      const ProgressSink& progress) {
   ToiClassifiedFiles out;
   std::vector<ToiClassification> parts;
   std::size_t begin = 0;
   for (const FileClassification& f : classified.files) {
     const auto first = classified.all.begin() + std::ptrdiff_t(begin);
-    const std::vector<Query> qs =
-        queries_of(std::vector<QueryRecord>(first, first + std::ptrdiff_t(f.c.queries)));
+    const std::vector<QueryRecord> records(first, first + std::ptrdiff_t(f.c.queries));
+    const std::vector<Query> qs = queries_of(records);
     begin += f.c.queries;
-    parts.push_back(classify_toi(qs, methods, width));
+    const RecordScope asking(records, qs);  // a plug-in's hang or crash names FILE:LINE
+    parts.push_back(classify_toi(qs, methods, width, progress));
     out.files.emplace_back(f.file, parts.back());
   }
   out.total = join(parts);

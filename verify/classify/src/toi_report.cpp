@@ -25,10 +25,14 @@ void print_block(std::ostream& os, const std::string& title, const ToiClassifica
       os << fmt::format("  {:<16} {:<16} {:>7}\n", m.name, to_string(m.promise), "n/a");
       continue;
     }
+    // A never-late time is a lower bound: its t_hi (perhaps "no upper bound") encloses nothing
+    // it promises, so its enclosure column is dropped.
+    const std::string encl =
+        m.promise == TimePromise::NeverLate ? "-" : std::to_string(t.not_enclosed + t.too_wide);
     os << fmt::format(
         "  {:<16} {:<16} {:>7} {:>7} {:>6} {:>7} {:>6} {:>10.3g} {:>10.3g} {:>10.1f}\n", m.name,
-        to_string(m.promise), t.checked, t.late, t.zero, t.verdict_errors,
-        t.not_enclosed + t.too_wide, t.early_max(), t.early_median(), m.ns_per_query);
+        to_string(m.promise), t.checked, t.late, t.zero, t.verdict_errors, encl, t.early_max(),
+        t.early_median(), m.ns_per_query);
   }
 }
 
@@ -42,6 +46,8 @@ void add_time_counts(Json& j, const TimeTally& t) {
   j["verdict_errors"] = t.verdict_errors;
   j["not_enclosed"] = t.not_enclosed;
   j["too_wide"] = t.too_wide;
+  j["not_a_time"] = t.garbage;
+  j["no_answer"] = t.no_answer;
 }
 
 namespace {

@@ -10,6 +10,7 @@
 #include "suite_commands.hpp"
 
 namespace fdh::verify {
+
 namespace {
 
 const char* const kCertifyAbout =
@@ -24,6 +25,11 @@ under the method's promise, and counts every check:
   - each method that promises exact answers (robust) equals the twin on every
     query of each decision it makes: static vertex-face, moving vertex-face and
     edge-edge (CCD);
+  - each time of impact under its time promise (robust's exact enclosure; a
+    plug-in's never-late or exact-enclosure, FDH_TIME_NO_UPPER_BOUND allowed
+    to a never-late one): a late time, a missed contact, a time outside
+    [0, 1] ("not a time") and, for a plug-in, a call past --plugin-timeout
+    ("no answer in T s") each break it; zero times and how early are counted;
   - the exact twin = the stored truth wherever a query has one (corpus,
     benchmark CSV);
   - peers (fdhcert peers, docs/peers.md): the own k-DOPs beside FCL's and
@@ -51,9 +57,11 @@ the first 600 frames and every 50th with --quick), and the EXTRA FILES
 
 const char* const kCertifyFooter =
     R"(Writes DIR/certificate.json and DIR/certificate.md: counts, seed, the CGAL and
-GMP versions and the git commit. On any violation the first violating case is
-saved in DIR as a corpus file (a .vf query, or an .obj for a tree), named in
-the output, and the exit status is 1. With --budget, a run that runs out of time
+GMP versions and the git commit. On any violation the first case of each kind
+of broken promise (a method, a decision, and what broke) is saved in DIR as a
+corpus file (a .vf query, or an .obj for a tree), each named in the output,
+and the exit status is 1. A plug-in call past --plugin-timeout is abandoned
+and counted so, on that query; the run goes on. With --budget, a run that runs out of time
 stops at a clean point, writes both files whole with the stages cut short and
 how far each got, says NOT CERTIFIED and exits with status 1.)";
 
@@ -137,7 +145,8 @@ int run_certify(const CertifyCommand& cmd, const Io& io) {
     io.err << " (" << (dir / "certificate.md").string() << ")\n";
     return 1;
   }
-  io.err << "fdhcert: certify: " << c.first_violation << "\n";
+  for (const std::string& broken : c.broken_saved) io.err << "fdhcert: certify: " << broken << "\n";
+  if (c.broken_saved.empty()) io.err << "fdhcert: certify: " << c.first_violation << "\n";
   return 1;
 }
 
@@ -146,7 +155,7 @@ int run_certify(const CertifyCommand& cmd, const Io& io) {
 std::vector<CertifiedPlugin> certified_plugins() {
   std::vector<CertifiedPlugin> out;
   for (const LoadedPlugin& p : loaded_plugins())
-    out.push_back({p.file, p.name, p.settings, p.thread_safe});
+    out.push_back({p.file, p.name, p.settings, p.thread_safe, p.probe_cut, p.probe_calls});
   return out;
 }
 
@@ -178,6 +187,17 @@ void add_certify_options(CLI::App& cmd, CertifyCommand& c) {
                           "the minimum-separation stage's δ for the contact queries it\n"
                           "asks again (default: 2^-20 of each query's scale); 0 skips\n"
                           "the stage");
+  cmd.add_option("--stages", opt.stages,
+                 "the stages to run, in this order (default: all of\n"
+                 "corpus,families,scenes,soups,extra,metamorphic,\n"
+                 "min-distance,peers). metamorphic checks each query of\n"
+                 "the query stages under the transforms too, wherever it\n"
+                 "is listed. With a slow plug-in: --stages families,corpus,\n"
+                 "say")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->type_name("LIST")
+      ->check(one_of(certify_stages()));
   add_threads_option(cmd, c.threads, "the checks");
   add_quiet_flag(cmd, c.progress);
   cmd.add_option("EXTRA", opt.extra_files,

@@ -61,7 +61,8 @@ With --time it also holds
                "p90_ns": .., "max_ns": .., "slowest": WHERE}, ...}}
 each method's thread CPU time per query over the queries it applies to, each
 query timed alone (the least disturbed of --rounds batches, a batch long enough
-for the clock). With --time-ratio BASE it
+for the clock); with --toi also "NAME/toi", each method's time of impact timed
+the same way. With --time-ratio BASE it
 also holds
   "time_ratio": {"to": BASE, "limit": R, "queries": N,
                  "mean_ns": {"robust": .., "exact": ..}, "methods": {"robust":
@@ -82,6 +83,7 @@ struct ClassifyCli {
   ClassifyOptions job;
   bool json = false, check = false;
   std::string per_query;
+  ProgressWhen progress = ProgressWhen::Auto;
 };
 
 int run_classify(const ClassifyCli& o, const Io& io) {
@@ -89,11 +91,14 @@ int run_classify(const ClassifyCli& o, const Io& io) {
   ClassifyOptions job = o.job;
   if (!job.kind.empty()) job.kind = job.kind == "ee" ? "edge-edge" : "vertex-face";  // --kind
   ClassifyResult r;
+  ProgressLine progress(io.err, progress_wanted(io, o.progress));
+  job.progress = progress.sink();  // off a terminal: lines once the run has taken 10 s
   try {
     r = classify_job(job);
   } catch (const std::invalid_argument& e) {  // the options, checked by the job
     throw UsageError(e.what());
   }
+  progress.clear();
   if (!o.per_query.empty()) write_file_atomically(o.per_query, r.per_query_csv());
   if (o.json)
     print_json(io.out, r.to_json());
@@ -139,6 +144,7 @@ Command add_classify(CLI::App& app) {
                   "(a rational, or lo..hi)")
       ->type_name("FILE");
   add_plugin_option(*cmd);
+  add_quiet_flag(*cmd, cli->progress);
   cmd->add_option("--time-ratio", o->time_ratio,
                   "also time each query alone (thread CPU time, the least\n"
                   "disturbed of --rounds batches) and print each method's\n"
@@ -153,7 +159,8 @@ Command add_classify(CLI::App& app) {
                 "also time each query alone (thread CPU time, the least\n"
                 "disturbed of --rounds batches) and print each method's\n"
                 "median, 90th percentile and maximum per query (and the\n"
-                "slowest query), beside the table's wall-clock means");
+                "slowest query), beside the table's wall-clock means; with\n"
+                "--toi, each time of impact too (rows NAME/toi)");
   add_number_option(*cmd, "--rounds", o->rounds,
                     "--time's and --time-ratio's timed batches per query and\n"
                     "method (default 7)",

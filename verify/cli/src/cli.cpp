@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "fdh/check/registry.hpp"
 #include "fdh/help/help_layout.hpp"
 #include "fdh/io/input_error.hpp"
 #include "fdh/os/standard_output.hpp"
@@ -20,8 +21,9 @@ const char* const kFooter =
     "Exit status: 0 success, 1 a check or certificate failed, 2 bad input or usage,\n"
     "a bound passed, or an output (standard output included) that could not be\n"
     "written; every output path is checked before a run starts (docs/limits.md);\n"
-    "3 a --plugin crashed, hung past --plugin-timeout, called exit() or answered\n"
-    "garbage (docs/plugins.md), or an internal error; 128+N killed by signal N\n"
+    "3 a --plugin crashed, called exit() or answered garbage, or hung past\n"
+    "--plugin-timeout where no promise check counts it (certify does: a broken\n"
+    "promise; docs/plugins.md), or an internal error; 128+N killed by signal N\n"
     "(this run's temporary files removed first).";
 
 std::vector<Command> add_commands(CLI::App& app) {
@@ -105,12 +107,16 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   try {
     if (const std::optional<int> status = parse(app, args, io))
       return checked_output(*status, out, err);
+    probe_plugins(run_budget());  // --plugin's, within --budget wherever it was given
     return checked_output(run_command(commands, io), out, err);
   } catch (const UsageError& e) {
     err << "fdhcert: " << e.what() << "\n";
   } catch (const InputError& e) {
     err << "fdhcert: error: " << e.what() << "\n";
   } catch (const PluginFailure& e) {  // a plug-in crashed when probed, or answered garbage
+    err << "fdhcert: " << e.what() << "\n";
+    return kPluginFailureStatus;
+  } catch (const NoAnswer& e) {  // a hang where no promise check counts it (classify, fuzz)
     err << "fdhcert: " << e.what() << "\n";
     return kPluginFailureStatus;
   } catch (const std::runtime_error& e) {  // I/O failures while writing output

@@ -37,7 +37,11 @@ CLI::Option* add_threads_option(CLI::App& cmd, int& threads, const std::string& 
 CLI::Option* add_budget_option(CLI::App& cmd, Budget& budget, const std::string& what) {
   return cmd
       .add_option_function<double>(
-          "--budget", [&budget](double seconds) { budget = Budget(seconds, run_start()); },
+          "--budget",
+          [&budget](double seconds) {
+            budget = Budget(seconds, run_start());
+            set_run_budget(budget);  // the plug-ins' probe, after the command line, heeds it
+          },
           "seconds the whole run may take (default: no limit): " + what +
               "\nstop at a clean point once it is spent, the outputs are\n"
               "written whole and say what was cut short. A plug-in call\n"
@@ -50,7 +54,9 @@ CLI::Option* add_plugin_option(CLI::App& cmd) {
   cmd.add_option_function<double>(
          "--plugin-timeout", [](double seconds) { set_plugin_timeout(seconds); },
          "seconds one plug-in call may take (default 5; 0: no limit).\n"
-         "A call over it ends the run with exit status 3, naming the\n"
+         "A call over it is abandoned: certify counts a broken promise\n"
+         "'no answer in T s' on that query, saves the case and goes\n"
+         "on; the other commands end with exit status 3, naming the\n"
          "plug-in, the function and the query (docs/plugins.md).\n"
          "Give it before --plugin to limit loading too")
       ->type_name("SECONDS")
@@ -62,7 +68,7 @@ CLI::Option* add_plugin_option(CLI::App& cmd) {
           [](const std::string& arg) {
             const PluginArgument a = parse_plugin_argument(arg);
             try {
-              load_plugin(a.file, a.settings);
+              load_plugin(a.file, a.settings, false);  // probed after the command line
             } catch (const PluginLoadError& e) {
               throw UsageError(e.what());
             }
@@ -71,8 +77,9 @@ CLI::Option* add_plugin_option(CLI::App& cmd) {
           "(fdh/plugin.h); its methods run like the built-in ones.\n"
           "FILE:key=value,key2=value2 passes settings to its\n"
           "fdh_plugin_init ('::' for a ':' in FILE). Repeatable.\n"
-          "A plug-in that crashes, answers garbage, calls exit() or\n"
-          "hangs ends the run with a message and exit status 3\n"
+          "A plug-in that crashes, answers garbage or calls exit()\n"
+          "ends the run with a message and exit status 3; a hang and a\n"
+          "time outside [0, 1] are broken promises in certify\n"
           "(docs/plugins.md)")
       ->type_name("FILE")
       ->trigger_on_parse()

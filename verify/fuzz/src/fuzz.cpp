@@ -54,14 +54,19 @@ MarkerContent read_marker(const std::string& p) {
   return r;
 }
 
-// Refuses to start while OUT/.fuzz holds an unfinished run other than `ours`: its cases would
-// be left half done under a run that looks resumed.
+// A run folder's mark of a run that --budget stopped, cleanly (its cases marked, its outputs
+// whole): paused, not broken, so that other runs may start beside it (issue 34).
+constexpr const char* kPausedMark = "/paused-by-budget";
+
+// Refuses to start while OUT/.fuzz holds an unfinished run other than `ours` that did not stop
+// cleanly (killed, or a worker failed): its cases would be left half done under a run that looks
+// resumed. A run paused by --budget is resumed by its own command, whatever ran between.
 void refuse_other_unfinished_runs(const std::string& meta, const fs::path& out,
                                   const FuzzParams& ours) {
   for (const std::string& dir : run_folders(meta, "tmp")) {
     refuse_link(dir + "/manifest", "a run's manifest");
     const std::optional<FuzzParams> p = FuzzParams::read(dir + "/manifest");
-    if (!p || *p == ours) continue;
+    if (!p || *p == ours || fs::exists(dir + kPausedMark)) continue;
     if (coverage_of(dir, p->first(), p->last()).todo.empty()) continue;
     throw FuzzRefused(out.string() + " holds an unfinished fuzz run with other options (" +
                       p->options() + "): resume it with those, delete " + dir +
@@ -146,6 +151,7 @@ struct Run {
     space.clear_stale_temporaries();
     make_folder(case_dir.string());
     space.make_subfolder(params.folder_name());
+    fs::remove(run_dir + kPausedMark);  // running again: a kill now leaves it unfinished
     if (!resumed) {
       space.write_whole(manifest, params.manifest().text());  // before any case
       sync_folder(run_dir);
@@ -251,6 +257,9 @@ std::vector<ChildProcess> start_workers(const Run& run, int workers, int progres
       try {
         run.work(w, workers, progress_fd);
         return 0;
+      } catch (const NoAnswer& e) {  // a plug-in's hang, in its own words, as before
+        std::fprintf(stderr, "fdhcert: %s\n", e.what());
+        return 3;
       } catch (const std::exception& e) {
         std::fprintf(stderr, "fdhcert: fuzz worker: %s\n", e.what());
         return 3;
@@ -338,6 +347,7 @@ FuzzSummary run_fuzz(const FuzzOptions& opt) {
   const Coverage after = coverage_of(run.run_dir, run.first, run.last);
   sum.shrink_cut = tally.shrink_cut;
   sum.cut = !after.todo.empty() && opt.budget.spent();
+  if (sum.cut) run.space.write_whole(run.run_dir + kPausedMark, "stopped by --budget\n");
   if (!after.todo.empty() && !sum.cut)
     throw std::runtime_error("fuzz: cases " + std::to_string(after.todo.front().begin) + ".." +
                              std::to_string(after.todo.front().end - 1) + " of method " +

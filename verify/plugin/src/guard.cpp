@@ -17,6 +17,7 @@ namespace fdh::verify::plugin {
 namespace {
 
 thread_local const CallSite* t_site = nullptr;
+thread_local sigjmp_buf* t_escape = nullptr;
 volatile sig_atomic_t g_report_fd = 2;
 
 constexpr std::array<int, 5> kSignals = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
@@ -120,6 +121,8 @@ char g_limit_text[32];  // "1.5", written before the signal is sent
 void on_time_out(int) {
   const CallSite* site = t_site;
   if (!site) return;  // the call ended meanwhile
+  // A query's call is abandoned and the run goes on (the caller reports "no answer in T s").
+  if (sigjmp_buf* escape = t_escape) ::siglongjmp(*escape, 1);
   SignalText t;
   t << "fdhcert: plug-in " << site->plugin << " did not return within " << g_limit_text
     << " s (--plugin-timeout) ";
@@ -189,6 +192,10 @@ void set_crash_report_fd(int fd) {
 
 int report_fd() {
   return g_report_fd;
+}
+
+sigjmp_buf*& escape_point() {
+  return t_escape;
 }
 
 const CallSite* current_call() {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <pthread.h>
+#include <setjmp.h>
 
 #include <cstddef>
 #include <string>
@@ -45,6 +46,9 @@ int report_fd();
 // The plug-in call the calling thread is in, or null.
 const CallSite* current_call();
 
+// Where the calling thread's time-out signal jumps to (null: it reports and ends the process).
+sigjmp_buf*& escape_point();
+
 // Marks the calling thread as inside `site` for the object's lifetime, and arms the call's time
 // limit (watchdog.hpp).
 class InCall {
@@ -57,5 +61,25 @@ class InCall {
  private:
   const CallSite* outer_;
 };
+
+// Calls `call` (the plug-in's function, through a lambda that holds no C++ object of its own) as
+// the call `site`. Returns false when it did not return within --plugin-timeout: its thread left
+// it by siglongjmp from the time-out's signal, abandoning its frames where they were (the
+// plug-in's state is then its own affair: docs/plugins.md). No object with a destructor lives
+// between here and the jump.
+template <class Call>
+bool returned_within_limit(const CallSite& site, const Call& call) {
+  const InCall in(site);
+  sigjmp_buf here;
+  sigjmp_buf* const outer = escape_point();
+  if (sigsetjmp(here, 1) != 0) {
+    escape_point() = outer;
+    return false;
+  }
+  escape_point() = &here;
+  call();
+  escape_point() = outer;
+  return true;
+}
 
 }  // namespace fdh::verify::plugin

@@ -5,13 +5,11 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -34,7 +32,9 @@ namespace {
 using plugin::CallSite;
 using plugin::check_promises;
 using plugin::check_settings;
+using plugin::copy_of_version;
 using plugin::InCall;
+using plugin::is_name;
 using plugin::refuse;
 using plugin::within_struct;
 
@@ -64,15 +64,16 @@ std::vector<LoadedPlugin>& loaded_list() {
   return list;
 }
 
-// A letter or digit, then letters, digits and . _ + -: never a path like "..", since fuzz makes
-// folders of method names.
-bool is_name(const char* s) {
-  if (!s || !std::isalnum(static_cast<unsigned char>(s[0]))) return false;
-  std::size_t n = 0;
-  for (; s[n]; ++n)
-    if (n >= 40 || !(std::isalnum(static_cast<unsigned char>(s[n])) || std::strchr("._+-", s[n])))
-      return false;
-  return n > 0;
+// A probe that waits for probe_plugins: the plug-in's methods and its place in loaded_list().
+struct PendingProbe {
+  std::string name;
+  std::vector<Method> methods;
+  std::vector<BoxMethod> boxes;
+  std::size_t loaded = 0;
+};
+std::vector<PendingProbe>& pending_probes() {
+  static std::vector<PendingProbe> pending;
+  return pending;
 }
 
 // The entry point: fdh_plugin_v2, else fdh_plugin_v1, and its name.
@@ -80,21 +81,6 @@ std::pair<const fdh_plugin* (*)(), const char*> entry_point(void* lib, const std
   for (const char* name : {"fdh_plugin_v2", "fdh_plugin_v1"})
     if (void* f = ::dlsym(lib, name)) return {reinterpret_cast<const fdh_plugin* (*)()>(f), name};
   refuse(path, "exports neither fdh_plugin_v2 nor fdh_plugin_v1 (an fdhcert plug-in must)");
-}
-
-// The struct as far as its version has fields: a version-1 struct ends at kdop, so nothing
-// beyond is read (the version-2 fields stay zero: no time of impact).
-fdh_plugin copy_of_version(const fdh_plugin* p, const std::string& path) {
-  fdh_plugin api{};
-  if (p->abi_version == FDH_PLUGIN_ABI_VERSION)
-    api = *p;
-  else if (p->abi_version == FDH_PLUGIN_ABI_VERSION_1)
-    std::memcpy(static_cast<void*>(&api), p, offsetof(fdh_plugin, time_promise));
-  else
-    refuse(path, "ABI version " + std::to_string(p->abi_version) + ", but this fdhcert takes " +
-                     std::to_string(FDH_PLUGIN_ABI_VERSION_1) + " or " +
-                     std::to_string(FDH_PLUGIN_ABI_VERSION));
-  return api;
 }
 
 // How long a probing child may take: the call limit and then some, for the watchdog in the child
@@ -132,7 +118,7 @@ fdh_plugin entry_struct(const std::string& path, const PluginSettings& settings,
   if (const std::optional<std::string> why = plugin::call_init(lib, path, settings))
     refuse(path, *why);
   flags = plugin::call_flags(lib, path);
-  if (flags & ~FDH_PLUGIN_THREAD_SAFE)
+  if (flags & ~(FDH_PLUGIN_THREAD_SAFE | FDH_PLUGIN_TOI_GIVES_VERDICT))
     refuse(path, "fdh_plugin_flags() has bits this fdhcert does not know (FDH_PLUGIN_* only)");
   const CallSite site{path.c_str(), entry_name};
   const fdh_plugin* returned = nullptr;
@@ -184,6 +170,15 @@ bool verdict(const LoadedPtr& p, const CallSite& site, int r) {
   return r == 1;
 }
 
+// A call past --plugin-timeout, abandoned (guard.hpp returned_within_limit): no answer on this
+// query, which the checker counts as a broken promise.
+[[noreturn]] void no_answer(const LoadedPtr& p, const CallSite& site) {
+  const double limit = plugin::call_limit();
+  throw NoAnswer("plug-in " + p->name + " did not return within " + shortest(limit) +
+                     " s (--plugin-timeout) " + plugin::where(site),
+                 p->name, limit);
+}
+
 // A query with δ > 0 asked of a decision without a δ function: the caller should have seen that
 // the method does not apply (Method::applies_to, gives_toi), and no plug-in is to blame.
 [[noreturn]] void not_answered(const LoadedPtr& p, const Query& q) {
@@ -208,11 +203,10 @@ QueryTest query_test(const LoadedPtr& p, const Verdicts& f) {
     const bool at_contact = f.contact && q.min_distance == 0;
     if (!at_contact && !f.within) not_answered(p, q);
     const CallSite site{p->name.c_str(), at_contact ? f.contact_name : f.within_name, &q};
-    int r;
-    {
-      const InCall in(site);
-      r = at_contact ? f.contact(x) : f.within(x, q.min_distance);
-    }
+    int r = 0;
+    if (!plugin::returned_within_limit(
+            site, [&] { r = at_contact ? f.contact(x) : f.within(x, q.min_distance); }))
+      no_answer(p, site);
     return verdict(p, site, r);
   };
 }
@@ -235,16 +229,15 @@ QueryToi query_toi(const LoadedPtr& p, const Times& f) {
     if (!at_contact && !f.within) not_answered(p, q);
     const CallSite site{p->name.c_str(), at_contact ? f.contact_name : f.within_name, &q};
     double lo = 1, hi = 1;
-    int r;
-    {
-      const InCall in(site);
-      r = at_contact ? f.contact(x, width, &lo, &hi) : f.within(x, q.min_distance, width, &lo, &hi);
-    }
+    int r = 0;
+    if (!plugin::returned_within_limit(site, [&] {
+          r = at_contact ? f.contact(x, width, &lo, &hi)
+                         : f.within(x, q.min_distance, width, &lo, &hi);
+        }))
+      no_answer(p, site);
     if (!verdict(p, site, r)) return Toi{};
-    if (!(0 <= lo && lo <= hi && hi <= 1))  // NaN fails too
-      throw PluginFailure("plug-in " + p->name + " returned a contact at [" + shortest(lo) + ", " +
-                          shortest(hi) + "] (garbage: not 0 <= t_lo <= t_hi <= 1) " +
-                          plugin::where(site));
+    // A time outside [0, 1] goes to the checker as said: a broken promise ("not a time"), on
+    // that query, not the end of the run (issue 34); t_hi = +inf is "no upper bound".
     return Toi{true, lo, hi};
   };
 }
@@ -276,6 +269,7 @@ Method query_method(const LoadedPtr& p) {
   Method m;
   m.name = p->name;
   m.one_thread = p->one_thread();  // docs/plugins.md: one thread unless it says it is safe
+  m.verdict_from_toi = p->flags & FDH_PLUGIN_TOI_GIVES_VERDICT;
   m.summary = std::string(p->api.summary ? p->api.summary : "") + " (plug-in " + p->path + ")";
   const fdh_plugin& a = p->api;
   const fdh_min_distance w = p->within.value_or(fdh_min_distance{});
@@ -315,10 +309,9 @@ BoxMethod box_method(const LoadedPtr& p, int k) {
     xyz.reserve(3 * n);
     for (std::size_t i = 0; i < n; ++i) xyz.insert(xyz.end(), {pts[i].x, pts[i].y, pts[i].z});
     const CallSite site{p->name.c_str(), "kdop", nullptr, k, n};
-    {
-      const InCall in(site);
-      p->api.kdop(k, reinterpret_cast<const double(*)[3]>(xyz.data()), n, lo, hi);
-    }
+    const auto* points = reinterpret_cast<const double(*)[3]>(xyz.data());
+    if (!plugin::returned_within_limit(site, [&] { p->api.kdop(k, points, n, lo, hi); }))
+      no_answer(p, site);
     for (int s = 0; s < k / 2; ++s)
       if (!std::isfinite(lo[s]) || !std::isfinite(hi[s]) || lo[s] > hi[s])
         throw PluginFailure("plug-in " + p->name + " returned slab " + std::to_string(s) + " = [" +
@@ -336,7 +329,7 @@ BoxMethod box_method(const LoadedPtr& p, int k) {
 
 }  // namespace
 
-void load_plugin(const std::string& path, const PluginSettings& settings) {
+void load_plugin(const std::string& path, const PluginSettings& settings, bool probe_now) {
   plugin::install_crash_handlers();
   plugin::catch_exit(path);
   plugin::divert_stdout();
@@ -364,9 +357,21 @@ void load_plugin(const std::string& path, const PluginSettings& settings) {
   } catch (const std::invalid_argument& e) {
     refuse(path, std::string(e.what()) + ": rename the plug-in");
   }
-  plugin::probe(p->name, methods, boxes, limit_of_child());
+  if (probe_now) plugin::probe(p->name, methods, boxes, limit_of_child());
   if (known) files.push_back(id);
+  if (!probe_now) pending_probes().push_back({p->name, methods, boxes, loaded_list().size()});
   loaded_list().push_back({path, p->name, settings, !p->one_thread()});
+}
+
+void probe_plugins(const Budget& budget) {
+  std::vector<PendingProbe> pending;
+  pending.swap(pending_probes());
+  for (const PendingProbe& p : pending) {
+    const plugin::ProbeCut cut =
+        plugin::probe(p.name, p.methods, p.boxes, limit_of_child(), budget);
+    loaded_list()[p.loaded].probe_cut = cut.cut;
+    loaded_list()[p.loaded].probe_calls = cut.calls;
+  }
 }
 
 std::vector<LoadedPlugin> loaded_plugins() {
@@ -378,6 +383,7 @@ void set_plugin_timeout(double seconds) {
 }
 
 void end_plugin_run() {
+  pending_probes().clear();
   loaded_files().clear();
   loaded_list().clear();
   plugin::restore_stdout();

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -63,20 +64,23 @@ std::vector<QueryRecord> with_min_distances(const std::vector<QueryRecord>& prob
   return all;
 }
 
-void run_probes(const std::vector<Method>& methods, const std::vector<BoxMethod>& boxes) {
+// Each call is followed by a '.' on `fd`: the parent's deadline is per call, so that a slow
+// plug-in (seconds a call) is probed to the end, and it can count the calls made. A time
+// outside [0, 1] is not refused here: the run counts it as a broken promise ("not a time").
+void run_probes(int fd, const std::vector<Method>& methods, const std::vector<BoxMethod>& boxes) {
   const std::vector<QueryRecord> probes = probe_queries();
   for (const Method& m : methods)
     for (const QueryRecord& r : with_min_distances(probes)) {
       const RecordScope asking(r);  // a crash names the probe
-      if (m.applies_to(r.query)) m.hit(r.query);
+      if (m.applies_to(r.query)) m.hit(r.query), write_all(fd, ".");
       if (m.gives_toi(r.query) && (r.query.min_distance == 0 || m.answers_min_distance))
-        m.time_of_impact(r.query, kDefaultToiWidth);
+        m.time_of_impact(r.query, kDefaultToiWidth), write_all(fd, ".");
     }
   double lo[13], hi[13];
   for (const BoxMethod& b : boxes)
     for (const QueryRecord& r : probes)
       for (std::size_t n : {std::size_t(1), std::size_t(3), std::size_t(8)})
-        b.build(r.query.x.data(), n, lo, hi);
+        b.build(r.query.x.data(), n, lo, hi), write_all(fd, ".");
 }
 
 // The child: probes, then says "ok" on `fd` (a plug-in that calls exit() never says it).
@@ -86,7 +90,7 @@ void run_probes(const std::vector<Method>& methods, const std::vector<BoxMethod>
   std::string said = "ok";
   int status = 0;
   try {
-    run_probes(methods, boxes);
+    run_probes(fd, methods, boxes);
   } catch (const std::exception& e) {
     said = std::string("fdhcert: ") + e.what() + "\n";
     status = kPluginFailureStatus;
@@ -95,23 +99,29 @@ void run_probes(const std::vector<Method>& methods, const std::vector<BoxMethod>
   ::_exit(status);
 }
 
-// Everything the child writes on `fd` until it closes it or `seconds` pass; nullopt on timeout.
-std::optional<std::string> read_until_closed(int fd, double seconds) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  std::string text;
+using Clock = std::chrono::steady_clock;
+
+// What the child writes on `fd`, into `text`, until it closes it (true), or until `seconds` pass
+// without a byte from it or `until` is past (false; `cut` says it was `until`).
+bool read_until_closed(int fd, double seconds, Clock::time_point until, std::string& text,
+                       bool& cut) {
+  const auto quiet = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(std::min(seconds, 1e9)));
+  auto deadline = std::min(Clock::now() + quiet, until);
   for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-        deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) return std::nullopt;
+    cut = Clock::now() >= until;
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    if (left <= 0) return false;
     pollfd p{fd, POLLIN, 0};
-    const int ready = ::poll(&p, 1, int(left.count()));
-    if (ready < 0 && errno == EINTR) continue;
-    if (ready <= 0) continue;  // the deadline is checked above
+    const int ready = ::poll(&p, 1, int(std::min<long long>(left, 1000)));
+    if (ready <= 0) continue;  // EINTR, or the time: the deadline is checked above
     char buf[512];
     const ssize_t n = ::read(fd, buf, sizeof buf);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return text;
+    if (n <= 0) return true;
     text.append(buf, std::size_t(n));
+    deadline = std::min(Clock::now() + quiet, until);
   }
 }
 
@@ -120,11 +130,14 @@ std::optional<std::string> read_until_closed(int fd, double seconds) {
 struct Said {
   std::optional<std::string> text;
   ChildStatus status;
+  bool cut = false;  // the run's budget ended the listening (fdh/os/budget.hpp)
+  long calls = 0;    // the calls the child made (a '.' each), taken off the text
 };
 
 // Runs body(fd) in a child (it must end with _exit) and listens on fd for `seconds`.
 template <class Body>
-Said talk(const std::string& what, double seconds, const Body& body) {
+Said talk(const std::string& what, double seconds, const Body& body,
+          Clock::time_point until = Clock::time_point::max()) {
   int fds[2];
   if (::pipe(fds) != 0) throw std::runtime_error("cannot probe " + what + ": no pipe");
   std::optional<ChildProcess> process;
@@ -140,10 +153,14 @@ Said talk(const std::string& what, double seconds, const Body& body) {
   }
   ::close(fds[1]);
   Said said;
-  said.text = read_until_closed(fds[0], seconds);
+  std::string text;
+  const bool closed = read_until_closed(fds[0], seconds, until, text, said.cut);
   ::close(fds[0]);
-  if (!said.text) process->kill();
+  if (!closed) process->kill();
   said.status = process->wait();
+  const std::size_t dots = text.find_first_not_of('.');
+  said.calls = long(dots == std::string::npos ? text.size() : dots);
+  if (closed) said.text = text.substr(std::size_t(said.calls));
   return said;
 }
 
@@ -193,6 +210,7 @@ std::optional<std::string> probe_load(const std::string& path, const std::string
                                       const PluginSettings& settings, double seconds) {
   const Said said =
       talk("plug-in " + path, seconds, [&](int fd) { load_child(fd, path, file, settings); });
+  // (The load child writes no '.': its text is whole.)
   if (!said.text)
     throw PluginLoadError("plug-in " + path + ": cannot load: it did not finish loading within " +
                           std::to_string(int(seconds)) + " s (docs/plugins.md)");
@@ -205,14 +223,16 @@ std::optional<std::string> probe_load(const std::string& path, const std::string
   throw PluginLoadError("plug-in " + path + ": cannot load: " + why + " (docs/plugins.md)");
 }
 
-void probe(const std::string& plugin, const std::vector<Method>& methods,
-           const std::vector<BoxMethod>& boxes, double seconds) {
-  const Said said = talk("plug-in " + plugin, seconds, [&](int fd) { child(fd, methods, boxes); });
+ProbeCut probe(const std::string& plugin, const std::vector<Method>& methods,
+               const std::vector<BoxMethod>& boxes, double seconds, const Budget& budget) {
+  const Said said = talk(
+      "plug-in " + plugin, seconds, [&](int fd) { child(fd, methods, boxes); }, budget.deadline());
   const std::string what = "plug-in " + plugin;
+  if (!said.text && said.cut) return {true, said.calls};
   if (!said.text)
     throw PluginFailure(what + " did not answer within " + std::to_string(int(seconds)) +
-                        " s when probed on built-in inputs");
-  if (said.status.ok() && *said.text == "ok") return;
+                        " s of a call when probed on built-in inputs");
+  if (said.status.ok() && *said.text == "ok") return {false, said.calls};
   if (const std::optional<std::string> report = own_report(said)) throw PluginFailure(*report);
   throw PluginFailure(what + " ended the process (" + said.status.words() +
                       ") when probed on built-in inputs");

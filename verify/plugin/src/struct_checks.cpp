@@ -1,11 +1,41 @@
 #include "struct_checks.hpp"
 
+#include <cctype>
+#include <cstddef>
+#include <cstring>
+
 #include "init_call.hpp"
 
 namespace fdh::verify::plugin {
 
 [[noreturn]] void refuse(const std::string& path, const std::string& why) {
   throw PluginLoadError("plug-in " + path + ": " + why + " (docs/plugins.md)");
+}
+
+// A letter or digit, then letters, digits and . _ + -: never a path like "..", since fuzz makes
+// folders of method names.
+bool is_name(const char* s) {
+  if (!s || !std::isalnum(static_cast<unsigned char>(s[0]))) return false;
+  std::size_t n = 0;
+  for (; s[n]; ++n)
+    if (n >= 40 || !(std::isalnum(static_cast<unsigned char>(s[n])) || std::strchr("._+-", s[n])))
+      return false;
+  return n > 0;
+}
+
+// The struct as far as its version has fields: a version-1 struct ends at kdop, so nothing
+// beyond is read (the version-2 fields stay zero: no time of impact).
+fdh_plugin copy_of_version(const fdh_plugin* p, const std::string& path) {
+  fdh_plugin api{};
+  if (p->abi_version == FDH_PLUGIN_ABI_VERSION)
+    api = *p;
+  else if (p->abi_version == FDH_PLUGIN_ABI_VERSION_1)
+    std::memcpy(static_cast<void*>(&api), p, offsetof(fdh_plugin, time_promise));
+  else
+    refuse(path, "ABI version " + std::to_string(p->abi_version) + ", but this fdhcert takes " +
+                     std::to_string(FDH_PLUGIN_ABI_VERSION_1) + " or " +
+                     std::to_string(FDH_PLUGIN_ABI_VERSION));
+  return api;
 }
 
 void check_settings(const std::string& path, const PluginSettings& settings) {

@@ -13,6 +13,13 @@ namespace fdh::verify::plugin {
 
 [[noreturn]] void refuse(const std::string& path, const std::string& why);
 
+// A method name: a letter or digit, then up to 39 of a-z A-Z 0-9 . _ + -.
+bool is_name(const char* s);
+
+// The struct as far as its ABI version has fields (version 1 ends at kdop); another version is
+// refused.
+fdh_plugin copy_of_version(const fdh_plugin* p, const std::string& path);
+
 // Settings as fdh_plugin_init may take them: keys non-empty and each given once.
 void check_settings(const std::string& path, const PluginSettings& settings);
 

@@ -15,6 +15,7 @@
 #ifndef FDH_PLUGIN_H
 #define FDH_PLUGIN_H
 
+#include <math.h>
 #include <stddef.h>
 
 #ifdef __cplusplus
@@ -64,9 +65,15 @@ enum fdh_time_promise {
 /* The time of impact of a query (the 8 points as for fdh_query_fn): return 1 for contact, with
  * *t_lo <= *t_hi in [0, 1] enclosing the earliest contact time, asked no wider than `width`
  * (0 < width <= 1; a plug-in may ignore it); return 0 for none (t_lo and t_hi unread). A solver
- * advances to t_lo. Any other return value, or a contact with t_lo, t_hi not in order in
- * [0, 1], is reported as garbage and ends the run. */
+ * advances to t_lo. A method that bounds t* from below only (FDH_TIME_NEVER_LATE) may set
+ * *t_hi = FDH_TIME_NO_UPPER_BOUND: no upper bound, and no enclosure is read into it. Any other
+ * return value is garbage and ends the run; a contact with t_lo, t_hi not in order in [0, 1]
+ * is "not a time": a broken promise on that query, and the run goes on. */
 typedef int (*fdh_toi_fn)(const double x[8][3], double width, double* t_lo, double* t_hi);
+
+/* t_hi of a time with no upper bound (+infinity): a lower bound t_lo alone. Since ABI version 2
+ * as it is (an infinite t_hi was refused before, so no plug-in gave one). */
+#define FDH_TIME_NO_UPPER_BOUND HUGE_VAL
 
 /* Bits of fdh_plugin.kdop_ks: the k the builder takes. */
 #define FDH_KDOP_6 1u
@@ -118,6 +125,12 @@ const char* fdh_plugin_init(size_t n, const char* const* keys, const char* const
  * at once. fdhcert's checks then run on every core (--threads); without it, a loaded plug-in
  * keeps them on one thread. */
 #define FDH_PLUGIN_THREAD_SAFE 1u
+
+/* A bit of fdh_plugin_flags(): the contact its time-of-impact functions return (1 or 0) is its
+ * verdict, the same question its query functions answer (a solver whose verdict is its time, as
+ * Tight Inclusion's). `classify --toi` then calls the time function alone, once per query, and
+ * takes the verdict from it. Without it, the two are asked apart. */
+#define FDH_PLUGIN_TOI_GIVES_VERDICT 2u
 
 typedef unsigned (*fdh_plugin_flags_fn)(void);
 unsigned fdh_plugin_flags(void);

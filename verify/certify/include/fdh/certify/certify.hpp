@@ -25,7 +25,15 @@ struct CertifiedPlugin {
   std::string file, name;
   std::vector<std::pair<std::string, std::string>> settings;
   bool thread_safe = false;
+  bool probe_cut = false;  // --budget ended its start-up probe, after probe_calls calls
+  long probe_calls = 0;
 };
+
+// The stages of certify, in their default order (--stages picks and orders them):
+// "corpus", "families", "scenes", "soups", "extra", "metamorphic", "min-distance", "peers".
+// "metamorphic" is no pass of its own: with it, every query of the query stages is also checked
+// under the transforms (they go with each query, wherever the word is in the list).
+const std::vector<std::string>& certify_stages();
 
 struct CertifyOptions {
   bool quick = false;
@@ -55,6 +63,9 @@ struct CertifyOptions {
   // of one); what was not reached is listed in Certificate::cut_short.
   Budget budget;
   std::vector<CertifiedPlugin> plugins;  // recorded in the certificate
+  // The stages run, in this order (certify_stages()' names); empty: all, in the default order.
+  std::vector<std::string> stages;
+  bool runs(const std::string& stage) const;
 };
 
 // One method's promise on one decision, checked against the exact twin (check/checker.hpp).
@@ -63,6 +74,7 @@ struct PromiseCheck {
   Decision decision = Decision::PointTriangle;
   Promise promise = Promise::Exact;
   long checked = 0, filter_decided = 0, violations = 0;
+  long no_answer = 0;  // of the violations: calls past --plugin-timeout (a plug-in's)
 };
 
 // One method's time of impact on one TOI decision, under its TimePromise, against the exact
@@ -72,6 +84,8 @@ struct TimePromiseCheck {
   Decision decision = Decision::VertexFaceToi;
   TimePromise promise = TimePromise::Enclosure;
   TimeTally tally;  // tally.broken: the violations
+  // The first few queries given a time of 0 where t* > 0 ("FILE:LINE" or a generated id).
+  std::vector<std::string> zero_queries;
 };
 
 // One k-DOP method (one k): its boxes contain the exact FDH; the tree built of its boxes culls
@@ -142,6 +156,10 @@ struct Certificate {
   PeersReport peers;
   DeltaStage delta;             // the minimum-separation stage; its checks count in checks() too
   std::string first_violation;  // what went wrong first, and the file it was saved to
+  // Every kind of broken promise found (a method, a decision, and a wrong verdict, a wrong or
+  // not-a-time time, no answer in --plugin-timeout, ...), in its first case: its words and the
+  // file it was saved to. The first is first_violation.
+  std::vector<std::string> broken_saved;
   // The stages the budget cut short, in run order: how far each got. Not empty: the checks
   // above cover part of the inputs only, and the certificate certifies nothing.
   std::vector<BudgetCut> cut_short;

@@ -2,6 +2,7 @@
 // (check/metamorphic.hpp), on each query certify draws (certify.cpp).
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,7 @@ class MetamorphicCertifier {
     std::string what;
     Query saved;
     std::string transform;  // the transform saved is of q, or "" when saved is q
+    std::string method;     // the method whose promise it breaks
 
     // A comment for the saved case: the query as drawn (`original`, q's record), in the native
     // format, before the transform; "" when saved is q.
@@ -41,9 +43,13 @@ class MetamorphicCertifier {
   // (MetamorphicCheck::held). Safe to call from several threads at once (each with its own rows)
   // when the methods are (registry.hpp). Once `budget` is spent, stops between two transformed
   // queries (fdh/os/budget.hpp).
+  // `said` holds the verdicts on q known already, by method name (nullopt: no answer within
+  // --plugin-timeout, and the method is left out on q); the others are asked. A transformed
+  // query a plug-in gives no answer on (NoAnswer) is a broken promise of its method.
+  using Said = std::map<std::string, std::optional<bool>>;
   std::optional<Violation> check(const Query& q, bool twin, std::vector<MetamorphicCheck>& rows,
-                                 std::vector<TransformCount>& transforms,
-                                 const Budget& budget = {}) const;
+                                 std::vector<TransformCount>& transforms, const Budget& budget = {},
+                                 const Said& said = {}) const;
   // The same without the transforms' counts.
   std::optional<Violation> check(const Query& q, bool twin,
                                  std::vector<MetamorphicCheck>& rows) const;

@@ -21,7 +21,11 @@ bool keeps_promise(Promise promise, bool said, bool twin);
 struct Verdicts {
   bool said = false, twin = false;
   bool kept = true;  // said keeps the method's promise
-  bool agree() const { return said == twin; }
+  // No answer: a plug-in's call past --plugin-timeout, abandoned (NoAnswer; `said` is then
+  // meaningless): a broken promise for a method that promises anything.
+  bool no_answer = false;
+  double limit = 0;  // with no_answer: the time limit it passed, seconds
+  bool agree() const { return !no_answer && said == twin; }
 };
 
 // One method against the twin on one query it applies to.
@@ -31,6 +35,9 @@ Verdicts check(const Method& m, const Query& q, bool twin);
 // The method's test for decision d against d's twin (a static query asked as a CCD query, say);
 // a method without a test for d keeps its promise trivially (said = twin).
 Verdicts check(const Method& m, const Query& q, Decision d);
+// No verdict: m's call did not return within --plugin-timeout (NoAnswer, which check lets
+// through: only certify counts it, as a broken promise of a promised method).
+Verdicts unanswered(const Method& m, const NoAnswer& e, bool twin);
 // A verdict the method already gave elsewhere (the simulator's narrow phase) against the twin.
 Verdicts check_given(const Method& m, const Query& q, bool said);
 
@@ -121,14 +128,20 @@ struct TimeCheck {
   TimeTwin twin;
   double width = kDefaultToiWidth;  // the width asked
   bool verdict_error = false;       // said.hit differs from the exact verdict
-  bool late = false;      // a contact missed, or t_lo > t* (exactly): breaks either promise
-  bool enclosed = true;   // with both hits: t_lo <= t* <= t_hi, exactly
-  bool too_wide = false;  // with a hit said: t_hi - t_lo above the width asked
-  bool zero = false;      // t_lo == 0 said where 0 < t*
-  double early = 0;       // with both hits and not late: t* - t_lo, in step units (>= 0)
-  bool kept = true;       // the method's TimePromise is kept
-  bool garbage = false;   // not 0 <= t_lo <= t_hi <= 1 with a hit: breaks either promise
+  bool late = false;       // a contact missed, or t_lo > t* (exactly): breaks either promise
+  bool enclosed = true;    // with both hits: t_lo <= t* <= t_hi, exactly
+  bool too_wide = false;   // with a hit said: t_hi - t_lo above the width asked
+  bool zero = false;       // t_lo == 0 said where 0 < t*
+  double early = 0;        // with both hits and not late: t* - t_lo, in step units (>= 0)
+  bool kept = true;        // the method's TimePromise is kept
+  bool garbage = false;    // not a time: not 0 <= t_lo <= t_hi <= 1 with a hit: breaks either
+  bool no_answer = false;  // no answer within --plugin-timeout (NoAnswer): breaks either
+  double limit = 0;        // with no_answer: the time limit it passed, seconds
 };
+
+// t_hi = +inf: "no upper bound", which a never-late (lower-bound) method may say
+// (FDH_TIME_NO_UPPER_BOUND, fdh/plugin.h); its enclosure then means nothing.
+bool no_upper_bound(const Toi& t);
 
 // How early a time of impact may be (t* - t_lo, step units) before fuzz --toi and replay --toi
 // call it a finding: a solver that moves to a time a tenth of the step early stalls.
@@ -141,6 +154,8 @@ bool keeps_time_promise(TimePromise promise, const TimeCheck& c);
 // given or computed. The method must give one for q's TOI decision (Method::gives_toi).
 TimeCheck check_time(const Method& m, const Query& q, double width, const TimeTwin& twin);
 TimeCheck check_time(const Method& m, const Query& q, double width);
+// No time: as unanswered, for a time of impact.
+TimeCheck unanswered_time(const Method& m, const NoAnswer& e, double width, const TimeTwin& twin);
 // A time the method already gave (classify's timed runs, a plug-in's saved answer).
 TimeCheck check_time_given(const Method& m, const Query& q, double width, const Toi& said,
                            const TimeTwin& twin);
@@ -149,6 +164,7 @@ TimeCheck check_time_given(const Method& m, const Query& q, double width, const 
 struct TimeTally {
   long checked = 0, contacts = 0;  // queries checked; those with an exact contact
   long verdict_errors = 0, late = 0, zero = 0, not_enclosed = 0, too_wide = 0, garbage = 0;
+  long no_answer = 0;                     // calls past --plugin-timeout (each a broken promise)
   long broken = 0;                        // checks that broke the method's TimePromise
   std::vector<double> early;              // t* - t_lo of every contact found in time, step units
   std::vector<std::size_t> first_broken;  // indices into the caller's sequence, at most `keep`

@@ -9,6 +9,7 @@
 
 #include "fdh/check/checker.hpp"
 #include "fdh/check/registry.hpp"
+#include "fdh/os/progress.hpp"
 #include "fdh/query.hpp"
 
 namespace fdh::verify {
@@ -55,9 +56,22 @@ double seconds_per_pass(const std::function<void()>& pass);
 // gives none; an empty vector: none at all); a method that does not apply to a query
 // (Method::applies_to) gets kNotApplicable there. Each method's time is the mean over enough
 // passes to fill about 20 ms, so that short files still give a stable ns per query.
+// `progress` hears each method's first pass every 16 queries ("classify METHOD", queries): a
+// slow plug-in's run shows it is alive, a fast method's timing does not feel it.
 Classification classify(const std::vector<Query>& queries,
                         const std::vector<std::optional<bool>>& truth,
-                        const std::vector<Method>& methods);
+                        const std::vector<Method>& methods, const ProgressSink& progress = {});
+
+// Calls progress every 16th query of a method's first pass (classify, classify_toi).
+struct PassProgress {
+  const ProgressSink& sink;
+  std::string stage;
+  long total = 0;
+  bool first = true;  // the first pass only: the later ones re-time it
+  void at(std::size_t i) const {
+    if (first && sink && i % 16 == 0) sink({stage, long(i), total, "queries"});
+  }
+};
 
 // The classifications of consecutive groups (files) joined into one: counts add up, times are
 // weighted by the queries each method applied to.

@@ -9,6 +9,7 @@
 
 #include "fdh/check/checker.hpp"
 #include "fdh/check/registry.hpp"
+#include "fdh/os/progress.hpp"
 #include "fdh/query.hpp"
 
 namespace fdh::verify {
@@ -34,7 +35,8 @@ struct ToiClassification {
 // The methods of `methods` that give a time at all, each timed over enough passes to fill about
 // 20 ms (as classify does), then checked query by query.
 ToiClassification classify_toi(const std::vector<Query>& queries,
-                               const std::vector<Method>& methods, double width);
+                               const std::vector<Method>& methods, double width,
+                               const ProgressSink& progress = {});
 
 // Consecutive groups (files) joined into one: counts add up, early times are pooled, times
 // are weighted by the queries each method gave a time for.

@@ -8,7 +8,9 @@
 #include <array>
 #include <cstddef>
 #include <functional>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fdh/ccd/toi.hpp"
@@ -60,6 +62,16 @@ enum class TimePromise {
 };
 const char* to_string(TimePromise p);  // "exact-enclosure", "never-late", "none"
 
+// A method that gave no answer on a query: a plug-in call past --plugin-timeout, abandoned
+// (docs/plugins.md). what() names the plug-in, the function and the query; the checker counts
+// it as a broken promise on that query ("no answer in T s") and the run goes on.
+struct NoAnswer : std::runtime_error {
+  NoAnswer(const std::string& what, std::string method_name, double limit)
+      : std::runtime_error(what), method(std::move(method_name)), seconds(limit) {}
+  std::string method;
+  double seconds;  // the limit it passed
+};
+
 using QueryTest = std::function<bool(const Query&)>;
 using QueryFilter = std::function<Filtered(const Query&)>;
 // A time of impact with an enclosure no wider than `width` asked (a method may ignore it).
@@ -83,6 +95,9 @@ struct Method {
   // Its functions are called from the calling thread only, one call at a time: a plug-in's
   // (docs/plugins.md promises no more). The built-in methods are safe from any thread.
   bool one_thread = false;
+  // Its time functions' contact is its verdict (a plug-in's FDH_PLUGIN_TOI_GIVES_VERDICT):
+  // classify --toi asks the time alone, once per query.
+  bool verdict_from_toi = false;
   // Its time of impact per TOI decision (indexed by toi_index), empty where it gives none, and
   // what that time promises.
   std::array<QueryToi, 2> toi{};
@@ -93,8 +108,7 @@ struct Method {
   bool answers_min_distance = false;
 
   bool applies_to(const Query& q) const {
-    return bool(test[std::size_t(decision_of(q))]) &&
-           (q.min_distance == 0 || answers_min_distance);
+    return bool(test[std::size_t(decision_of(q))]) && (q.min_distance == 0 || answers_min_distance);
   }
   bool hit(const Query& q) const { return test[std::size_t(decision_of(q))](q); }
   // A time for q's TOI decision, and for q's δ (as applies_to).

@@ -33,6 +33,8 @@ struct ClassifyOptions {
   // δ: every query is asked at this minimum separation; a file's truth counts only for a query
   // whose own δ (Query::min_distance) is this one. 0: contact, today's question.
   double min_distance = 0;
+  // Hears each method's pass over the queries (check/classify.hpp); may be empty.
+  ProgressSink progress;
 
   // Throws std::invalid_argument naming the first bad option (the CLI's usage error, Python's
   // ValueError): no file, an unknown method, kind or gate, a width outside [2^-52, 1], rounds

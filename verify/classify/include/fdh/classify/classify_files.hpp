@@ -32,7 +32,7 @@ void ask_at(std::vector<QueryRecord>& records, double min_distance);
 // input, and when no file holds a query.
 ClassifiedFiles classify_files(const std::vector<std::string>& files,
                                const std::vector<Method>& methods, std::optional<QueryKind> kind,
-                               double min_distance = 0);
+                               double min_distance = 0, const ProgressSink& progress = {});
 
 // The times of impact of the same files (`classify --toi`): per file, in the order of
 // `classified.files`, and in total.
@@ -41,6 +41,7 @@ struct ToiClassifiedFiles {
   ToiClassification total;
 };
 ToiClassifiedFiles classify_toi_files(const ClassifiedFiles& classified,
-                                      const std::vector<Method>& methods, double width);
+                                      const std::vector<Method>& methods, double width,
+                                      const ProgressSink& progress = {});
 
 }  // namespace fdh::verify

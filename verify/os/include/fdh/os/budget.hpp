@@ -26,6 +26,7 @@ class Budget {
   // The budget is used up; no clock is read without a limit.
   bool spent() const { return limited() && Clock::now() >= deadline_; }
   double seconds() const { return seconds_; }
+  Clock::time_point deadline() const { return deadline_; }  // max() without a limit
 
  private:
   double seconds_ = 0;  // 0: no limit
@@ -37,6 +38,11 @@ class Budget {
 void mark_run_start();
 // When the run started: the last mark_run_start, else the first call of either.
 Budget::Clock::time_point run_start();
+
+// The budget of this run (--budget, whichever command took it; none by default): what is done
+// before a command's own work, the plug-ins' probe, looks at it. mark_run_start resets it.
+void set_run_budget(const Budget& budget);
+const Budget& run_budget();
 
 // What a budget cut short: a stage and how far it got ("generator families", 12 of 5600
 // "queries"); total 0 when it is not known.

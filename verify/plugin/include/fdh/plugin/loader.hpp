@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "fdh/os/budget.hpp"
+
 namespace fdh::verify {
 
 // A plug-in that cannot be used as given: a file that does not load, no fdh_plugin_v1, another
@@ -36,8 +38,15 @@ inline constexpr int kPluginFailureStatus = 3;
 // `settings` go to the plug-in's fdh_plugin_init (fdh/plugin.h) before its entry point, in this
 // process and in the probing children; a refusal, settings given to a plug-in without
 // fdh_plugin_init, an empty key or a key given twice is a PluginLoadError.
+// With `probe_now` false the probe waits for probe_plugins (the command line's --plugin: the
+// probe then heeds a --budget given after it).
 using PluginSettings = std::vector<std::pair<std::string, std::string>>;
-void load_plugin(const std::string& path, const PluginSettings& settings = {});
+void load_plugin(const std::string& path, const PluginSettings& settings = {},
+                 bool probe_now = true);
+
+// Probes the plug-ins loaded with probe_now false, in the order loaded, each cut short once
+// `budget` is spent (LoadedPlugin::probe_cut). Throws PluginFailure as load_plugin.
+void probe_plugins(const Budget& budget);
 
 // A plug-in loaded in this run: its file as given, its method name, its settings and whether it
 // declared itself thread-safe (FDH_PLUGIN_THREAD_SAFE), in the order loaded.
@@ -45,6 +54,8 @@ struct LoadedPlugin {
   std::string file, name;
   PluginSettings settings;
   bool thread_safe = false;
+  bool probe_cut = false;  // the budget ended its probe, after probe_calls calls
+  long probe_calls = 0;
 };
 std::vector<LoadedPlugin> loaded_plugins();
 
