@@ -1,9 +1,12 @@
 #include "fdh/cloth/self_collision.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
+#include "fdh/cloth/pair_distance.hpp"
 #include "fdh/cloth/parallel.hpp"
 #include "fdh/cloth/patch_tree.hpp"
 
@@ -65,6 +68,24 @@ void cell_pairs(const PatchTree& t, const Cloth& cloth, const std::vector<Aabb>&
   }
 }
 
+// Grows every slab of b outward by h·|d|₁ for its direction d, plus pad: two points at most 2h
+// apart project at most 2h·|d|₂ <= 2h·|d|₁ apart on d (Cauchy–Schwarz), so two boxes grown by h
+// overlap when their contents come within 2h. pad covers the rounding of the subtraction.
+template <int K>
+void grow(Kdop<K>& b, double h, double pad) {
+  for (int s = 0; s < Kdop<K>::kSlabs; ++s) {
+    const Direction& d = Kdop<K>::direction(s);
+    const double g = (std::abs(d.x) + std::abs(d.y) + std::abs(d.z)) * h + pad;
+    b.lo[s] -= g;
+    b.hi[s] += g;
+  }
+}
+
+// A candidate's four points in x.
+std::array<Vec3, 4> points_of(const Candidate& c, const std::vector<Vec3>& x) {
+  return {x[c.ids[0]], x[c.ids[1]], x[c.ids[2]], x[c.ids[3]]};
+}
+
 // Work for one thread: a cell against itself (b < 0) or two sibling patches.
 struct Task {
   int a, b;
@@ -81,7 +102,9 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
   std::vector<Task> tasks;
   std::vector<std::vector<Candidate>> parts;
 
-  explicit TreesK(const Cloth& c) : cloth(c), tree(c) {}
+  double half_gap;  // each swept box grows by it (and a hair: grow()), so pairs within the gap meet
+
+  TreesK(const Cloth& c, double gap) : cloth(c), tree(c), half_gap(0.5 * gap * (1 + 0x1p-40)) {}
 
   void candidates(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
                   std::vector<Candidate>& out) override {
@@ -122,7 +145,9 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
     for_chunks(n, 4096, [&](int begin, int end) {
       for (int i = begin; i < end; ++i) {
         const double ma = max_abs(x0[i]), mb = max_abs(x1[i]);
-        set_segment(particle_box[i], x0[i], x1[i], widening_of(ma > mb ? ma : mb));
+        const double m = ma > mb ? ma : mb;
+        set_segment(particle_box[i], x0[i], x1[i], widening_of(m));
+        if (half_gap > 0) grow(particle_box[i], half_gap, widening_of(4 * (m + half_gap)));
         const Kdop<K>& b = particle_box[i];  // slabs 0-2 are x, y and z for every k
         particle_aabb[i] = {{b.lo[0], b.lo[1], b.lo[2]}, {b.hi[0], b.hi[1], b.hi[2]}};
       }
@@ -167,13 +192,29 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
 };
 
 SelfCollision::SelfCollision(const Cloth& cloth, int k, CcdTest exact, ExactToi exact_toi,
-                             int rounds)
-    : exact_(exact), exact_toi_(exact_toi), rounds_(rounds) {
+                             int rounds, double gap)
+    : exact_(exact), exact_toi_(exact_toi), rounds_(rounds), gap_(gap) {
   if (!exact_ || !exact_toi_)
     throw std::invalid_argument("self-collision needs an exact CCD fallback");
+  if (!(gap >= 0 && gap <= 0x1p100))
+    throw std::invalid_argument("the self-collision gap must be finite and >= 0");
   trees_ = with_k(k, [&](auto kc) -> std::unique_ptr<Trees> {
-    return std::make_unique<TreesK<decltype(kc)::value>>(cloth);
+    return std::make_unique<TreesK<decltype(kc)::value>>(cloth, gap);
   });
+}
+
+// A margin of 2^-20 of the gap keeps the float distance's rounding (about 2^-52 of the
+// coordinates) on the right side: a pair at rest is never within the gap it is tested at.
+double SelfCollision::gap_of(double start_distance) const {
+  constexpr double kMargin = 1 + 0x1p-20;
+  if (start_distance > gap_ * kMargin) return gap_;
+  return start_distance > 0.5 * gap_ * kMargin ? 0.5 * gap_ : 0;
+}
+
+double SelfCollision::min_distance(const std::vector<Vec3>& x) const {
+  double d = std::numeric_limits<double>::infinity();
+  for (const Candidate& c : candidates_) d = std::min(d, pair_distance(c.kind, points_of(c, x)));
+  return d;
 }
 
 SelfCollision::~SelfCollision() = default;
@@ -184,12 +225,12 @@ void SelfCollision::contacts(const std::vector<Vec3>& x0, const std::vector<Vec3
   hit_.assign(candidates_.size(), 0);
   for_chunks(int(candidates_.size()), 256, [&](int begin, int end) {
     for (int c = begin; c < end; ++c) {
+      Candidate& cand = candidates_[c];
       Query q;
-      q.kind = candidates_[c].kind;
-      for (int i = 0; i < 4; ++i) {
-        q.x[i] = x0[candidates_[c].ids[i]];
-        q.x[i + 4] = x[candidates_[c].ids[i]];
-      }
+      q.kind = cand.kind;
+      for (int i = 0; i < 4; ++i) q.x[i] = x0[cand.ids[i]], q.x[i + 4] = x[cand.ids[i]];
+      if (gap_ > 0) cand.gap = gap_of(pair_distance(cand.kind, points_of(cand, x0)));
+      q.min_distance = cand.gap;
       hit_[c] = robust_ccd(q, exact_);
     }
   });
@@ -211,6 +252,7 @@ void SelfCollision::stop_at_impact(const std::vector<Vec3>& x0, std::vector<Vec3
         q.x[i] = x0[touching_[c].ids[i]];
         q.x[i + 4] = x[touching_[c].ids[i]];
       }
+      q.min_distance = touching_[c].gap;  // the same question as the test's
       toi_[c] = robust_ccd_toi(q, kDefaultToiWidth, exact_toi_).t_lo;
     }
   });
@@ -244,6 +286,7 @@ SelfCollision::Result SelfCollision::resolve(const std::vector<Vec3>& x0, std::v
                                              std::vector<Vec3>& v) {
   const std::vector<Vec3> x_in = x;
   Result r = stages(x0, x, v);
+  if (!r.stopped_all) r.min_distance = min_distance(x);  // the last test's pairs, where they end
   if (r.hits == 0) return r;
   for (std::size_t i = 0; i < x.size(); ++i)
     if (!(x[i] == x_in[i])) r.motion += norm(x_in[i] - x0[i]), r.kept += norm(x[i] - x0[i]);
