@@ -86,6 +86,40 @@ std::array<Vec3, 4> points_of(const Candidate& c, const std::vector<Vec3>& x) {
   return {x[c.ids[0]], x[c.ids[1]], x[c.ids[2]], x[c.ids[3]]};
 }
 
+// The first of a query's points that belong to its second primitive.
+int first_of_second(QueryKind kind) {
+  return kind == QueryKind::VertexFace ? 1 : 2;
+}
+
+// One pair's repulsion (Bridson, Fedkiw & Anderson 2002, §7.2, its inelastic part): a pair
+// within `zone` at the start whose closest points approach along n loses that approach. dv is
+// the change of velocity per unit weight: particle i of the pair changes by ±w_i·dv·n (+ on the
+// first primitive), which changes the points' relative speed along n by Σ w_i²·dv = -v_n over
+// the particles that may move (a pinned one does not).
+struct Push {
+  PairClosest at;  // the closest points at the start
+  Vec3 n;          // their unit direction, from the second primitive to the first
+  double dv = 0;   // 0: no push
+};
+Push push_of(const Candidate& c, const std::vector<Vec3>& x0, const std::vector<Vec3>& v,
+             const Cloth& cloth, double zone) {
+  Push p;
+  p.at = pair_closest(c.kind, points_of(c, x0));
+  if (!(p.at.distance > 0 && p.at.distance < zone)) return p;
+  p.n = (1 / p.at.distance) * p.at.dir;
+  const int split = first_of_second(c.kind);
+  Vec3 rel;
+  double w2 = 0;
+  for (int i = 0; i < 4; ++i) {
+    const double w = i < split ? p.at.w[i] : -p.at.w[i];
+    rel += w * v[c.ids[i]];
+    if (!cloth.pinned(c.ids[i])) w2 += w * w;
+  }
+  const double vn = dot(rel, p.n);
+  if (vn < 0 && w2 > 0) p.dv = -vn / w2;
+  return p;
+}
+
 // Work for one thread: a cell against itself (b < 0) or two sibling patches.
 struct Task {
   int a, b;
@@ -192,8 +226,8 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
 };
 
 SelfCollision::SelfCollision(const Cloth& cloth, int k, CcdTest exact, ExactToi exact_toi,
-                             int rounds, double gap)
-    : exact_(exact), exact_toi_(exact_toi), rounds_(rounds), gap_(gap) {
+                             int rounds, double gap, double dt)
+    : cloth_(cloth), exact_(exact), exact_toi_(exact_toi), rounds_(rounds), gap_(gap), dt_(dt) {
   if (!exact_ || !exact_toi_)
     throw std::invalid_argument("self-collision needs an exact CCD fallback");
   if (!(gap >= 0 && gap <= 0x1p100))
@@ -219,9 +253,9 @@ double SelfCollision::min_distance(const std::vector<Vec3>& x) const {
 
 SelfCollision::~SelfCollision() = default;
 
-void SelfCollision::contacts(const std::vector<Vec3>& x0, const std::vector<Vec3>& x, Result& r) {
-  candidates_.clear();
-  trees_->candidates(x0, x, candidates_);
+void SelfCollision::contacts(const std::vector<Vec3>& x0, const std::vector<Vec3>& x, Result& r,
+                             bool search) {
+  if (search) candidates_.clear(), trees_->candidates(x0, x, candidates_);
   hit_.assign(candidates_.size(), 0);
   for_chunks(int(candidates_.size()), 256, [&](int begin, int end) {
     for (int c = begin; c < end; ++c) {
@@ -267,6 +301,37 @@ void SelfCollision::stop_at_impact(const std::vector<Vec3>& x0, std::vector<Vec3
   }
 }
 
+long SelfCollision::repel(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
+                          std::vector<Vec3>& v) {
+  std::vector<Push> push(candidates_.size());
+  const double zone = kRepelZone * gap_;
+  for_chunks(int(candidates_.size()), 256, [&](int begin, int end) {
+    for (int c = begin; c < end; ++c) push[c] = push_of(candidates_[c], x0, v, cloth_, zone);
+  });
+  dv_.assign(x.size(), Vec3{});
+  count_.assign(x.size(), 0);
+  long pushed = 0;
+  for (std::size_t c = 0; c < candidates_.size(); ++c) {  // in order: the same sums on any thread
+    if (push[c].dv == 0) continue;
+    ++pushed;
+    const int split = first_of_second(candidates_[c].kind);
+    for (int i = 0; i < 4; ++i) {
+      const int id = candidates_[c].ids[i];
+      if (cloth_.pinned(id)) continue;
+      const double w = i < split ? push[c].at.w[i] : -push[c].at.w[i];
+      dv_[id] += (w * push[c].dv) * push[c].n;
+      ++count_[id];
+    }
+  }
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!count_[i]) continue;
+    const Vec3 d = (1.0 / count_[i]) * dv_[i];  // the mean of its pairs' pushes
+    v[i] += d;
+    x[i] += dt_ * d;
+  }
+  return pushed;
+}
+
 namespace {
 
 // Union–find over the particles, for the impact zones.
@@ -296,9 +361,16 @@ SelfCollision::Result SelfCollision::resolve(const std::vector<Vec3>& x0, std::v
 SelfCollision::Result SelfCollision::stages(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
                                             std::vector<Vec3>& v) {
   Result r;
+  bool search = true;
+  if (gap_ > 0 && dt_ > 0) {
+    candidates_.clear();
+    trees_->candidates(x0, x, candidates_);
+    r.repelled = repel(x0, x, v);
+    search = r.repelled > 0;  // the ends moved: their boxes too
+  }
   std::vector<Vec3> v_in;  // the velocities before any response, for the zones' means
   for (int round = 0; round < rounds_; ++round) {  // stage 1
-    contacts(x0, x, r);
+    contacts(x0, x, r, round > 0 || search);
     if (touching_.empty()) return r;
     if (v_in.empty()) v_in = v;
     ++r.rounds;

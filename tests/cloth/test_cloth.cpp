@@ -131,6 +131,51 @@ TEST(SelfCollision, StopsAPointAtItsTimeOfImpactWithTheCloth) {
   EXPECT_EQ(y[0], (Vec3{0.6, 1.5, 0.6}));
 }
 
+// With a gap, the lifted corner stops where its distance to the rest of the cloth reaches the
+// gap (its edges reach it first, before the corner itself), not at contact: every pair the pass
+// tested ends the step at least the gap apart, and it stopped at rest above the cloth by the gap.
+TEST(SelfCollision, KeepsAGapInsteadOfStoppingAtContact) {
+  const Cloth cloth = three_by_three();
+  const std::vector<Vec3> x0 = corner_lifted(cloth);
+  constexpr double kGap = 0.125;
+  SelfCollision pass(cloth, 18, &exact::ccd_hit, &exact::ccd_toi, SelfCollision::kRounds, kGap);
+  std::vector<Vec3> x = x0, v(x0.size());
+  x[0] = {0.6, -0.5, 0.6};
+  const SelfCollision::Result r = pass.resolve(x0, x, v);
+  EXPECT_GT(r.hits, 0);
+  EXPECT_GE(r.min_distance, kGap * (1 - 0x1p-30));
+  EXPECT_GE(x[0].y, kGap);
+  EXPECT_LT(x[0].y, 0.5);  // it moved
+  EXPECT_EQ(v[0], (Vec3{0, 0, 0}));
+  EXPECT_FALSE(r.zones);
+  // At contact (gap 0) the same motion ends a hair from the cloth.
+  SelfCollision contact(cloth, 18, &exact::ccd_hit, &exact::ccd_toi);
+  std::vector<Vec3> y = x0, w(x0.size());
+  y[0] = {0.6, -0.5, 0.6};
+  EXPECT_LT(contact.resolve(x0, y, w).min_distance, 1e-8);
+}
+
+// A pair that starts within the gap is not stalled: it moves away freely, and moving closer it
+// is held at half the gap.
+TEST(SelfCollision, APairWithinTheGapAtTheStartMovesAwayAndIsHeldAtHalfTheGap) {
+  const Cloth cloth = three_by_three();
+  std::vector<Vec3> x0 = corner_lifted(cloth);
+  x0[0].y = 0.1;  // within the gap of 0.125 above the far cell
+  constexpr double kGap = 0.125;
+  SelfCollision pass(cloth, 18, &exact::ccd_hit, &exact::ccd_toi, SelfCollision::kRounds, kGap);
+  std::vector<Vec3> up = x0, v(x0.size());
+  up[0].y = 0.5;
+  EXPECT_EQ(pass.resolve(x0, up, v).hits, 0);
+  EXPECT_EQ(up[0].y, 0.5);
+  std::vector<Vec3> down = x0;
+  down[0].y = -0.5;
+  const SelfCollision::Result r = pass.resolve(x0, down, v);
+  EXPECT_GT(r.hits, 0);
+  EXPECT_GE(down[0].y, kGap / 2);
+  EXPECT_LT(down[0].y, 0.1);
+  EXPECT_FALSE(r.zones);
+}
+
 // Stage 2 of the response: with no rounds of particle stops, the contact goes to an impact zone,
 // which stays where the step began and takes its particles' mean velocity; the rest of the cloth
 // keeps moving.

@@ -78,6 +78,7 @@ json scene_run_json(const cloth::Scene& scene, const SceneRunOptions& opt, const
           {"self_motion_kept", motion_kept(r)},
           {"self_crossing", counted(r.self_audited, r.audit.self_intersections)},
           {"self_distance", six_digits(r.self_gap)},
+          {"self_repulsions", r.self_repulsions},
           {"self_distance_min", measured(r.self_distance_min)},
           {"obstacle_distance_min", measured(r.obstacle_distance_min)},
           {"energy_start", six_digits(r.energy_start)},

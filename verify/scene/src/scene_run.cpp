@@ -101,6 +101,7 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
     r.time += sim.times();
     r.candidates += long(sim.queries().size());
     r.collisions += sim.collisions();
+    r.self_repulsions += sim.self().repelled;
     r.self_queries += sim.self().queries;
     r.self_hits += sim.self().hits;
     r.self_round_frames += sim.self().rounds > 0;

@@ -1,8 +1,8 @@
-// The distance between two of the cloth's primitives at one instant, in plain floating point:
-// a vertex and a triangle, or two edges. The self-collision pass uses it to see which pairs
-// already lie within the gap at the start of a step, and to report the smallest distance kept;
-// neither decides a contact (robust CCD does, fdh/ccd/robust.hpp), so rounding here costs at
-// most a stop earlier or later, never a crossing.
+// The closest points of two of the cloth's primitives at one instant, in plain floating point:
+// a vertex and a triangle, or two edges. The self-collision pass uses them to see which pairs
+// lie within the gap at the start of a step, to push such pairs apart, and to report the
+// smallest distance kept; none of that decides a contact (robust CCD does,
+// fdh/ccd/robust.hpp), so rounding here costs at most a stop earlier or later, never a crossing.
 #pragma once
 
 #include <array>
@@ -12,13 +12,21 @@
 
 namespace fdh::cloth {
 
-// |p - closest point of the triangle abc|.
-double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+// The closest points as weights of the four points, each primitive's summing to 1: the first
+// primitive's point is the sum of w[i] p[i] over its points (vertex–face: the vertex, p[0];
+// edge–edge: p[0], p[1]), the second's over the rest. `dir` points from the second primitive's
+// point to the first's; distance = |dir|.
+struct PairClosest {
+  std::array<double, 4> w{};
+  Vec3 dir;
+  double distance = 0;
+};
 
-// The distance between the segments p1 q1 and p2 q2 (zero lengths allowed).
-double segment_segment_distance(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2);
+// Ericson, Real-Time Collision Detection (2005), §5.1.5 (vertex–face) and §5.1.9 (edge–edge).
+PairClosest pair_closest(QueryKind kind, const std::array<Vec3, 4>& p);
 
-// A query's four points at one instant: vertex–face (v, f0, f1, f2) or edge–edge (a0, a1, b0, b1).
-double pair_distance(QueryKind kind, const std::array<Vec3, 4>& p);
+inline double pair_distance(QueryKind kind, const std::array<Vec3, 4>& p) {
+  return pair_closest(kind, p).distance;
+}
 
 }  // namespace fdh::cloth

@@ -14,6 +14,12 @@
 // contact. Such a pair would otherwise stop at once and stay stopped (docs/methods.md, "The
 // cloth keeps a gap").
 //
+// Before the test, repulsion (Bridson, Fedkiw & Anderson 2002, §7.2, its inelastic part): a pair
+// within kRepelZone gaps at the start of the step whose closest points approach each other loses
+// that approach, an impulse along the line between them shared by the pair's particles as
+// their weights say; a particle in several such pairs takes their mean. A pair resting on
+// another then hovers near the gap instead of meeting it in every step.
+//
 // Response, in three stages, each used only when the one before did not resolve the step:
 // 1. rounds: the particles of every pair that reaches its gap stop at the pair's certified
 //    earliest time there, at rest: robust's t_lo (fdh/ccd/toi.hpp, never after it; the start of
@@ -45,15 +51,18 @@ class SelfCollision {
  public:
   static constexpr int kRounds = 4;
   static constexpr int kZoneRounds = 32;
+  static constexpr double kRepelZone = 1.25;  // in gaps
 
   // k: the FDH's k. exact, exact_toi: robust's fallbacks for the verdict and the time of impact,
   // within a minimum separation (fdh::exact::ccd_hit and ccd_toi in this project). rounds: stage
-  // 1's (fewer only to test stage 2). gap: the distance kept, m (0: contact).
+  // 1's (fewer only to test stage 2). gap: the distance kept, m (0: contact). dt: the step, s,
+  // which turns the repulsion's change of velocity into one of the step's end (0: no repulsion).
   SelfCollision(const Cloth& cloth, int k, CcdTest exact, ExactToi exact_toi, int rounds = kRounds,
-                double gap = 0);
+                double gap = 0, double dt = 0);
   ~SelfCollision();
 
   struct Result {
+    long repelled = 0;         // pairs the repulsion slowed
     long queries = 0;          // CCD queries run
     long hits = 0;             // of them, contacts
     int rounds = 0;            // rounds of stage 1 that stopped particles
@@ -83,8 +92,12 @@ class SelfCollision {
   struct Trees;
   template <int K>
   struct TreesK;
-  // The contacts of the step x0 -> x (queries counted into r).
-  void contacts(const std::vector<Vec3>& x0, const std::vector<Vec3>& x, Result& r);
+  // The contacts of the step x0 -> x (queries counted into r); search: find the candidates
+  // again (false: the last search's still hold).
+  void contacts(const std::vector<Vec3>& x0, const std::vector<Vec3>& x, Result& r,
+                bool search = true);
+  // The repulsion; the number of pairs it slowed.
+  long repel(const std::vector<Vec3>& x0, std::vector<Vec3>& x, std::vector<Vec3>& v);
   // The three stages (resolve() adds the motion kept).
   Result stages(const std::vector<Vec3>& x0, std::vector<Vec3>& x, std::vector<Vec3>& v);
   // Stage 1's stop: each particle of a touching pair at rest at the earliest t_lo of its pairs.
@@ -94,14 +107,17 @@ class SelfCollision {
   // The smallest distance at x among the last test's candidates.
   double min_distance(const std::vector<Vec3>& x) const;
 
+  const Cloth& cloth_;
   std::unique_ptr<Trees> trees_;
   CcdTest exact_;
   ExactToi exact_toi_;
   int rounds_;
-  double gap_;
+  double gap_, dt_;
   std::vector<Candidate> candidates_, touching_;
   std::vector<char> hit_;
   std::vector<double> toi_, stop_;  // per touching pair, per particle
+  std::vector<Vec3> dv_;            // the repulsion's, per particle
+  std::vector<int> count_;          // its pairs, per particle
 };
 
 }  // namespace fdh::cloth

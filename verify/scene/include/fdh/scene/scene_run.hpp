@@ -49,6 +49,7 @@ struct SceneRun {
   // The self-collision pass: its queries and contacts, and how often each stage of its response
   // ended a frame (fdh/cloth/self_collision.hpp): frames whose contacts took particle stops,
   // frames that needed impact zones (and their particles, summed), frames stopped whole.
+  long self_repulsions = 0;  // pairs the pass's repulsion slowed, summed over the frames
   long self_queries = 0, self_hits = 0, self_round_frames = 0, self_zone_frames = 0,
        self_zone_particles = 0, self_stops = 0;
   // The motion of the particles whose end of step the response changed, summed over the frames
