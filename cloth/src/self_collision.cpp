@@ -86,6 +86,19 @@ std::array<Vec3, 4> points_of(const Candidate& c, const std::vector<Vec3>& x) {
   return {x[c.ids[0]], x[c.ids[1]], x[c.ids[2]], x[c.ids[3]]};
 }
 
+// Whether two of the pair's particles, one of each primitive, lie in one cell of the grid (rows
+// and columns at most one apart): such a pair sits about 0.71 spacings apart at rest, and its
+// springs, not the gap, keep it apart ("near by construction", docs/cloth.md).
+bool shares_a_cell(const Candidate& c, int grid) {
+  const int split = c.kind == QueryKind::VertexFace ? 1 : 2;
+  for (int i = 0; i < split; ++i)
+    for (int j = split; j < 4; ++j) {
+      const int a = c.ids[i], b = c.ids[j];
+      if (std::abs(a / grid - b / grid) <= 1 && std::abs(a % grid - b % grid) <= 1) return true;
+    }
+  return false;
+}
+
 // The first of a query's points that belong to its second primitive.
 int first_of_second(QueryKind kind) {
   return kind == QueryKind::VertexFace ? 1 : 2;
@@ -104,6 +117,7 @@ struct Push {
 Push push_of(const Candidate& c, const std::vector<Vec3>& x0, const std::vector<Vec3>& v,
              const Cloth& cloth, double zone) {
   Push p;
+  if (shares_a_cell(c, cloth.grid())) return p;
   p.at = pair_closest(c.kind, points_of(c, x0));
   if (!(p.at.distance > 0 && p.at.distance < zone)) return p;
   p.n = (1 / p.at.distance) * p.at.dir;
@@ -247,7 +261,8 @@ double SelfCollision::gap_of(double start_distance) const {
 
 double SelfCollision::min_distance(const std::vector<Vec3>& x) const {
   double d = std::numeric_limits<double>::infinity();
-  for (const Candidate& c : candidates_) d = std::min(d, pair_distance(c.kind, points_of(c, x)));
+  for (const Candidate& c : candidates_)
+    if (!shares_a_cell(c, cloth_.grid())) d = std::min(d, pair_distance(c.kind, points_of(c, x)));
   return d;
 }
 
@@ -263,7 +278,8 @@ void SelfCollision::contacts(const std::vector<Vec3>& x0, const std::vector<Vec3
       Query q;
       q.kind = cand.kind;
       for (int i = 0; i < 4; ++i) q.x[i] = x0[cand.ids[i]], q.x[i + 4] = x[cand.ids[i]];
-      if (gap_ > 0) cand.gap = gap_of(pair_distance(cand.kind, points_of(cand, x0)));
+      if (gap_ > 0 && !shares_a_cell(cand, cloth_.grid()))
+        cand.gap = gap_of(pair_distance(cand.kind, points_of(cand, x0)));
       q.min_distance = cand.gap;
       hit_[c] = robust_ccd(q, exact_);
     }
@@ -301,15 +317,14 @@ void SelfCollision::stop_at_impact(const std::vector<Vec3>& x0, std::vector<Vec3
   }
 }
 
-long SelfCollision::repel(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
-                          std::vector<Vec3>& v) {
+long SelfCollision::repel(const std::vector<Vec3>& x0, std::vector<Vec3>& v) {
   std::vector<Push> push(candidates_.size());
   const double zone = kRepelZone * gap_;
   for_chunks(int(candidates_.size()), 256, [&](int begin, int end) {
     for (int c = begin; c < end; ++c) push[c] = push_of(candidates_[c], x0, v, cloth_, zone);
   });
-  dv_.assign(x.size(), Vec3{});
-  count_.assign(x.size(), 0);
+  dv_.assign(v.size(), Vec3{});
+  count_.assign(v.size(), 0);
   long pushed = 0;
   for (std::size_t c = 0; c < candidates_.size(); ++c) {  // in order: the same sums on any thread
     if (push[c].dv == 0) continue;
@@ -323,12 +338,8 @@ long SelfCollision::repel(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
       ++count_[id];
     }
   }
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!count_[i]) continue;
-    const Vec3 d = (1.0 / count_[i]) * dv_[i];  // the mean of its pairs' pushes
-    v[i] += d;
-    x[i] += dt_ * d;
-  }
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (count_[i]) v[i] += (1.0 / count_[i]) * dv_[i];  // the mean of its pairs' pushes
   return pushed;
 }
 
@@ -361,26 +372,41 @@ SelfCollision::Result SelfCollision::resolve(const std::vector<Vec3>& x0, std::v
 SelfCollision::Result SelfCollision::stages(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
                                             std::vector<Vec3>& v) {
   Result r;
-  bool search = true;
-  if (gap_ > 0 && dt_ > 0) {
+  const bool repelling = gap_ > 0 && dt_ > 0;
+  if (repelling) {
     candidates_.clear();
     trees_->candidates(x0, x, candidates_);
-    r.repelled = repel(x0, x, v);
-    search = r.repelled > 0;  // the ends moved: their boxes too
+    r.repelled = repel(x0, v);  // velocities only: x and so the candidates stay
   }
   std::vector<Vec3> v_in;  // the velocities before any response, for the zones' means
-  for (int round = 0; round < rounds_; ++round) {  // stage 1
-    contacts(x0, x, r, round > 0 || search);
+  const int rounds = rounds_ > 0 ? rounds_ + kStartRounds : 0;
+  for (int round = 0; round < rounds; ++round) {  // stage 1
+    contacts(x0, x, r, round > 0 || !repelling);
     if (touching_.empty()) return r;
     if (v_in.empty()) v_in = v;
     ++r.rounds;
-    stop_at_impact(x0, x, v);
+    if (round < rounds_)
+      stop_at_impact(x0, x, v);
+    else
+      stop_at_start(x0, x, v);
   }
-  contacts(x0, x, r);
+  contacts(x0, x, r, rounds > 0 || !repelling);
   if (touching_.empty()) return r;
+  if (v_in.empty()) v_in = v;
+  zone_stage(x0, x, v, v_in, r);
+  return r;
+}
+
+void SelfCollision::stop_at_start(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
+                                  std::vector<Vec3>& v) {
+  for (const Candidate& c : touching_)
+    for (const int i : c.ids) x[i] = x0[i], v[i] = Vec3{};
+}
+
+void SelfCollision::zone_stage(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
+                               std::vector<Vec3>& v, const std::vector<Vec3>& v_in, Result& r) {
   r.zones = true;  // stage 2
   const int n = int(x.size());
-  if (v_in.empty()) v_in = v;
   Zones zones(n);
   std::vector<char> in_zone(n, 0);
   for (int round = 0; round < kZoneRounds && !touching_.empty(); ++round) {
@@ -399,11 +425,10 @@ SelfCollision::Result SelfCollision::stages(const std::vector<Vec3>& x0, std::ve
     contacts(x0, x, r);
   }
   r.zone_particles = std::count(in_zone.begin(), in_zone.end(), 1);
-  if (touching_.empty()) return r;
+  if (touching_.empty()) return;
   x = x0;  // stage 3: still in contact after every zone iteration
   for (Vec3& u : v) u = Vec3{};
   r.stopped_all = true;
-  return r;
 }
 
 }  // namespace fdh::cloth
