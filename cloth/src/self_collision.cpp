@@ -272,9 +272,19 @@ void SelfCollision::contacts(const std::vector<Vec3>& x0, const std::vector<Vec3
                              bool search) {
   if (search) candidates_.clear(), trees_->candidates(x0, x, candidates_);
   hit_.assign(candidates_.size(), 0);
+  // After a round of stops only pairs with a stopped particle can change their verdict: the
+  // others move as they did in the round's test (which found them apart) or, new candidates,
+  // lie in a patch that was flat for that same motion.
+  const auto moved = [&](const Candidate& c) {
+    return changed_.empty() || changed_[c.ids[0]] || changed_[c.ids[1]] || changed_[c.ids[2]] ||
+           changed_[c.ids[3]];
+  };
+  long tested = 0;
+  for (const Candidate& c : candidates_) tested += moved(c);
   for_chunks(int(candidates_.size()), 256, [&](int begin, int end) {
     for (int c = begin; c < end; ++c) {
       Candidate& cand = candidates_[c];
+      if (!moved(cand)) continue;
       Query q;
       q.kind = cand.kind;
       for (int i = 0; i < 4; ++i) q.x[i] = x0[cand.ids[i]], q.x[i + 4] = x[cand.ids[i]];
@@ -287,7 +297,7 @@ void SelfCollision::contacts(const std::vector<Vec3>& x0, const std::vector<Vec3
   touching_.clear();
   for (std::size_t c = 0; c < candidates_.size(); ++c)
     if (hit_[c]) touching_.push_back(candidates_[c]);
-  r.queries += long(candidates_.size());
+  r.queries += tested;
   r.hits += long(touching_.size());
 }
 
@@ -309,8 +319,10 @@ void SelfCollision::stop_at_impact(const std::vector<Vec3>& x0, std::vector<Vec3
   stop_.assign(x.size(), 2);  // 2: not in a touching pair
   for (std::size_t c = 0; c < touching_.size(); ++c)
     for (const int i : touching_[c].ids) stop_[i] = std::min(stop_[i], toi_[c]);
+  changed_.assign(x.size(), 0);
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (stop_[i] > 1) continue;
+    changed_[i] = 1;
     // t_lo = 0 puts it back at the start exactly (0 only when the pair touches there).
     x[i] = stop_[i] == 0 ? x0[i] : x0[i] + stop_[i] * (x[i] - x0[i]);
     v[i] = Vec3{};
@@ -379,6 +391,7 @@ SelfCollision::Result SelfCollision::stages(const std::vector<Vec3>& x0, std::ve
     r.repelled = repel(x0, v);  // velocities only: x and so the candidates stay
   }
   std::vector<Vec3> v_in;  // the velocities before any response, for the zones' means
+  changed_.clear();        // the first test takes every candidate
   const int rounds = rounds_ > 0 ? rounds_ + kStartRounds : 0;
   for (int round = 0; round < rounds; ++round) {  // stage 1
     contacts(x0, x, r, round > 0 || !repelling);
@@ -399,13 +412,15 @@ SelfCollision::Result SelfCollision::stages(const std::vector<Vec3>& x0, std::ve
 
 void SelfCollision::stop_at_start(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
                                   std::vector<Vec3>& v) {
+  changed_.assign(x.size(), 0);
   for (const Candidate& c : touching_)
-    for (const int i : c.ids) x[i] = x0[i], v[i] = Vec3{};
+    for (const int i : c.ids) x[i] = x0[i], v[i] = Vec3{}, changed_[i] = 1;
 }
 
 void SelfCollision::zone_stage(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
                                std::vector<Vec3>& v, const std::vector<Vec3>& v_in, Result& r) {
   r.zones = true;  // stage 2
+  changed_.clear();  // every candidate, in every iteration
   const int n = int(x.size());
   Zones zones(n);
   std::vector<char> in_zone(n, 0);

@@ -69,7 +69,7 @@ class SelfCollision {
 
   struct Result {
     long repelled = 0;         // pairs the repulsion slowed
-    long queries = 0;          // CCD queries run
+    long queries = 0;          // CCD queries run (after a round: those with a stopped particle)
     long hits = 0;             // of them, contacts
     int rounds = 0;            // rounds of stage 1 that stopped particles (both kinds)
     bool zones = false;        // stage 2 ran
@@ -131,6 +131,7 @@ class SelfCollision {
   std::vector<double> toi_, stop_;  // per touching pair, per particle
   std::vector<Vec3> dv_;            // the repulsion's, per particle
   std::vector<int> count_;          // its pairs, per particle
+  std::vector<char> changed_;       // per particle: stopped by the last round (empty: all)
 };
 
 }  // namespace fdh::cloth
