@@ -419,7 +419,7 @@ void SelfCollision::stop_at_start(const std::vector<Vec3>& x0, std::vector<Vec3>
 
 void SelfCollision::zone_stage(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
                                std::vector<Vec3>& v, const std::vector<Vec3>& v_in, Result& r) {
-  r.zones = true;  // stage 2
+  r.zones = true;    // stage 2
   changed_.clear();  // every candidate, in every iteration
   const int n = int(x.size());
   Zones zones(n);

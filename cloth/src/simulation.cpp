@@ -71,7 +71,7 @@ Simulation::Simulation(const Scene& scene, PointTriangleTest narrow, int k, doub
   });
   if (scene.self_collision)
     self_pass_ = std::make_unique<SelfCollision>(cloth_, k, self_exact, self_toi,
-                                                SelfCollision::kRounds, scene.self_gap(), dt_);
+                                                 SelfCollision::kRounds, scene.self_gap(), dt_);
 }
 
 Simulation::~Simulation() = default;

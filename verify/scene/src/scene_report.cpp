@@ -11,10 +11,10 @@
 
 #include "fdh/cloth/cloth.hpp"
 #include "fdh/io/input_error.hpp"
+#include "fdh/io/json_text.hpp"
 #include "fdh/io/scene_file.hpp"
 #include "fdh/io/scene_output.hpp"
 #include "fdh/os/atomic_file.hpp"
-#include "fdh/io/json_text.hpp"
 
 namespace fdh::verify {
 namespace {

@@ -41,9 +41,8 @@ void print_simulate_gaps(std::ostream& out, const cloth::Scene& scene, const Sce
   out << fmt::format("gaps (float)   obstacles: skin {:g} m, smallest particle distance {}\n",
                      r.skin, distance_text(r.obstacle_distance_min));
   if (scene.self_collision)
-    out << fmt::format(
-        "               self: distance {:g} m, smallest among the pairs tested {}\n", r.self_gap,
-        distance_text(r.self_distance_min));
+    out << fmt::format("               self: distance {:g} m, smallest among the pairs tested {}\n",
+                       r.self_gap, distance_text(r.self_distance_min));
 }
 
 // The counts, the checks and the files written.
