@@ -17,9 +17,11 @@ using Candidate = SelfCollision::Candidate;
 // The patch tree with a swept FDH per node, behind a run-time k.
 struct SelfCollision::Trees {
   virtual ~Trees() = default;
-  // The candidates of the step x0 -> x1, in an order fixed by the tree alone.
+  // The candidates of the step x0 -> x1, in an order fixed by the tree alone; with `changed`
+  // (per particle; empty: all), only those with a changed particle, and patches without one are
+  // not visited.
   virtual void candidates(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
-                          std::vector<Candidate>& out) = 0;
+                          const std::vector<char>& changed, std::vector<Candidate>& out) = 0;
 };
 
 namespace {
@@ -149,14 +151,16 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
   std::vector<Aabb> particle_aabb;  // particle_box's axis slabs
   std::vector<Task> tasks;
   std::vector<std::vector<Candidate>> parts;
+  std::vector<char> dirty;  // per node: holds a changed particle
 
   double half_gap;  // each swept box grows by it (and a hair: grow()), so pairs within the gap meet
 
   TreesK(const Cloth& c, double gap) : cloth(c), tree(c), half_gap(0.5 * gap * (1 + 0x1p-40)) {}
 
   void candidates(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
-                  std::vector<Candidate>& out) override {
+                  const std::vector<char>& changed, std::vector<Candidate>& out) override {
     tree.update_normals(x0, x1);
+    mark_dirty(changed);
     tasks.clear();
     collect(0, x0, x1);
     if (tasks.empty()) return;  // the whole cloth is flat: nothing can touch
@@ -171,9 +175,23 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
     });
   }
 
-  // Top down: a flat node needs nothing; otherwise its cell, or its children and their pair.
+  // Each node: whether a particle of its cells changed (every node when `changed` is empty).
+  void mark_dirty(const std::vector<char>& changed) {
+    dirty.assign(tree.nodes().size(), 1);
+    if (changed.empty()) return;
+    const int g = cloth.grid();
+    tree.bottom_up([&](int i) {
+      const auto& nd = tree.nodes()[i];
+      const int a = nd.r0 * g + nd.c0;
+      dirty[i] = nd.leaf() ? changed[a] || changed[a + 1] || changed[a + g] || changed[a + g + 1]
+                           : dirty[nd.left] || dirty[nd.right];
+    });
+  }
+
+  // Top down: a flat node needs nothing, nor one without a changed particle; otherwise its
+  // cell, or its children and their pair.
   void collect(int node, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
-    if (tree.flat(node, x0, x1)) return;
+    if (!dirty[node] || tree.flat(node, x0, x1)) return;
     const auto& n = tree.nodes()[node];
     if (n.leaf()) {
       tasks.push_back({node, -1});
@@ -224,7 +242,7 @@ struct SelfCollision::TreesK : SelfCollision::Trees {
     while (!stack.empty()) {
       const auto [i, j] = stack.back();
       stack.pop_back();
-      if (!overlap(box[i], box[j])) continue;
+      if ((!dirty[i] && !dirty[j]) || !overlap(box[i], box[j])) continue;
       const auto &ni = nodes[i], &nj = nodes[j];
       if (ni.leaf() && nj.leaf()) {
         cell_pairs(tree, cloth, particle_aabb, tree.cell_of(ni), tree.cell_of(nj), out);
@@ -261,8 +279,12 @@ double SelfCollision::gap_of(double start_distance) const {
 
 double SelfCollision::min_distance(const std::vector<Vec3>& x) const {
   double d = std::numeric_limits<double>::infinity();
-  for (const Candidate& c : candidates_)
-    if (!shares_a_cell(c, cloth_.grid())) d = std::min(d, pair_distance(c.kind, points_of(c, x)));
+  const auto measure = [&](const std::vector<Candidate>& list) {
+    for (const Candidate& c : list)
+      if (!shares_a_cell(c, cloth_.grid())) d = std::min(d, pair_distance(c.kind, points_of(c, x)));
+  };
+  measure(candidates_);
+  if (!changed_.empty()) measure(first_);  // a later search held only the stopped particles'
   return d;
 }
 
@@ -270,7 +292,7 @@ SelfCollision::~SelfCollision() = default;
 
 void SelfCollision::contacts(const std::vector<Vec3>& x0, const std::vector<Vec3>& x, Result& r,
                              bool search) {
-  if (search) candidates_.clear(), trees_->candidates(x0, x, candidates_);
+  if (search) candidates_.clear(), trees_->candidates(x0, x, changed_, candidates_);
   hit_.assign(candidates_.size(), 0);
   // After a round of stops only pairs with a stopped particle can change their verdict: the
   // others move as they did in the round's test (which found them apart) or, new candidates,
@@ -384,18 +406,19 @@ SelfCollision::Result SelfCollision::resolve(const std::vector<Vec3>& x0, std::v
 SelfCollision::Result SelfCollision::stages(const std::vector<Vec3>& x0, std::vector<Vec3>& x,
                                             std::vector<Vec3>& v) {
   Result r;
+  changed_.clear();  // the first search and test take every candidate
   const bool repelling = gap_ > 0 && dt_ > 0;
   if (repelling) {
     candidates_.clear();
-    trees_->candidates(x0, x, candidates_);
+    trees_->candidates(x0, x, changed_, candidates_);
     r.repelled = repel(x0, v);  // velocities only: x and so the candidates stay
   }
   std::vector<Vec3> v_in;  // the velocities before any response, for the zones' means
-  changed_.clear();        // the first test takes every candidate
   const int rounds = rounds_ > 0 ? rounds_ + kStartRounds : 0;
   for (int round = 0; round < rounds; ++round) {  // stage 1
     contacts(x0, x, r, round > 0 || !repelling);
     if (touching_.empty()) return r;
+    if (round == 0) first_ = candidates_;
     if (v_in.empty()) v_in = v;
     ++r.rounds;
     if (round < rounds_)

@@ -127,6 +127,8 @@ class SelfCollision {
   int rounds_;
   double gap_, dt_;
   std::vector<Candidate> candidates_, touching_;
+  std::vector<Candidate>
+      first_;  // the step's first search (with repulsion or not), for the measure
   std::vector<char> hit_;
   std::vector<double> toi_, stop_;  // per touching pair, per particle
   std::vector<Vec3> dv_;            // the repulsion's, per particle
