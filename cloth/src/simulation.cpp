@@ -70,7 +70,8 @@ Simulation::Simulation(const Scene& scene, PointTriangleTest narrow, int k, doub
     return std::make_unique<BroadPhaseK<decltype(kc)::value>>(cloth_.x(), mesh_);
   });
   if (scene.self_collision)
-    self_pass_ = std::make_unique<SelfCollision>(cloth_, k, self_exact, self_toi);
+    self_pass_ = std::make_unique<SelfCollision>(cloth_, k, self_exact, self_toi,
+                                                 SelfCollision::kRounds, scene.self_gap(), dt_);
 }
 
 Simulation::~Simulation() = default;

@@ -131,6 +131,89 @@ TEST(SelfCollision, StopsAPointAtItsTimeOfImpactWithTheCloth) {
   EXPECT_EQ(y[0], (Vec3{0.6, 1.5, 0.6}));
 }
 
+// A 5×5 cloth of side 4 centred at the origin (spacing 1); its corner particle 0 lifted to
+// height y over the cell x, z in [0, 1], two cells from the corner's own (so the corner and that
+// cell's triangles are not near by construction: they share no cell).
+Cloth five_by_five() {
+  ClothSpec spec;
+  spec.grid = 5;
+  spec.size = 4;
+  spec.centre = {0, 0, 0};
+  return Cloth(spec);
+}
+std::vector<Vec3> corner_at(const Cloth& cloth, double y) {
+  std::vector<Vec3> x0 = cloth.x();
+  x0[0] = {0.6, y, 0.6};
+  return x0;
+}
+
+// With a gap, the lifted corner stops where its primitives' distance to the rest of the cloth
+// reaches the gap, not at contact: every pair the pass tested (apart from those sharing a cell)
+// ends the step at least the gap apart, and the corner stopped at rest above the cloth.
+TEST(SelfCollision, KeepsAGapInsteadOfStoppingAtContact) {
+  const Cloth cloth = five_by_five();
+  const std::vector<Vec3> x0 = corner_at(cloth, 0.5);
+  constexpr double kGap = 0.125;
+  SelfCollision pass(cloth, 18, &exact::ccd_hit, &exact::ccd_toi, SelfCollision::kRounds, kGap);
+  std::vector<Vec3> x = x0, v(x0.size());
+  x[0].y = -0.5;
+  const SelfCollision::Result r = pass.resolve(x0, x, v);
+  EXPECT_GT(r.hits, 0);
+  EXPECT_GE(r.min_distance, kGap * (1 - 0x1p-30));
+  EXPECT_GE(x[0].y, kGap);
+  EXPECT_LT(x[0].y, 0.5);  // it moved
+  EXPECT_EQ(v[0], (Vec3{0, 0, 0}));
+  EXPECT_FALSE(r.zones);
+  // At contact (gap 0) the same motion ends a hair from the cloth.
+  SelfCollision contact(cloth, 18, &exact::ccd_hit, &exact::ccd_toi);
+  std::vector<Vec3> y = x0, w(x0.size());
+  y[0].y = -0.5;
+  EXPECT_LT(contact.resolve(x0, y, w).min_distance, 1e-8);
+}
+
+// A pair that starts within the gap is not stalled: it moves away freely, and moving closer it
+// is held at half the gap.
+TEST(SelfCollision, APairWithinTheGapAtTheStartMovesAwayAndIsHeldAtHalfTheGap) {
+  const Cloth cloth = five_by_five();
+  const std::vector<Vec3> x0 = corner_at(cloth, 0.1);  // within the gap of 0.125
+  constexpr double kGap = 0.125;
+  SelfCollision pass(cloth, 18, &exact::ccd_hit, &exact::ccd_toi, SelfCollision::kRounds, kGap);
+  std::vector<Vec3> up = x0, v(x0.size());
+  up[0].y = 0.5;
+  EXPECT_EQ(pass.resolve(x0, up, v).hits, 0);
+  EXPECT_EQ(up[0].y, 0.5);
+  std::vector<Vec3> down = x0;
+  down[0].y = -0.5;
+  const SelfCollision::Result r = pass.resolve(x0, down, v);
+  EXPECT_GT(r.hits, 0);
+  EXPECT_GE(down[0].y, kGap / 2);
+  EXPECT_LT(down[0].y, 0.1);
+  EXPECT_FALSE(r.zones);
+}
+
+// The repulsion: the corner just above the cloth, within 1.25 gaps, falling onto it loses some of
+// its downward speed (shared with the cell below it); the same corner rising keeps its speed.
+TEST(SelfCollision, RepulsionTakesTheApproachOfAPairNearTheGap) {
+  const Cloth cloth = five_by_five();
+  constexpr double kGap = 0.125, kDt = 0.01;
+  const std::vector<Vec3> x0 = corner_at(cloth, 0.15);
+  SelfCollision pass(cloth, 18, &exact::ccd_hit, &exact::ccd_toi, SelfCollision::kRounds, kGap,
+                     kDt);
+  std::vector<Vec3> x = x0, v(x0.size());
+  v[0] = {0, -1, 0};
+  x[0] += kDt * v[0];
+  const SelfCollision::Result r = pass.resolve(x0, x, v);
+  EXPECT_GT(r.repelled, 0);
+  EXPECT_EQ(r.hits, 0);
+  EXPECT_GT(v[0].y, -1);
+  EXPECT_EQ(x[0].y, 0.15 - kDt);  // the step's end stays: the velocity acts from the next step
+  std::vector<Vec3> y = x0, w(x0.size());
+  w[0] = {0, 1, 0};
+  y[0] += kDt * w[0];
+  EXPECT_EQ(pass.resolve(x0, y, w).repelled, 0);
+  EXPECT_EQ(w[0], (Vec3{0, 1, 0}));
+}
+
 // Stage 2 of the response: with no rounds of particle stops, the contact goes to an impact zone,
 // which stays where the step began and takes its particles' mean velocity; the rest of the cloth
 // keeps moving.

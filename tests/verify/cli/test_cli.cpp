@@ -419,6 +419,10 @@ TEST(Cli, SimulateJsonFields) {
                                                "self_stops",
                                                "self_motion_kept",
                                                "self_crossing",
+                                               "self_distance",
+                                               "self_repulsions",
+                                               "self_distance_min",
+                                               "obstacle_distance_min",
                                                "energy_start",
                                                "energy_end"}));
   EXPECT_EQ(keys(j["ms_per_frame"]),
@@ -430,6 +434,9 @@ TEST(Cli, SimulateJsonFields) {
   EXPECT_EQ(j["k"], 18);
   EXPECT_EQ(j["fp"], 0);
   EXPECT_TRUE(j["self_crossing"].is_null());
+  EXPECT_EQ(j["self_distance"], 0);  // no self pass: no gap kept
+  EXPECT_TRUE(j["self_distance_min"].is_null());
+  EXPECT_GT(j["obstacle_distance_min"].get<double>(), 0);
   const CliRun unchecked = fdhcert({"simulate", FDH_SOURCE_DIR "/corpus/scenes/table.scene",
                                     "--grid", "6", "--frames", "5", "--json", "--no-check"});
   ASSERT_EQ(unchecked.status, 0) << unchecked.err;

@@ -8,7 +8,9 @@
 #include <set>
 #include <sstream>
 
+#include "fdh/io/input_error.hpp"
 #include "fdh/io/scene_file.hpp"
+#include "temp_dir.hpp"
 
 namespace fdh::verify {
 namespace {
@@ -74,6 +76,28 @@ TEST(SceneSchema, TheCheckRefusesEveryFieldPastItsRange) {
       EXPECT_NE(std::string(e.what()).find("s.scene: " + std::string(f.field)), std::string::npos)
           << e.what();
     }
+  }
+}
+
+// self_distance: a length in the table's range, or auto (the skin); out of range, the file and
+// line.
+TEST(SceneSchema, SelfDistanceIsALengthOrAuto) {
+  const std::string path = (fresh_temp_dir("self_distance") / "s.scene").string();
+  const auto read = [&](const std::string& text) {
+    std::ofstream(path) << text;
+    return read_scene(path);
+  };
+  EXPECT_EQ(read("grid 11\nsize 1\n").self_gap(), read("grid 11\nsize 1\n").skin());
+  EXPECT_EQ(read("grid 11\nsize 1\nself_distance auto\n").self_gap(), 0.6 * 1 / 10);
+  EXPECT_EQ(read("grid 11\nself_distance 0.01\n").self_gap(), 0.01);
+  EXPECT_EQ(read("self_distance 0\n").self_gap(), 0);
+  try {
+    read("grid 11\nself_distance -1\n");
+    ADD_FAILURE() << "a negative self_distance accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.scene:2: self_distance must be in [0, 1000] m"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -29,7 +29,11 @@ pairs and collisions, and two checks, both untimed:
             the exact count of cloth particles strictly inside an
             obstacle and of cloth triangles meeting an obstacle
             triangle (touching counts), summed over the frames: the
-            engine of `fdhcert audit`, each frame on its own.)";
+            engine of `fdhcert audit`, each frame on its own.
+And the gaps kept: the skin (thickness) and, with self_collision on, the
+self distance the cloth keeps from itself (scene key self_distance, by
+default the skin), each with the smallest distance reached at the end of a
+frame (float measures, not certificates).)";
 
 const char* const kSimulateFooter =
     R"(If the scene's dt is above the cloth's stable step (it shrinks as the grid

@@ -156,6 +156,13 @@ const std::map<std::string, Reader>& readers() {
            s.thickness =
                l.word(0) == "auto" ? -1 : l.ranged(0, "thickness", scene_value("thickness"));
          }},
+        {"self_distance",
+         [](const Line& l, Scene& s) {
+           l.expect(1, 1);
+           s.self_distance = l.word(0) == "auto"
+                                 ? -1
+                                 : l.ranged(0, "self_distance", scene_value("self_distance"));
+         }},
     };
     for (const SceneValue& f : scene_values())
       if (f.set) m.emplace(f.keyword, read_fields);
@@ -236,6 +243,8 @@ void check(const Scene& s, const std::string& path, const LineOf& line_of) {
       for (int c = 0; c < f.components; ++c) check_value(f, c, f.get(s, c), path, line_of);
   check_obstacles(s, path, line_of);
   if (s.thickness != -1) check_value(scene_value("thickness"), 0, s.thickness, path, line_of);
+  if (s.self_distance != -1)
+    check_value(scene_value("self_distance"), 0, s.self_distance, path, line_of);
   const auto fail = [&](const std::string& key, const std::string& what) {
     throw InputError(path, line_of(key), what);
   };

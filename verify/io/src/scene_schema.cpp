@@ -79,6 +79,7 @@ std::vector<SceneValue> make_table() {
       real("restitution", "restitution", 0, 1, "", FDH_FIELD(response.restitution)),
       real("friction", "friction", 0, kMaxFriction, "", FDH_FIELD(response.friction)),
       custom("thickness", "thickness", false, 0, kMaxThickness, "m"),
+      custom("self_distance", "self_distance", false, 0, kMaxThickness, "m"),
   };
 }
 

@@ -33,6 +33,11 @@ json times_json(const SceneRun& r) {
           {"collision", six_digits(per * t.collision())}, {"total", six_digits(per * t.total())}};
 }
 
+// A distance that exists only when it was measured.
+json measured(double d) {
+  return std::isfinite(d) ? json(six_digits(d)) : json(nullptr);
+}
+
 // A count that exists only when it was counted.
 json counted(bool yes, long n) {
   return yes ? json(n) : json(nullptr);
@@ -73,6 +78,10 @@ json scene_run_json(const cloth::Scene& scene, const SceneRunOptions& opt, const
           {"self_stops", r.self_stops},
           {"self_motion_kept", motion_kept(r)},
           {"self_crossing", counted(r.self_audited, r.audit.self_intersections)},
+          {"self_distance", six_digits(r.self_gap)},
+          {"self_repulsions", r.self_repulsions},
+          {"self_distance_min", measured(r.self_distance_min)},
+          {"obstacle_distance_min", measured(r.obstacle_distance_min)},
           {"energy_start", six_digits(r.energy_start)},
           {"energy_end", six_digits(r.energy_end)}};
 }

@@ -1,6 +1,7 @@
 #include "fdh/scene/scene_run.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -57,6 +58,14 @@ audit::Options frame_audit_options(bool self) {
   return o;
 }
 
+// The smallest distance from a particle of x to an obstacle of the scene (float).
+double obstacle_distance_min(const cloth::Scene& scene, const std::vector<Vec3>& x) {
+  double d = std::numeric_limits<double>::infinity();
+  for (const cloth::Obstacle& o : scene.obstacles)
+    for (const Vec3& p : x) d = std::min(d, cloth::obstacle_distance(o, p));
+  return d;
+}
+
 }  // namespace
 
 SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
@@ -69,6 +78,7 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
   if (r.dt > r.stable_dt) r.dt = 0.9 * r.stable_dt, r.dt_reduced = true;
   r.skin = scene.skin();
   r.frames = opt.frames >= 0 ? opt.frames : scene.frames;
+  r.self_gap = scene.self_collision ? scene.self_gap() : 0;
 
   check_closed_obstacles(scene);
   const Method narrow = select_methods({opt.narrow}).front();
@@ -91,6 +101,7 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
     r.time += sim.times();
     r.candidates += long(sim.queries().size());
     r.collisions += sim.collisions();
+    r.self_repulsions += sim.self().repelled;
     r.self_queries += sim.self().queries;
     r.self_hits += sim.self().hits;
     r.self_round_frames += sim.self().rounds > 0;
@@ -98,6 +109,9 @@ SceneRun run_scene(const cloth::Scene& scene, const SceneRunOptions& opt) {
     r.self_zone_particles += sim.self().zone_particles;
     r.self_stops += sim.self().stopped_all;
     r.self_motion += sim.self().motion, r.self_motion_kept += sim.self().kept;
+    r.self_distance_min = std::min(r.self_distance_min, sim.self().min_distance);
+    r.obstacle_distance_min =
+        std::min(r.obstacle_distance_min, obstacle_distance_min(scene, sim.cloth().x()));
     if (opt.check && (f % scene.audit_every == 0 || f == r.frames)) {  // the scene's stride
       for (const auto& nq : sim.queries()) {
         const Verdicts v = check_given(narrow, sim.query(nq), nq.hit);

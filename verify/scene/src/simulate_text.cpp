@@ -1,7 +1,9 @@
 // The text `fdhcert simulate` prints (scene_outputs.hpp simulate_text).
 #include <fmt/format.h>
 
+#include <cmath>
 #include <sstream>
+#include <string>
 
 #include "fdh/scene/scene_outputs.hpp"
 
@@ -29,6 +31,20 @@ void print_simulate_timing(std::ostream& out, const SimulateText& o, const cloth
       per * t.total());
 }
 
+// A distance measured, or "none" where nothing was.
+std::string distance_text(double d) {
+  return std::isfinite(d) ? fmt::format("{:.6g} m", d) : "none";
+}
+
+// The gaps kept: the smallest distances reached at the end of a frame (float measures).
+void print_simulate_gaps(std::ostream& out, const cloth::Scene& scene, const SceneRun& r) {
+  out << fmt::format("gaps (float)   obstacles: skin {:g} m, smallest particle distance {}\n",
+                     r.skin, distance_text(r.obstacle_distance_min));
+  if (scene.self_collision)
+    out << fmt::format("               self: distance {:g} m, smallest among the pairs tested {}\n",
+                       r.self_gap, distance_text(r.self_distance_min));
+}
+
 // The counts, the checks and the files written.
 void print_simulate_counts(std::ostream& out, const SimulateText& o, const cloth::Scene& scene,
                            const SceneRun& r) {
@@ -54,6 +70,7 @@ void print_simulate_counts(std::ostream& out, const SimulateText& o, const cloth
         "by impact zones {} ({} particles), stopped whole {}\n",
         r.self_queries, r.self_hits, r.self_round_frames - r.self_zone_frames, r.self_zone_frames,
         r.self_zone_particles, r.self_stops);
+  print_simulate_gaps(out, scene, r);
   if (r.self_audited)
     out << fmt::format(
         "self (exact)   {} pairs of cloth triangles sharing no particle that meet, "

@@ -25,6 +25,11 @@ struct Obstacle {
 // sphere's radius grows).
 TriMesh obstacle_mesh(const Obstacle& o, double grow = 0);
 
+// The signed distance from p to the obstacle's solid (negative inside), in floating point: to
+// the sphere itself, not its triangles, and to the box. A cheap measure of the gap a run keeps
+// (scene runs report its smallest value), never a collision test.
+double obstacle_distance(const Obstacle& o, const Vec3& p);
+
 struct Scene {
   std::string name;
   ClothSpec cloth;
@@ -38,12 +43,16 @@ struct Scene {
   double thickness = -1;
   // The cloth against itself (fdh/cloth/self_collision.hpp), after the obstacle response.
   bool self_collision = false;
+  // The gap the self-collision pass keeps between the cloth's own primitives, m: a pair stops
+  // where its distance reaches it (0: at contact). Negative = automatic, the skin.
+  double self_distance = -1;
   // A checked run (verify's run_scene) checks every audit_every-th frame and the last: the
   // narrow phase against the exact test and the exact audit. A large cloth's checks cost far
   // more than its frames.
   int audit_every = 1;
 
-  double skin() const;  // the thickness in use, m
+  double skin() const;      // the thickness in use, m
+  double self_gap() const;  // the self distance in use, m
 };
 
 }  // namespace fdh::cloth

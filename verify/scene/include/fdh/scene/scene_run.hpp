@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -48,11 +49,20 @@ struct SceneRun {
   // The self-collision pass: its queries and contacts, and how often each stage of its response
   // ended a frame (fdh/cloth/self_collision.hpp): frames whose contacts took particle stops,
   // frames that needed impact zones (and their particles, summed), frames stopped whole.
+  long self_repulsions = 0;  // pairs the pass's repulsion slowed, summed over the frames
   long self_queries = 0, self_hits = 0, self_round_frames = 0, self_zone_frames = 0,
        self_zone_particles = 0, self_stops = 0;
   // The motion of the particles whose end of step the response changed, summed over the frames
   // (lengths), and what the response kept of it (stage 1 stops them at their time of impact).
   double self_motion = 0, self_motion_kept = 0;
+  // The gaps kept, m: the self-collision pass's (the scene's self distance; 0 without the pass)
+  // and the skin. The smallest distances reached at the end of a frame, cheap float measures
+  // (infinite when nothing was measured): self, among the pairs the pass tested (its
+  // Result::min_distance); obstacle, from any particle to any obstacle's solid (the sphere
+  // itself, not its triangles: cloth::obstacle_distance; negative inside).
+  double self_gap = 0;
+  double self_distance_min = std::numeric_limits<double>::infinity();
+  double obstacle_distance_min = std::numeric_limits<double>::infinity();
   double energy_start = 0, energy_end = 0;
   std::vector<Vec3> final_x;  // the cloth's particles after the last frame
 
