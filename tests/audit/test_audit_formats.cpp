@@ -177,6 +177,25 @@ TEST_F(AuditFormats, EveryFormatGivesTheSameVerdictAndFirstViolation) {
   EXPECT_EQ(audit_json({at("cloth.obj"), at("cloth.mdd"), "--obstacle", ground}), want) << "MDD";
 }
 
+// Two --parts of the bake folder, merged: the whole run's verdict and first violation (issue 32,
+// "Done when"; tests/audit/test_audit_parts.cpp checks merges at length on another sequence).
+TEST_F(AuditFormats, TwoPartsMergedGiveTheSameVerdictAndFirstViolation) {
+  const Json want = audit_json({at("objs")});
+  for (const char* part : {"1/2", "2/2"}) {
+    const std::string out = at(std::string("part") + part[0]);
+    const CliRun r = fdhcert({"audit", at("objs"), "--part", part, "--out", out});
+    EXPECT_TRUE(r.status == 0 || r.status == 1) << part << ": " << r.err;
+  }
+  const CliRun m =
+      fdhcert({"audit", "--merge", at("part1"), at("part2"), "--out", at("merged"), "--json"});
+  ASSERT_EQ(m.status, 1) << m.err;
+  Json j = Json::parse(m.out);
+  j.erase("cost"), j.erase("summary"), j.erase("kept");
+  if (j.contains("first_violation")) j["first_violation"].erase("places");
+  j["first_violation"].erase("case_file");  // the parts were written with --out; `want` was not
+  EXPECT_EQ(j, want);
+}
+
 TEST_F(AuditFormats, TheOutputSaysWhatIsClothAndWhatObstacle) {
   const CliRun r = fdhcert({"audit", at("objs")});
   EXPECT_NE(r.err.find("the frames are cloth_*.obj (3 files); fixed obstacles: ground.obj"),

@@ -192,8 +192,25 @@ bool boxes_apart(const Triangle3& a, const Triangle3& b, double d) {
   return !meet(box(a), box(b), d);
 }
 
+// A frame violation kept: the two triangles, and as its query the edge e (0-2: of a, 3-5: of
+// b) through the other triangle, or for proximity (e < 0) a's first corner against b at δ = D.
 void keep_frame(const Triangle3& a, const Triangle3& b, int e, ViolationKind kind, int ta, int tb,
-                const Pass& pass, Part& part);
+                const Pass& pass, Part& part) {
+  Violation v;
+  v.kind = kind;
+  v.frame = pass.frame;
+  v.vertices = {-1, -1, -1, -1};
+  v.triangles = {ta, tb};
+  v.query.kind = QueryKind::VertexFace;
+  if (e < 0) {
+    v.query.x = {a[0], b[0], b[1], b[2], a[0], b[0], b[1], b[2]};
+    v.query.min_distance = pass.d;
+  } else {
+    const Triangle3 &s = e < 3 ? a : b, &t = e < 3 ? b : a;
+    v.query.x = {s[e % 3], t[0], t[1], t[2], s[(e + 1) % 3], t[0], t[1], t[2]};
+  }
+  part.add(v, pass.keep);
+}
 
 // Triangles a and b that do not meet, within D (pass.d > 0)? A proximity violation unless the
 // near rule leaves the pair out; with pass.record only noted. The frame's nearest pair is chosen
@@ -231,26 +248,6 @@ void frame_pair(const Triangle3& a, const Triangle3& b, ViolationKind kind, int 
   }
   ++count;
   keep_frame(a, b, e, kind, ta, tb, pass, part);
-}
-
-// A frame violation kept: the two triangles, and as its query the edge e (0-2: of a, 3-5: of
-// b) through the other triangle, or for proximity (e < 0) a's first corner against b at δ = D.
-void keep_frame(const Triangle3& a, const Triangle3& b, int e, ViolationKind kind, int ta, int tb,
-                const Pass& pass, Part& part) {
-  Violation v;
-  v.kind = kind;
-  v.frame = pass.frame;
-  v.vertices = {-1, -1, -1, -1};
-  v.triangles = {ta, tb};
-  v.query.kind = QueryKind::VertexFace;
-  if (e < 0) {
-    v.query.x = {a[0], b[0], b[1], b[2], a[0], b[0], b[1], b[2]};
-    v.query.min_distance = pass.d;
-  } else {
-    const Triangle3 &s = e < 3 ? a : b, &t = e < 3 ? b : a;
-    v.query.x = {s[e % 3], t[0], t[1], t[2], s[(e + 1) % 3], t[0], t[1], t[2]};
-  }
-  part.add(v, pass.keep);
 }
 
 Triangle3 corners(const std::vector<Vec3>& x, const Tri& t) {

@@ -64,4 +64,9 @@ std::string wrong_machine(const std::string& file) {
          (kClass == ELFCLASS64 ? "64-bit " : "32-bit ") + machine_name(kMachine);
 }
 
+std::string not_loaded(const std::string& file, const std::string& dlerror_words) {
+  const std::string machine = wrong_machine(file);
+  return machine.empty() ? dlerror_words : machine + " (dlerror: " + dlerror_words + ")";
+}
+
 }  // namespace fdh::verify::plugin

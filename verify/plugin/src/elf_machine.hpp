@@ -11,4 +11,7 @@ namespace fdh::verify::plugin {
 // ELF file of another machine or class; "" otherwise (also when it cannot be read).
 std::string wrong_machine(const std::string& file);
 
+// Why `file` did not load: dlerror's words, or the ELF header's where dlerror misleads.
+std::string not_loaded(const std::string& file, const std::string& dlerror_words);
+
 }  // namespace fdh::verify::plugin

@@ -90,12 +90,6 @@ double limit_of_child() {
   return limit > 0 ? std::max(10.0, limit + 5) : 1e9;
 }
 
-// dlerror's words, or the ELF header's where dlerror misleads (another machine).
-std::string not_loaded(const std::string& file, const std::string& dlerror_words) {
-  const std::string machine = plugin::wrong_machine(file);
-  return machine.empty() ? dlerror_words : machine + " (dlerror: " + dlerror_words + ")";
-}
-
 // The struct the entry point returns, checked field by field, after fdh_plugin_init took the
 // settings; `flags` gets fdh_plugin_flags() and `within` fdh_plugin_min_distance's struct.
 fdh_plugin entry_struct(const std::string& path, const PluginSettings& settings, unsigned& flags,
@@ -106,14 +100,14 @@ fdh_plugin entry_struct(const std::string& path, const PluginSettings& settings,
   // First in a child: a constructor or a cut file that crashes takes the child, not fdhcert.
   if (const std::optional<std::string> why =
           plugin::probe_load(path, file, settings, limit_of_child()))
-    refuse(path, "cannot load: " + not_loaded(file, *why));
+    refuse(path, "cannot load: " + plugin::not_loaded(file, *why));
   void* lib = nullptr;
   {
     const CallSite loading{path.c_str(), "dlopen (its constructors)"};
     const InCall in(loading);
     lib = ::dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   }
-  if (!lib) refuse(path, "cannot load: " + not_loaded(file, ::dlerror()));
+  if (!lib) refuse(path, "cannot load: " + plugin::not_loaded(file, ::dlerror()));
   const auto [entry, entry_name] = entry_point(lib, path);
   if (const std::optional<std::string> why = plugin::call_init(lib, path, settings))
     refuse(path, *why);

@@ -166,6 +166,7 @@ struct Certificate {
 
   bool complete() const { return cut_short.empty(); }
   bool certified() const { return first_violation.empty() && complete(); }
+  const char* mode() const { return options.quick ? "quick" : "full"; }
   // Every check counted above (metamorphic: exact methods' invariance, promised methods'
   // judged transformed queries).
   long checks() const;
