@@ -8,23 +8,11 @@
 #include <set>
 
 #include "fdh/io/input_error.hpp"
+#include "fdh/io/line_words.hpp"
 #include "fdh/io/query_io.hpp"
 
 namespace fdh::verify {
 namespace {
-
-// The line's blank-separated words.
-std::vector<std::string_view> words(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    const std::size_t b = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-    if (i > b) out.push_back(line.substr(b, i - b));
-  }
-  return out;
-}
 
 // What follows the keyword, trimmed: an object's name may hold blanks.
 std::string rest_of(std::string_view line, std::string_view keyword) {
@@ -84,7 +72,7 @@ class ObjReader {
  private:
   void take(std::string_view line) {
     if (in_.line() == 1) line = without_byte_order_mark(line, in_.path());
-    const std::vector<std::string_view> w = words(line);
+    const std::vector<std::string_view> w = line_words(line);
     if (w.empty() || w[0][0] == '#') return;
     if (w[0] == "v") return vertex(w);
     if (w[0] == "f") return face(w);

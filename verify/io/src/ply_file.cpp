@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "fdh/io/input_error.hpp"
+#include "fdh/io/line_words.hpp"
 #include "ply_header.hpp"
 
 namespace fdh::verify {
@@ -24,7 +25,6 @@ using ply::Header;
 using ply::is_float;
 using ply::Property;
 using ply::size_of;
-using ply::split_words;
 using ply::Type;
 
 std::string read_whole(const std::string& path) {
@@ -99,8 +99,8 @@ class Body {
       line = std::string_view(bytes_).substr(at_, end - at_);
       if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
       at_ = end + 1, ++line_;
-    } while (split_words(line).empty());
-    words_ = split_words(line), next_word_ = 0, where_ = line_;
+    } while (line_words(line).empty());
+    words_ = line_words(line), next_word_ = 0, where_ = line_;
   }
 
   void end() const {

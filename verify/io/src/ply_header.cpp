@@ -1,6 +1,7 @@
 #include "ply_header.hpp"
 
 #include "fdh/io/input_error.hpp"
+#include "fdh/io/line_words.hpp"
 
 namespace fdh::verify::ply {
 namespace {
@@ -27,7 +28,7 @@ class HeaderReader {
     bool format = false;
     for (;;) {
       if (!next(line)) fail("the header ends without an end_header line");
-      const std::vector<std::string_view> w = split_words(line);
+      const std::vector<std::string_view> w = line_words(line);
       if (w.empty() || w[0] == "comment" || w[0] == "obj_info") continue;
       if (w[0] == "end_header") break;
       if (w[0] == "format")
@@ -108,18 +109,6 @@ class HeaderReader {
 };
 
 }  // namespace
-
-std::vector<std::string_view> split_words(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    const std::size_t b = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-    if (i > b) out.push_back(line.substr(b, i - b));
-  }
-  return out;
-}
 
 Header read_header(const std::string& path, const std::string& bytes) {
   return HeaderReader(path, bytes).read();

@@ -42,9 +42,6 @@ inline bool is_float(Type t) {
   return t == Type::F32 || t == Type::F64;
 }
 
-// A line's words, split at spaces and tabs.
-std::vector<std::string_view> split_words(std::string_view line);
-
 // The header of the file `path` whose bytes are `bytes`; InputError naming the line.
 Header read_header(const std::string& path, const std::string& bytes);
 
