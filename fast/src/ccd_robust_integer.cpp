@@ -9,6 +9,7 @@
 
 #include "ccd_robust_conditions.hpp"
 #include "checked_int.hpp"
+#include "motion.hpp"
 #include "small_poly.hpp"
 
 namespace fdh {
@@ -52,22 +53,12 @@ bool integer_coordinates(const Query& q, std::int64_t c[8][3]) {
 
 // A vector of polynomials in t (a moving point), or of integers (a point at an exact time p / q,
 // times q).
+// The motion's vectors (motion.hpp), here of exact polynomials and integers.
 template <class T>
-struct V {
-  T x, y, z;
-  bool is_zero() const { return x.is_zero() && y.is_zero() && z.is_zero(); }
-};
+using V = motion::V3<T>;
 template <class T>
-V<T> operator-(const V<T>& a, const V<T>& b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-template <class T>
-V<T> cross(const V<T>& a, const V<T>& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-template <class T>
-T dot(const V<T>& a, const V<T>& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
+bool is_zero(const V<T>& v) {
+  return v.x.is_zero() && v.y.is_zero() && v.z.is_zero();
 }
 using PV = V<Poly>;
 using IV = V<Int128>;
@@ -117,13 +108,13 @@ Poly dot(const LV& a, const PV& b) {
 // Closed segment membership, degenerate segments included.
 bool on_segment(const IV& p, const IV& a, const IV& b) {
   const IV pa = p - a;
-  return cross(pa, b - a).is_zero() && dot(pa, p - b).sign() <= 0;
+  return is_zero(cross(pa, b - a)) && dot(pa, p - b).sign() <= 0;
 }
 
 // p in the closed triangle abc (a zero-area one is the union of its edges).
 bool inside(const IV& p, const IV& a, const IV& b, const IV& c) {
   const IV n = cross(b - a, c - a);
-  if (n.is_zero()) return on_segment(p, a, b) || on_segment(p, b, c) || on_segment(p, c, a);
+  if (is_zero(n)) return on_segment(p, a, b) || on_segment(p, b, c) || on_segment(p, c, a);
   const IV ap = a - p;
   return dot(n, cross(b - p, c - p)).sign() >= 0 && dot(n, cross(c - p, ap)).sign() >= 0 &&
          dot(n, cross(ap, b - p)).sign() >= 0;
@@ -132,7 +123,7 @@ bool inside(const IV& p, const IV& a, const IV& b, const IV& c) {
 // The closed segments [a0, a1] and [b0, b1] meet.
 bool meet(const IV& a0, const IV& a1, const IV& b0, const IV& b1) {
   const IV ea = a1 - a0, eb = b1 - b0, m = cross(ea, eb);
-  if (m.is_zero())
+  if (is_zero(m))
     return on_segment(a0, b0, b1) || on_segment(a1, b0, b1) || on_segment(b0, a0, a1) ||
            on_segment(b1, a0, a1);
   const Int128 s = dot(cross(b0 - a0, eb), m), u = dot(cross(b0 - a0, ea), m), mm = dot(m, m);
@@ -400,7 +391,7 @@ Root at_start() {
 
 std::optional<Root> Search::point_point(int p, int a) const {
   const LV d = x_[p] - x_[a];
-  if (d.is_zero()) return at_start();
+  if (is_zero(d)) return at_start();
   const Poly x = d.x.poly(), y = d.y.poly(), z = d.z.poly();
   return first_common_root({&x, &y, &z}, [](const Root&) { return true; });
 }
@@ -426,7 +417,7 @@ std::optional<Root> Search::point_edge(int p, int a, int b) const {
   const LV pa = x_[p] - x_[a];
   const PV w = cross(pa, x_[b] - x_[a]);
   const Poly h = dot(pa, x_[p] - x_[b]);
-  if (!w.is_zero())
+  if (!is_zero(w))
     return first_common_root({&w.x, &w.y, &w.z},
                              [&h](const Root& r) { return small_poly::sign_at(h, r) <= 0; });
   if (small_poly::sign_at(h, Fraction{0, 1}) <= 0) return at_start();
