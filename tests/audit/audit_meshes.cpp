@@ -22,6 +22,13 @@ Mesh grid(int n, double spacing, const Vec3& origin) {
   return m;
 }
 
+Topology cloth_only(const Mesh& m) {
+  Topology t;
+  t.cloth_vertices = int(m.x.size());
+  t.cloth = m.tris;
+  return t;
+}
+
 Mesh join(const Mesh& a, const Mesh& b) {
   Mesh m = a;
   const int n = int(a.x.size());

@@ -20,6 +20,9 @@ Mesh grid(int n, double spacing, const Vec3& origin);
 // a's vertices then b's, b's triangles renumbered.
 Mesh join(const Mesh& a, const Mesh& b);
 
+// m as the whole cloth, with no obstacle.
+Topology cloth_only(const Mesh& m);
+
 // Every violation of the step x0 -> x1 (vertex-face, edge-edge) and of the frame x1, by the
 // exact twins over all pairs, in report order (TOIs from robust_ccd_toi, like the engine).
 std::vector<Violation> brute_force(const Topology& topology, const std::vector<Vec3>& x0,

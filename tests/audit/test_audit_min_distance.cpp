@@ -15,14 +15,8 @@ namespace fdh::audit::min_distance_tests {
 
 using testing::grid;
 using testing::join;
+using testing::cloth_only;
 using testing::Mesh;
-
-Topology cloth_only(const Mesh& m) {
-  Topology t;
-  t.cloth_vertices = int(m.x.size());
-  t.cloth = m.tris;
-  return t;
-}
 
 // Every frame through an auditor at D; the counts summed.
 AuditCounts run(const Topology& t, const std::vector<std::vector<Vec3>>& cloth,

@@ -15,14 +15,8 @@ namespace {
 
 using testing::grid;
 using testing::join;
+using testing::cloth_only;
 using testing::Mesh;
-
-Topology cloth_only(const Mesh& m) {
-  Topology t;
-  t.cloth_vertices = int(m.x.size());
-  t.cloth = m.tris;
-  return t;
-}
 
 // A wavy sheet, moving along `shift` with its wave travelling: never touching itself.
 std::vector<Vec3> wavy(const Mesh& m, double phase, const Vec3& shift) {
