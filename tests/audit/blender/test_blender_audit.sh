@@ -9,18 +9,9 @@
 # Skips (exit 77) where `blender` is not installed (./run installs it when run as root).
 #   test_blender_audit.sh FDHCERT REPO
 set -euo pipefail
-command -v blender >/dev/null || { echo "SKIP: no blender (./run installs it as root)"; exit 77; }
-fdhcert=$(realpath "$1")
-repo=$(realpath "$2")
+. "$(dirname "$0")/blender_test.sh" "$1" "$2" fdh-blender
 grid=20
 frames=30
-
-work=$(mktemp -d "${TMPDIR:-/tmp}/fdh-blender.XXXXXX")
-cleanup() {
-  if [ "${FDH_KEEP_TEST_FILES:-}" = 1 ]; then echo "FDH_KEEP_TEST_FILES: kept $work"; else rm -rf "$work"; fi
-}
-trap cleanup EXIT
-fail() { echo "FAIL: $*"; exit 1; }
 
 for scene in drop crumple; do
   frames_dir=$work/$scene-frames

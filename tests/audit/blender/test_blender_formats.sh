@@ -6,18 +6,9 @@
 # (same_audit.py). Skips (exit 77) where `blender` or one of its add-ons is not installed.
 #   test_blender_formats.sh FDHCERT REPO
 set -euo pipefail
-command -v blender >/dev/null || { echo "SKIP: no blender (./run installs it as root)"; exit 77; }
-fdhcert=$(realpath "$1")
-repo=$(realpath "$2")
+. "$(dirname "$0")/blender_test.sh" "$1" "$2" fdh-blender-formats
 grid=20
 frames=30
-
-work=$(mktemp -d "${TMPDIR:-/tmp}/fdh-blender-formats.XXXXXX")
-cleanup() {
-  if [ "${FDH_KEEP_TEST_FILES:-}" = 1 ]; then echo "FDH_KEEP_TEST_FILES: kept $work"; else rm -rf "$work"; fi
-}
-trap cleanup EXIT
-fail() { echo "FAIL: $*"; exit 1; }
 
 blender -b --factory-startup -P "$repo/tests/audit/blender/bake_cloth.py" -- \
   --scene drop --grid "$grid" --frames "$frames" --formats --out "$work/bake" \
