@@ -22,7 +22,7 @@ struct PairClosest {
   double distance = 0;
 };
 
-// Ericson, Real-Time Collision Detection (2005), §5.1.5 (vertex–face) and §5.1.9 (edge–edge).
+// The weights of fdh/closest_points.hpp's closest points (Ericson, §5.1.5 and §5.1.9).
 PairClosest pair_closest(QueryKind kind, const std::array<Vec3, 4>& p);
 
 inline double pair_distance(QueryKind kind, const std::array<Vec3, 4>& p) {
