@@ -130,10 +130,8 @@ long check_files(Certificate& c, Certifier& cert, const std::string& stage,
   return done;
 }
 
-void check_corpus(Certificate& c, Certifier& cert) {
-  std::vector<std::vector<QueryRecord>> files;
-  for (const std::string& f : list_query_files(c.options.corpus_dir))
-    files.push_back(read_native(f));
+void check_corpus(Certificate& c, Certifier& cert,
+                  const std::vector<std::vector<QueryRecord>>& files) {
   c.corpus_files = long(files.size());
   c.corpus_queries = check_files(c, cert, "corpus", files);
 }
@@ -170,19 +168,24 @@ void check_soups(Certificate& c, Certifier& cert) {
   cert.check_soups(a, b);
 }
 
+// The query files certify reads, each file's queries in order.
+struct QueryFiles {
+  std::vector<std::vector<QueryRecord>> corpus, extra;
+};
+
 // Every input read before any work (issue 34), before the output folder is made: a bad corpus
-// file, scene or extra file is refused at once, not after the stages before it. The extra files'
-// queries are kept for their stage; the corpus (172 small files) and the scenes (a few lines
-// each) are read again by theirs.
-std::vector<std::vector<QueryRecord>> read_inputs_first(const CertifyOptions& o) {
-  for (const std::string& f : list_query_files(o.corpus_dir)) (void)read_native(f);
+// file, scene or extra file is refused at once, not after the stages before it. The corpus and
+// the extra files are kept for their stages; the scenes (a few lines each) are read again by
+// theirs.
+QueryFiles read_inputs_first(const CertifyOptions& o) {
+  QueryFiles in;
+  for (const std::string& f : list_query_files(o.corpus_dir)) in.corpus.push_back(read_native(f));
   const fs::path scenes = fs::path(o.corpus_dir) / "scenes";
   std::error_code ec;  // a corpus that is a link loop is refused by its reader, by name
   if (fs::is_directory(scenes, ec))
     for (const std::string& f : scene_files(scenes.string())) (void)read_scene(f);
-  std::vector<std::vector<QueryRecord>> extra;
-  for (const std::string& f : o.extra_files) extra.push_back(read_query_file(f));
-  return extra;
+  for (const std::string& f : o.extra_files) in.extra.push_back(read_query_file(f));
+  return in;
 }
 
 void check_extra_files(Certificate& c, Certifier& cert,
@@ -273,13 +276,13 @@ void check_peers(Certificate& c) {
 
 // The stages of `names`, in that order; metamorphic is a flag of the query stages.
 void run_stages(Certificate& c, Certifier& cert, const std::vector<std::string>& names,
-                const std::vector<std::vector<QueryRecord>>& extra) {
+                const QueryFiles& in) {
   for (const std::string& s : names) {
-    if (s == "corpus") check_corpus(c, cert);
+    if (s == "corpus") check_corpus(c, cert, in.corpus);
     if (s == "families") check_families(c, cert);
     if (s == "scenes") check_scenes(c, cert);
     if (s == "soups") check_soups(c, cert);
-    if (s == "extra") check_extra_files(c, cert, extra);
+    if (s == "extra") check_extra_files(c, cert, in.extra);
     if (s == "min-distance") check_delta(c);
     if (s == "peers") check_peers(c);
   }
@@ -309,12 +312,12 @@ Certificate certify(const CertifyOptions& options) {
   c.commit = build_commit();
   c.cgal = exact::cgal_library_version();
   c.gmp = exact::gmp_library_version();
-  const std::vector<std::vector<QueryRecord>> extra = read_inputs_first(c.options);
+  const QueryFiles inputs = read_inputs_first(c.options);
   for (const CertifiedPlugin& p : c.options.plugins)  // the probe counts in the budget too
     if (p.probe_cut)
       c.cut_short.push_back({"probe of plug-in " + p.name, p.probe_calls, 0, "calls"});
   Certifier cert(c);
-  run_stages(c, cert, c.options.stages.empty() ? certify_stages() : c.options.stages, extra);
+  run_stages(c, cert, c.options.stages.empty() ? certify_stages() : c.options.stages, inputs);
   return c;
 }
 
